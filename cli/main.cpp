@@ -1,0 +1,174 @@
+// cutcom: what a SINUMERIK 840D would do with an NC program under 2D tool radius compensation.
+// Exit status: 0 done without alarm, 1 an alarm stopped the program, 2 bad input or usage.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cutcom/fast/engine.hpp"
+#include "cutcom/machine_data.hpp"
+#include "cutcom/output.hpp"
+#include "cutcom/reader.hpp"
+#include "cutcom/ref/engine.hpp"
+
+namespace {
+
+constexpr int kDone = 0, kAlarm = 1, kBadInput = 2;
+
+struct RunOptions {
+  std::string program;
+  std::string engine = "fast";
+  std::string format = "text";
+  std::string output;
+  std::vector<std::string> md;
+  std::vector<std::string> md_files;
+  bool trace = false;
+};
+
+cutcom::MachineData machine_data(const RunOptions& o) {
+  cutcom::MachineData md;
+  for (const auto& f : o.md_files) {
+    std::ifstream in(f);
+    if (!in) throw cutcom::MachineDataError(fmt::format("cannot open machine data file '{}'", f));
+    md.load(in, f);
+  }
+  for (const auto& a : o.md) md.set_assignment(a);
+  return md;
+}
+
+bool run_engine(const std::string& engine, cutcom::ProgramReader& reader, const cutcom::MachineData& md,
+                cutcom::PathSink& sink) {
+  return engine == "ref" ? cutcom::ref::run(reader, md, sink) : cutcom::fast::run(reader, md, sink);
+}
+
+std::string read_all(std::istream& in) {
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int run_command(const RunOptions& o) {
+  cutcom::MachineData md = machine_data(o);
+
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (o.program != "-") {
+    file.open(o.program);
+    if (!file) {
+      std::cerr << fmt::format("cutcom: cannot open program '{}'\n", o.program);
+      return kBadInput;
+    }
+    in = &file;
+  }
+  std::ofstream out_file;
+  std::ostream* out = &std::cout;
+  if (!o.output.empty() && o.output != "-") {
+    out_file.open(o.output);
+    if (!out_file) {
+      std::cerr << fmt::format("cutcom: cannot write '{}'\n", o.output);
+      return kBadInput;
+    }
+    out = &out_file;
+  }
+
+  bool ok = true;
+  if (o.format == "svg") {
+    // The picture needs the programmed contour too: read the text once, use it twice.
+    std::string text = read_all(*in);
+    std::istringstream first(text), second(text);
+    cutcom::ProgramReader reader(first, md.initial_state());
+    cutcom::CollectingSink sink;
+    ok = run_engine(o.engine, reader, md, sink);
+    cutcom::ProgramReader again(second, md.initial_state());
+    std::vector<cutcom::Block> blocks;
+    cutcom::Block b;
+    cutcom::Plane plane = cutcom::Plane::kG17;
+    while (again.next(b)) {
+      if (b.state.side != cutcom::Side::kOff) plane = b.state.plane;
+      blocks.push_back(b);
+    }
+    std::string title = fmt::format("cutcom — {} — engine {}", o.program == "-" ? "stdin" : o.program, o.engine);
+    cutcom::write_svg(*out, cutcom::programmed_contour(blocks), sink.result, plane, title);
+    for (const auto& a : sink.result.alarms) std::cerr << fmt::format("ALARM {} {}\n", a.number, a.text);
+  } else if (o.format == "json") {
+    cutcom::JsonWriter writer(*out, o.engine, o.trace);
+    cutcom::ProgramReader reader(*in, md.initial_state());
+    ok = run_engine(o.engine, reader, md, writer);
+    writer.finish();
+  } else {
+    cutcom::TextWriter writer(*out, o.engine, o.trace);
+    cutcom::ProgramReader reader(*in, md.initial_state());
+    ok = run_engine(o.engine, reader, md, writer);
+    writer.finish();
+  }
+  out->flush();
+  return ok ? kDone : kAlarm;
+}
+
+int list_machine_data(const std::vector<std::string>& assignments) {
+  cutcom::MachineData md;
+  for (const auto& a : assignments) md.set_assignment(a);
+  for (const auto& d : cutcom::machine_data_catalogue())
+    std::cout << fmt::format("{:<12} {:<32} = {:<6} {:<8} range {:<30} {} [{}]\n", d.id, d.name,
+                             cutcom::machine_datum_value(md, d.id), d.unit, d.range, d.meaning, d.clause);
+  return kDone;
+}
+
+int list_alarms() {
+  for (int n : {10750, 10751, 10753, 10754, 10757, 10762, 17181}) {
+    const cutcom::AlarmInfo* a = cutcom::find_alarm(n);
+    std::cout << fmt::format("{}  {:<96} [{}]{}\n", a->number, a->text, a->clause,
+                             a->number_confirmed ? "" : " (number not confirmed by the manual pages)");
+  }
+  return kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"cutcom: SINUMERIK 840D 2D tool radius compensation, exact reference and fast engine"};
+  app.require_subcommand(1);
+  RunOptions o;
+  auto* run = app.add_subcommand("run", "compute the tool-centre path of an NC program");
+  run->add_option("PROGRAM", o.program, "NC program file, - for standard input")->required();
+  run->add_option("--engine", o.engine, "ref (exact) or fast (double)")->check(CLI::IsMember({"ref", "fast"}));
+  run->add_option("--format", o.format, "text, json or svg")->check(CLI::IsMember({"text", "json", "svg"}));
+  run->add_option("-o,--output", o.output, "write to FILE instead of standard output");
+  run->add_option("--md", o.md, "machine datum NAME=VALUE, e.g. --md MD20204=0.02 (repeatable)");
+  run->add_option("--md-file", o.md_files, "file of NAME=VALUE lines (repeatable)");
+  run->add_flag("--trace", o.trace, "include the decision trace (text and json)");
+  std::vector<std::string> md_assignments;
+  auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
+  md->add_option("--md", md_assignments, "override NAME=VALUE before listing");
+  auto* alarms = app.add_subcommand("alarms", "list the alarm catalogue");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kBadInput;
+  }
+  try {
+    if (*run) return run_command(o);
+    if (*md) return list_machine_data(md_assignments);
+    if (*alarms) return list_alarms();
+  } catch (const cutcom::InputError& e) {
+    std::cout.flush();
+    std::cerr << fmt::format("cutcom: {}: {}\n", o.program, e.what());
+    return kBadInput;
+  } catch (const cutcom::MachineDataError& e) {
+    std::cerr << fmt::format("cutcom: machine data: {}\n", e.what());
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << fmt::format("cutcom: internal error: {}\n", e.what());
+    return 3;
+  }
+  return kBadInput;
+}

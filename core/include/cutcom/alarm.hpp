@@ -1,0 +1,39 @@
+// The alarm catalogue (spec ALARM-*): number, text and the clause that raises it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace cutcom {
+
+struct AlarmInfo {
+  int number;
+  std::string_view text;
+  std::string_view clause;   // spec clause that raises it
+  bool number_confirmed;     // false: number from the diagnostics list, not from the retrieved manual pages
+};
+
+// nullptr for a number not in the catalogue.
+const AlarmInfo* find_alarm(int number);
+
+// An alarm raised while running a program; it stops the program (the path before it is kept).
+struct Alarm {
+  int number = 0;
+  int line = 0;                         // 1-based source line of the block that raised it
+  std::optional<std::int64_t> block;    // its N number, if programmed
+  std::string_view clause;
+  std::string text;                     // catalogue text, completed with the block
+};
+
+Alarm make_alarm(int number, int line, std::optional<std::int64_t> block);
+
+// Something a user should know that does not stop the program.
+struct Notice {
+  int line = 0;
+  std::string_view clause;
+  std::string text;
+};
+
+}  // namespace cutcom

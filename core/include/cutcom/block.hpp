@@ -1,0 +1,179 @@
+// The block model shared by both engines: what a block programs (BlockWords), the modal state in
+// force for it (ModalState) and the resolved block with exact programmed positions (Block).
+// Fixed-size fields only, so reading a block allocates nothing in the steady state.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "cutcom/decimal.hpp"
+
+namespace cutcom {
+
+struct Point3 {
+  Decimal x, y, z;
+  friend bool operator==(const Point3&, const Point3&) = default;
+};
+
+// G groups and keyword groups (spec NC-MODAL-*).
+enum class Motion : std::uint8_t { kRapid /*G0*/, kLinear /*G1*/, kArcCw /*G2*/, kArcCcw /*G3*/ };
+enum class Plane : std::uint8_t { kG17, kG18, kG19 };
+enum class Side : std::uint8_t { kOff /*G40*/, kLeft /*G41*/, kRight /*G42*/ };
+enum class ApproachMode : std::uint8_t { kNorm, kKont, kKontC, kKontT };
+enum class CornerMode : std::uint8_t { kG450, kG451 };
+enum class CollisionMode : std::uint8_t { kCdof, kCdon, kCdof2 };
+enum class EdgeStrategy : std::uint8_t { kG460, kG461, kG462 };  // group 48
+enum class SarSide : std::uint8_t { kG140, kG141, kG142, kG143 };
+enum class SarSegmentation : std::uint8_t { kG340, kG341 };
+enum class SarContour : std::uint8_t { kG147, kG148, kG247, kG248, kG347, kG348 };
+enum class FeedType : std::uint8_t { kG94, kG95 };
+enum class PathMode : std::uint8_t { kG60, kG64 };
+
+// How an axis value is to be read: modal G90/G91, or forced by AC()/IC().
+enum class ValueMode : std::uint8_t { kModal, kAbsolute, kIncremental };
+enum class FadMode : std::uint8_t { kModal, kPm, kPr };
+
+struct AxisWord {
+  bool present = false;
+  Decimal value;
+  ValueMode mode = ValueMode::kModal;
+};
+
+// An auxiliary function kept as an action (M or H), executed where the engines place it.
+struct AuxFunction {
+  char address = 'M';
+  std::int64_t value = 0;
+};
+
+// $TC_DPn[t,d] = value
+struct ToolDataAssignment {
+  int parameter = 0;  // 1 (type), 6 (radius), 15 (radius wear)
+  int tool = 0;
+  int edge = 0;
+  Decimal value;
+};
+
+template <class T>
+using Opt = std::optional<T>;
+
+// Everything one NC line programs, as written (before modal resolution).
+struct BlockWords {
+  static constexpr int kMaxAux = 10;
+  static constexpr int kMaxToolData = 4;
+
+  int line = 0;                 // 1-based source line
+  int word_count = 0;           // 0: blank or comment-only line
+  Opt<std::int64_t> number;     // N number
+  std::array<AxisWord, 3> axis; // X Y Z
+  std::array<AxisWord, 3> centre;  // I J K
+  Opt<Decimal> cr;
+
+  Opt<Motion> motion;
+  Opt<Plane> plane;
+  Opt<bool> absolute;  // G90 true, G91 false
+  Opt<Side> side;
+  Opt<ApproachMode> approach;
+  Opt<CornerMode> corner;
+  Opt<CollisionMode> collision;
+  Opt<EdgeStrategy> edge_strategy;
+  Opt<SarSide> sar_side;
+  Opt<SarSegmentation> sar_segmentation;
+  Opt<SarContour> sar_contour;
+  Opt<FeedType> feed_type;
+  Opt<PathMode> path_mode;
+
+  Opt<Decimal> feed;
+  Opt<std::int64_t> tool;
+  Opt<std::int64_t> edge;
+  Opt<Decimal> offn;
+  Opt<Decimal> disc;
+  Opt<Decimal> disr;
+  AxisWord discl;   // DISCL= / DISCL=AC() (IC() not allowed)
+  AxisWord disrp;
+  Opt<Decimal> fad;
+  FadMode fad_mode = FadMode::kModal;
+  bool stopre = false;
+  bool program_end = false;  // M2 / M30
+
+  std::array<AuxFunction, kMaxAux> aux{};
+  int aux_count = 0;
+  std::array<ToolDataAssignment, kMaxToolData> tool_data{};
+  int tool_data_count = 0;
+
+  bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
+};
+
+// The modal state in force for a block (after applying its words).
+struct ModalState {
+  Motion motion = Motion::kRapid;
+  Plane plane = Plane::kG17;
+  bool absolute = true;
+  Side side = Side::kOff;
+  ApproachMode approach = ApproachMode::kNorm;
+  CornerMode corner = CornerMode::kG450;
+  Decimal disc;
+  CollisionMode collision = CollisionMode::kCdof;
+  EdgeStrategy edge_strategy = EdgeStrategy::kG462;
+  SarSide sar_side = SarSide::kG140;
+  SarSegmentation sar_segmentation = SarSegmentation::kG340;
+  FeedType feed_type = FeedType::kG94;
+  PathMode path_mode = PathMode::kG60;
+  Decimal feed;
+  std::int64_t tool = 0;   // 0: no tool active
+  std::int64_t edge = 0;   // 0: D0, no edge active
+  Decimal offn;
+  // Edge data captured when T or D was programmed (spec TOOL-EDGE-2).
+  Decimal edge_radius;   // $TC_DP6
+  Decimal edge_wear;     // $TC_DP15
+  bool edge_defined = false;
+
+  // TOOL-RADIUS-1: effective radius = $TC_DP6 + $TC_DP15 + OFFN (may be negative).
+  Decimal effective_radius() const { return edge_radius + edge_wear + offn; }
+};
+
+// Abscissa, ordinate and applicate index (0=X,1=Y,2=Z) of a plane (spec NC-PLANE-1).
+struct PlaneAxes {
+  int abscissa, ordinate, applicate;
+};
+constexpr PlaneAxes plane_axes(Plane p) {
+  switch (p) {
+    case Plane::kG17: return {0, 1, 2};
+    case Plane::kG18: return {2, 0, 1};
+    case Plane::kG19: return {1, 2, 0};
+  }
+  return {0, 1, 2};
+}
+
+constexpr const Decimal& coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
+// A resolved block: its words, the modal state in force, and exact programmed start/end points.
+struct Block {
+  BlockWords words;
+  ModalState state;
+  ModalState previous;  // state in force for the block before (for changes detected by engines)
+  Point3 start;         // programmed position before the block
+  Point3 end;           // programmed position after the block (modal completion applied)
+  Opt<Point3> centre;   // arc centre from I J K (G2/G3); CR= arcs leave this empty
+  int index = 0;        // 0-based block index in the program
+
+  // Any geometry axis of the active plane written in the block (spec TRC-SEL-3/4).
+  bool programs_plane_axis() const {
+    PlaneAxes a = plane_axes(state.plane);
+    return words.axis[a.abscissa].present || words.axis[a.ordinate].present;
+  }
+  // In-plane displacement is non-zero (exact comparison of programmed decimals).
+  bool moves_in_plane() const {
+    PlaneAxes a = plane_axes(state.plane);
+    return coord(start, a.abscissa) != coord(end, a.abscissa) || coord(start, a.ordinate) != coord(end, a.ordinate);
+  }
+  bool moves_applicate() const {
+    int h = plane_axes(state.plane).applicate;
+    return coord(start, h) != coord(end, h);
+  }
+  bool is_linear() const { return state.motion == Motion::kRapid || state.motion == Motion::kLinear; }
+  bool is_arc() const { return state.motion == Motion::kArcCw || state.motion == Motion::kArcCcw; }
+  bool has_aux() const { return words.aux_count > 0; }
+};
+
+}  // namespace cutcom

@@ -1,0 +1,66 @@
+// Exact decimal numbers as written in an NC program (spec NC-NUM-1).
+// A value is an integer count of 10^-9 units, so every literal with up to nine decimal places
+// is held exactly and sums (G91, AC/IC, radius + wear + OFFN) stay exact.
+#pragma once
+
+#include <compare>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace cutcom {
+
+__extension__ typedef __int128 Int128;
+
+class Decimal {
+ public:
+  static constexpr int kFractionDigits = 9;
+  static constexpr std::int64_t kUnitsPerOne = 1'000'000'000;
+  // Largest magnitude accepted from the program text: 10^12 (mm, degrees, feed units).
+  static constexpr Int128 kMaxUnits = Int128(1'000'000'000'000) * kUnitsPerOne;
+
+  constexpr Decimal() = default;
+  static constexpr Decimal from_units(Int128 units) { Decimal d; d.units_ = units; return d; }
+  static constexpr Decimal from_int(std::int64_t v) { return from_units(Int128(v) * kUnitsPerOne); }
+
+  // Why parsing fails, for the reader's error message.
+  enum class ParseError { kSyntax, kTooManyDecimals, kOutOfRange };
+  struct ParseResult;
+  // Parses [+-]digits[.digits] or [+-].digits; never goes through floating point.
+  static ParseResult parse(std::string_view text);
+
+  constexpr Int128 units() const { return units_; }
+  constexpr bool is_zero() const { return units_ == 0; }
+  constexpr int sign() const { return units_ > 0 ? 1 : (units_ < 0 ? -1 : 0); }
+  // Whole number if the value is integral and fits, else nullopt.
+  std::optional<std::int64_t> to_integer() const;
+  // Nearest double (correctly rounded); for the fast engine and for output only.
+  double to_double() const;
+  // Exact decimal text, trailing zeros removed ("12.5", "-0.001", "3").
+  std::string to_string() const;
+
+  // Checked arithmetic: throws std::overflow_error beyond kMaxUnits * 1000.
+  friend Decimal operator+(Decimal a, Decimal b);
+  friend Decimal operator-(Decimal a, Decimal b);
+  friend constexpr Decimal operator-(Decimal a) { return from_units(-a.units_); }
+  friend constexpr bool operator==(Decimal a, Decimal b) = default;
+  friend constexpr std::strong_ordering operator<=>(Decimal a, Decimal b) {
+    return a.units_ < b.units_ ? std::strong_ordering::less
+           : a.units_ > b.units_ ? std::strong_ordering::greater
+                                 : std::strong_ordering::equal;
+  }
+
+ private:
+  Int128 units_ = 0;
+};
+
+struct Decimal::ParseResult {
+  std::optional<Decimal> value;
+  ParseError error = ParseError::kSyntax;
+};
+
+// Decimal text of a 128-bit integer (no such std::to_string).
+std::string int128_to_string(Int128 v);
+
+}  // namespace cutcom

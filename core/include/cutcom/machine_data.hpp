@@ -1,0 +1,56 @@
+// Machine data (spec MD-*): named settings with defaults and validation, settable as
+// `--md MD20204=0.02` (or by the $MC_ name) on the command line and from a file.
+#pragma once
+
+#include <istream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cutcom/block.hpp"
+#include "cutcom/decimal.hpp"
+
+namespace cutcom {
+
+class MachineDataError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct MachineData {
+  // Upper limits of the block counts: they size fast's fixed look-ahead buffer.
+  static constexpr int kMaxCheckBlocks = 50;
+  static constexpr int kMaxDummyBlocks = 50;
+
+  int wab_maxnum_dummy_blocks = 5;            // MD20202
+  Decimal wab_clearance_tolerance = Decimal::from_units(10'000'000);  // MD20204, 0.01 mm
+  Decimal cutcom_corner_limit = Decimal::from_int(100);               // MD20210, degrees
+  Decimal cutcom_max_disc = Decimal::from_int(50);                    // MD20220
+  Decimal cutcom_curve_insert_limit = Decimal::from_int(10);          // MD20230, degrees
+  int cutcom_maxnum_check_blocks = 3;         // MD20240
+  int cutcom_maxnum_dummy_blocks = 5;         // MD20250
+  EdgeStrategy group48_reset = EdgeStrategy::kG462;  // MD20150 $MC_GCODE_RESET_VALUES[47]
+
+  // Sets one datum from NAME=VALUE text; NAME is "MD20204" or "$MC_WAB_CLEARANCE_TOLERANCE".
+  void set(std::string_view name, std::string_view value);
+  void set_assignment(std::string_view name_equals_value);
+  // Reads NAME=VALUE lines; '#' or ';' start a comment. Errors name the file and line.
+  void load(std::istream& in, const std::string& source_name);
+  // The modal state at program start that machine data decide (group 48 initial setting).
+  ModalState initial_state() const;
+};
+
+// Descriptions for documentation and `cutcom md`.
+struct MachineDatumInfo {
+  std::string_view id;        // "MD20204"
+  std::string_view name;      // "$MC_WAB_CLEARANCE_TOLERANCE"
+  std::string_view unit;
+  std::string_view range;
+  std::string_view meaning;
+  std::string_view clause;    // spec clause defining the default
+};
+const std::vector<MachineDatumInfo>& machine_data_catalogue();
+std::string machine_datum_value(const MachineData& md, std::string_view id);
+
+}  // namespace cutcom

@@ -1,0 +1,62 @@
+// Writers of the output path model: text for people, JSON for programs (docs/json-format.md),
+// SVG pictures of the programmed contour and the tool-centre path.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cutcom/sink.hpp"
+
+namespace cutcom {
+
+// Streams path elements as they arrive; lists kept for the end (alarms, notices, trace).
+class JsonWriter : public PathSink {
+ public:
+  JsonWriter(std::ostream& out, std::string engine, bool with_trace);
+  void element(const PathElement& e) override;
+  void action(const ActionEvent& a) override;
+  void decision(const Decision& d) override;
+  void alarm(const Alarm& a) override;
+  void notice(const Notice& n) override;
+  void finish();
+
+ private:
+  std::ostream& out_;
+  bool with_trace_;
+  bool first_ = true;
+  std::string actions_, decisions_, alarms_, notices_;  // serialized JSON array items
+};
+
+class TextWriter : public PathSink {
+ public:
+  TextWriter(std::ostream& out, std::string engine, bool with_trace);
+  void element(const PathElement& e) override;
+  void action(const ActionEvent& a) override;
+  void decision(const Decision& d) override;
+  void alarm(const Alarm& a) override;
+  void notice(const Notice& n) override;
+  void finish();
+
+ private:
+  std::ostream& out_;
+  bool with_trace_;
+  int count_ = 0;
+};
+
+// A programmed contour segment for the picture (in-plane projection drawn as XY of the plane).
+struct ProgrammedSegment {
+  PathPoint start, end, center;
+  bool arc = false, ccw = false, rapid = false;
+  int line = 0;
+};
+
+void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programmed, const RunResult& result,
+               Plane plane, const std::string& title);
+
+std::vector<ProgrammedSegment> programmed_contour(const std::vector<Block>& blocks);
+
+// JSON helpers shared by the writers and tests.
+std::string json_point(const PathPoint& p);
+
+}  // namespace cutcom

@@ -1,0 +1,57 @@
+// The output path model shared by both engines: tool-centre path elements with provenance.
+// Coordinates are doubles: this is the output boundary (ref converts its exact values here).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cutcom/block.hpp"
+
+namespace cutcom {
+
+struct PathPoint {
+  double x = 0, y = 0, z = 0;
+};
+
+enum class ElementType : std::uint8_t { kLine, kArc };
+
+// What made an element (spec PATH-ORIGIN-1).
+enum class OriginKind : std::uint8_t {
+  kProgrammed,        // a block run without compensation
+  kApproach,          // the selection block's move onto the contour
+  kOffset,            // the equidistant of a compensated block
+  kTransitionCircle,  // the circle about the programmed corner of blocks `line` / `next_line`
+  kRetraction,        // the deselection block's move off the contour
+  kInfeed,            // motion of a block without motion in the plane, run at the corner point
+};
+
+struct Origin {
+  OriginKind kind = OriginKind::kProgrammed;
+  int line = 0;                          // source line of the block
+  std::optional<std::int64_t> block;     // its N number
+  int next_line = 0;                     // transition circle: line of the second corner block
+  std::optional<std::int64_t> next_block;
+};
+
+struct PathElement {
+  ElementType type = ElementType::kLine;
+  bool rapid = false;
+  PathPoint start, end, center;  // center: arcs only
+  bool ccw = false;              // arcs: counter-clockwise seen from the positive applicate axis
+  Decimal feed;                  // modal feed of the block the element belongs to
+  Origin origin;
+};
+
+// An auxiliary function (M/H), executed at `at` before the next element.
+struct ActionEvent {
+  int line = 0;
+  std::optional<std::int64_t> block;
+  AuxFunction function;
+  PathPoint at;
+};
+
+std::string origin_kind_name(OriginKind k);  // "offset", "transition_circle", ...
+std::string describe(const Origin& o);       // "transition circle at corner N30/N40"
+
+}  // namespace cutcom

@@ -1,0 +1,43 @@
+#include "cutcom/alarm.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <stdexcept>
+
+namespace cutcom {
+
+namespace {
+constexpr std::array kCatalogue = {
+    AlarmInfo{10750, "tool radius compensation activated without tool number", "TRC-SEL-6", false},
+    AlarmInfo{10751, "danger of collision due to tool radius compensation", "TRC-INNER-2", true},
+    AlarmInfo{10753, "selection of tool radius compensation only possible in linear block", "TRC-SEL-2", false},
+    AlarmInfo{10754, "deselection of tool radius compensation only possible in linear block", "TRC-DESEL-2", false},
+    AlarmInfo{10757, "changing the compensation plane while tool radius compensation is active not possible",
+              "TRC-PLANE-1", true},
+    AlarmInfo{10762, "too many empty blocks between two traversing blocks with active tool radius compensation",
+              "TRC-DUMMY-2", false},
+    AlarmInfo{17181, "D number not defined for the active tool", "TRC-SEL-7", false},
+};
+}  // namespace
+
+const AlarmInfo* find_alarm(int number) {
+  for (const AlarmInfo& a : kCatalogue)
+    if (a.number == number) return &a;
+  return nullptr;
+}
+
+Alarm make_alarm(int number, int line, std::optional<std::int64_t> block) {
+  const AlarmInfo* info = find_alarm(number);
+  if (info == nullptr) throw std::logic_error(fmt::format("alarm {} is not in the catalogue", number));
+  Alarm a;
+  a.number = number;
+  a.line = line;
+  a.block = block;
+  a.clause = info->clause;
+  a.text = block ? fmt::format("block N{} (line {}): {}", *block, line, info->text)
+                 : fmt::format("line {}: {}", line, info->text);
+  return a;
+}
+
+}  // namespace cutcom

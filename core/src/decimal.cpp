@@ -1,0 +1,107 @@
+#include "cutcom/decimal.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace cutcom {
+
+namespace {
+// Sums of program values may grow past the literal limit (many G91 steps); 1000x leaves room
+// while staying far from Int128 overflow.
+constexpr Int128 kArithmeticLimit = Decimal::kMaxUnits * 1000;
+
+Decimal checked(Int128 v) {
+  if (v > kArithmeticLimit || v < -kArithmeticLimit) throw std::overflow_error("value out of range");
+  return Decimal::from_units(v);
+}
+}  // namespace
+
+Decimal::ParseResult Decimal::parse(std::string_view s) {
+  ParseResult r;
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
+  Int128 integer = 0;
+  int int_digits = 0;
+  while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
+    integer = integer * 10 + (s[i++] - '0');
+    if (integer > kMaxUnits) { r.error = ParseError::kOutOfRange; return r; }
+    ++int_digits;
+  }
+  Int128 fraction = 0;
+  int frac_digits = 0;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
+      if (frac_digits == kFractionDigits) {
+        // Trailing zeros beyond nine places change nothing; anything else cannot be held exactly.
+        if (s[i] != '0') { r.error = ParseError::kTooManyDecimals; return r; }
+        ++i;
+        continue;
+      }
+      fraction = fraction * 10 + (s[i++] - '0');
+      ++frac_digits;
+    }
+  }
+  if (i != s.size() || (int_digits == 0 && frac_digits == 0)) { r.error = ParseError::kSyntax; return r; }
+  for (int k = frac_digits; k < kFractionDigits; ++k) fraction *= 10;
+  Int128 units = integer * kUnitsPerOne + fraction;
+  if (units > kMaxUnits) { r.error = ParseError::kOutOfRange; return r; }
+  r.value = from_units(negative ? -units : units);
+  return r;
+}
+
+std::optional<std::int64_t> Decimal::to_integer() const {
+  if (units_ % kUnitsPerOne != 0) return std::nullopt;
+  Int128 v = units_ / kUnitsPerOne;
+  if (v > INT64_MAX || v < INT64_MIN) return std::nullopt;
+  return static_cast<std::int64_t>(v);
+}
+
+double Decimal::to_double() const {
+  // strtod of the exact text "<units>e-9" rounds correctly; a stack buffer keeps it allocation-free.
+  char buf[64];
+  char* end = buf + sizeof buf;
+  char* p = end;
+  *--p = '\0';
+  for (const char* tail = "9-e"; *tail != '\0'; ++tail) *--p = *tail;
+  Int128 a = units_ < 0 ? -units_ : units_;
+  do {
+    *--p = static_cast<char>('0' + static_cast<int>(a % 10));
+    a /= 10;
+  } while (a != 0);
+  if (units_ < 0) *--p = '-';
+  return std::strtod(p, nullptr);
+}
+
+std::string int128_to_string(Int128 v) {
+  if (v == 0) return "0";
+  bool negative = v < 0;
+  std::string out;
+  while (v != 0) {
+    int digit = static_cast<int>(v % 10);
+    out.push_back(static_cast<char>('0' + (digit < 0 ? -digit : digit)));
+    v /= 10;
+  }
+  if (negative) out.push_back('-');
+  return {out.rbegin(), out.rend()};
+}
+
+std::string Decimal::to_string() const {
+  Int128 a = units_ < 0 ? -units_ : units_;
+  std::string out = units_ < 0 ? "-" : "";
+  out += int128_to_string(a / kUnitsPerOne);
+  Int128 frac = a % kUnitsPerOne;
+  if (frac != 0) {
+    std::string digits = int128_to_string(frac);
+    digits.insert(0, static_cast<std::size_t>(kFractionDigits) - digits.size(), '0');
+    while (digits.back() == '0') digits.pop_back();
+    out += "." + digits;
+  }
+  return out;
+}
+
+Decimal operator+(Decimal a, Decimal b) { return checked(a.units() + b.units()); }
+Decimal operator-(Decimal a, Decimal b) { return checked(a.units() - b.units()); }
+
+}  // namespace cutcom

@@ -1,0 +1,137 @@
+#include "cutcom/machine_data.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace cutcom {
+
+const std::vector<MachineDatumInfo>& machine_data_catalogue() {
+  static const std::vector<MachineDatumInfo> k = {
+      {"MD20150[47]", "$MC_GCODE_RESET_VALUES[47]", "", "1 (G460), 2 (G461), 3 (G462)",
+       "initial setting of G group 48 (approach/retraction behaviour)", "MD-20150-1"},
+      {"MD20202", "$MC_WAB_MAXNUM_DUMMY_BLOCKS", "blocks", "0 .. 50",
+       "blocks without traversing motion between a SAR block and the direction-defining block", "MD-20202-1"},
+      {"MD20204", "$MC_WAB_CLEARANCE_TOLERANCE", "mm", ">= 0", "tolerance of the SAR direction-reversal check",
+       "MD-20204-1"},
+      {"MD20210", "$MC_CUTCOM_CORNER_LIMIT", "degrees", "0 .. 180",
+       "contour angle above which G451 switches to G450", "MD-20210-1"},
+      {"MD20220", "$MC_CUTCOM_MAX_DISC", "", "0 .. 100", "largest DISC value", "MD-20220-1"},
+      {"MD20230", "$MC_CUTCOM_CURVE_INSERT_LIMIT", "degrees", "0 .. 180",
+       "contour angle below which G450 switches to G451", "MD-20230-1"},
+      {"MD20240", "$MC_CUTCOM_MAXNUM_CHECK_BLOCKS", "blocks", "1 .. 50",
+       "blocks examined by predictive contour calculation and collision detection", "MD-20240-1"},
+      {"MD20250", "$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS", "blocks", "0 .. 50",
+       "blocks without motion in the compensation plane between two compensated blocks", "MD-20250-1"},
+  };
+  return k;
+}
+
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string u(s);
+  std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return u;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+const MachineDatumInfo& lookup(std::string_view name) {
+  std::string u = upper(trim(name));
+  for (const auto& d : machine_data_catalogue())
+    if (u == d.id || u == d.name) return d;
+  throw MachineDataError(fmt::format("unknown machine datum '{}' (known: MD20150[47], MD20202, MD20204, MD20210, "
+                                     "MD20220, MD20230, MD20240, MD20250)",
+                                     name));
+}
+
+Decimal decimal_in(const MachineDatumInfo& d, std::string_view text, Decimal lo, std::optional<Decimal> hi) {
+  auto r = Decimal::parse(trim(text));
+  if (!r.value) throw MachineDataError(fmt::format("{}: '{}' is not a decimal number", d.id, text));
+  if (*r.value < lo || (hi && *r.value > *hi))
+    throw MachineDataError(fmt::format("{} = {} is out of range ({})", d.id, r.value->to_string(), d.range));
+  return *r.value;
+}
+
+int count_in(const MachineDatumInfo& d, std::string_view text, int lo, int hi) {
+  Decimal v = decimal_in(d, text, Decimal::from_int(lo), Decimal::from_int(hi));
+  auto i = v.to_integer();
+  if (!i) throw MachineDataError(fmt::format("{} must be a whole number, not {}", d.id, v.to_string()));
+  return static_cast<int>(*i);
+}
+
+}  // namespace
+
+void MachineData::set(std::string_view name, std::string_view value) {
+  const MachineDatumInfo& d = lookup(name);
+  std::string_view id = d.id;
+  if (id == "MD20150[47]") {
+    int v = count_in(d, value, 1, 3);
+    group48_reset = v == 1 ? EdgeStrategy::kG460 : v == 2 ? EdgeStrategy::kG461 : EdgeStrategy::kG462;
+  } else if (id == "MD20202") {
+    wab_maxnum_dummy_blocks = count_in(d, value, 0, kMaxDummyBlocks);
+  } else if (id == "MD20204") {
+    wab_clearance_tolerance = decimal_in(d, value, Decimal{}, std::nullopt);
+  } else if (id == "MD20210") {
+    cutcom_corner_limit = decimal_in(d, value, Decimal{}, Decimal::from_int(180));
+  } else if (id == "MD20220") {
+    cutcom_max_disc = decimal_in(d, value, Decimal{}, Decimal::from_int(100));
+  } else if (id == "MD20230") {
+    cutcom_curve_insert_limit = decimal_in(d, value, Decimal{}, Decimal::from_int(180));
+  } else if (id == "MD20240") {
+    cutcom_maxnum_check_blocks = count_in(d, value, 1, kMaxCheckBlocks);
+  } else if (id == "MD20250") {
+    cutcom_maxnum_dummy_blocks = count_in(d, value, 0, kMaxDummyBlocks);
+  }
+}
+
+void MachineData::set_assignment(std::string_view text) {
+  auto eq = text.find('=');
+  if (eq == std::string_view::npos)
+    throw MachineDataError(fmt::format("'{}': expected NAME=VALUE, e.g. MD20204=0.02", text));
+  set(text.substr(0, eq), text.substr(eq + 1));
+}
+
+void MachineData::load(std::istream& in, const std::string& source_name) {
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    std::string_view s = line;
+    auto c = s.find_first_of("#;");
+    if (c != std::string_view::npos) s = s.substr(0, c);
+    s = trim(s);
+    if (s.empty()) continue;
+    try {
+      set_assignment(s);
+    } catch (const MachineDataError& e) {
+      throw MachineDataError(fmt::format("{}:{}: {}", source_name, n, e.what()));
+    }
+  }
+}
+
+ModalState MachineData::initial_state() const {
+  ModalState s;
+  s.edge_strategy = group48_reset;
+  return s;
+}
+
+std::string machine_datum_value(const MachineData& md, std::string_view id) {
+  if (id == "MD20150[47]") return md.group48_reset == EdgeStrategy::kG460 ? "1" : md.group48_reset == EdgeStrategy::kG461 ? "2" : "3";
+  if (id == "MD20202") return std::to_string(md.wab_maxnum_dummy_blocks);
+  if (id == "MD20204") return md.wab_clearance_tolerance.to_string();
+  if (id == "MD20210") return md.cutcom_corner_limit.to_string();
+  if (id == "MD20220") return md.cutcom_max_disc.to_string();
+  if (id == "MD20230") return md.cutcom_curve_insert_limit.to_string();
+  if (id == "MD20240") return std::to_string(md.cutcom_maxnum_check_blocks);
+  if (id == "MD20250") return std::to_string(md.cutcom_maxnum_dummy_blocks);
+  return "";
+}
+
+}  // namespace cutcom

@@ -1,0 +1,106 @@
+#include "contour_angle.hpp"
+
+#include <mpfr.h>
+
+#include <stdexcept>
+
+#include "kernel.hpp"
+
+namespace cutcom::ref {
+
+namespace {
+
+// RAII for mpfr_t.
+struct Mpfr {
+  mpfr_t v;
+  explicit Mpfr(mpfr_prec_t bits) { mpfr_init2(v, bits); }
+  ~Mpfr() { mpfr_clear(v); }
+  Mpfr(const Mpfr&) = delete;
+  Mpfr& operator=(const Mpfr&) = delete;
+};
+
+mpq_class threshold_rational(const Decimal& t) {
+  mpq_class q(mpz_class(int128_to_string(t.units())), mpz_class(Decimal::kUnitsPerOne));
+  q.canonicalize();
+  return q;
+}
+
+// cos^2(T) when it is rational (T in degrees, 0 <= T <= 180), with the sign of cos(T).
+bool special_cosine(const mpq_class& t, mpq_class& cos_squared, int& cos_sign) {
+  if (t.get_den() != 1) return false;
+  long deg = t.get_num().get_si();
+  switch (deg) {
+    case 0: cos_squared = 1; cos_sign = 1; return true;
+    case 30: cos_squared = mpq_class(3, 4); cos_sign = 1; return true;
+    case 45: cos_squared = mpq_class(1, 2); cos_sign = 1; return true;
+    case 60: cos_squared = mpq_class(1, 4); cos_sign = 1; return true;
+    case 90: cos_squared = 0; cos_sign = 0; return true;
+    case 120: cos_squared = mpq_class(1, 4); cos_sign = -1; return true;
+    case 135: cos_squared = mpq_class(1, 2); cos_sign = -1; return true;
+    case 150: cos_squared = mpq_class(3, 4); cos_sign = -1; return true;
+    case 180: cos_squared = 1; cos_sign = -1; return true;
+    default: return false;
+  }
+}
+
+// sign(cos T - cos theta) with cos theta = dot / sqrt(l2).
+int sign_cos_difference(const mpz_class& dot, const mpz_class& l2, const mpq_class& t) {
+  mpq_class c2;
+  int cs = 0;
+  int qs = sgn(dot);
+  if (special_cosine(t, c2, cs)) {
+    if (cs != qs) return cs > qs ? 1 : -1;
+    if (cs == 0) return 0;
+    mpq_class q2(dot * dot, l2);
+    q2.canonicalize();
+    int magnitude = cmp(c2, q2);  // sign(|cos T| - |cos theta|)
+    return cs > 0 ? (magnitude > 0) - (magnitude < 0) : (magnitude < 0) - (magnitude > 0);
+  }
+  for (mpfr_prec_t bits = 128; bits <= (1 << 16); bits *= 2) {
+    Mpfr arg(bits), cos_t(bits), q(bits), root(bits), diff(bits), bound(bits);
+    mpfr_const_pi(arg.v, MPFR_RNDN);
+    mpfr_mul_q(arg.v, arg.v, t.get_mpq_t(), MPFR_RNDN);
+    mpfr_div_ui(arg.v, arg.v, 180, MPFR_RNDN);
+    mpfr_cos(cos_t.v, arg.v, MPFR_RNDN);
+    mpfr_set_z(root.v, l2.get_mpz_t(), MPFR_RNDN);
+    mpfr_sqrt(root.v, root.v, MPFR_RNDN);
+    mpfr_set_z(q.v, dot.get_mpz_t(), MPFR_RNDN);
+    mpfr_div(q.v, q.v, root.v, MPFR_RNDN);
+    mpfr_sub(diff.v, cos_t.v, q.v, MPFR_RNDN);
+    // Each side is within 16 * 2^-bits of its true value (|arg| <= pi, a few roundings each).
+    mpfr_set_ui_2exp(bound.v, 64, -bits, MPFR_RNDN);
+    if (mpfr_cmpabs(diff.v, bound.v) > 0) return mpfr_sgn(diff.v);
+  }
+  throw std::logic_error("contour angle comparison did not separate (impossible by Niven's theorem)");
+}
+
+std::string margin_degrees(const mpz_class& cross, const mpz_class& dot, const mpq_class& t, int exact_sign) {
+  if (exact_sign == 0) return "0";
+  Mpfr theta(192), c(192), s(192), pi(192);
+  mpfr_set_z(s.v, cross.get_mpz_t(), MPFR_RNDN);
+  mpfr_abs(s.v, s.v, MPFR_RNDN);
+  mpfr_set_z(c.v, dot.get_mpz_t(), MPFR_RNDN);
+  mpfr_atan2(theta.v, s.v, c.v, MPFR_RNDN);
+  mpfr_const_pi(pi.v, MPFR_RNDN);
+  mpfr_mul_ui(theta.v, theta.v, 180, MPFR_RNDN);
+  mpfr_div(theta.v, theta.v, pi.v, MPFR_RNDN);
+  mpfr_sub_q(theta.v, theta.v, t.get_mpq_t(), MPFR_RNDN);
+  mpfr_abs(theta.v, theta.v, MPFR_RNDN);
+  char buf[64];
+  mpfr_snprintf(buf, sizeof buf, "%.17Re", theta.v);
+  return (exact_sign < 0 ? "-" : "") + std::string(buf);
+}
+
+}  // namespace
+
+AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& dot,
+                                      const mpz_class& squared_lengths_product, const Decimal& threshold_degrees) {
+  mpq_class t = threshold_rational(threshold_degrees);
+  AngleComparison r;
+  // theta > T  <=>  cos theta < cos T  (both angles in [0, 180] degrees).
+  r.sign = sign_cos_difference(dot, squared_lengths_product, t);
+  r.margin_text = margin_degrees(cross, dot, t, r.sign);
+  return r;
+}
+
+}  // namespace cutcom::ref

@@ -1,0 +1,29 @@
+// TRC-CORNER-3/4: the exact comparison of a corner's contour angle with a threshold in degrees
+// (MD20210, MD20230), with no double anywhere (ruling 29).
+#pragma once
+
+#include <gmpxx.h>
+
+#include <string>
+
+#include "cutcom/decimal.hpp"
+
+namespace cutcom::ref {
+
+struct AngleComparison {
+  int sign = 0;             // sign(theta - threshold)
+  std::string margin_text;  // theta - threshold in degrees; its sign is exact
+};
+
+// theta = deflection angle between two directions with integer cross product `cross`, dot
+// product `dot` and |d1|^2 |d2|^2 = `squared_lengths_product`; threshold in [0, 180] degrees.
+//
+// Why this is exact: cos(theta) = dot / sqrt(L2) has a rational square. If cos(theta) = cos(T)
+// then cos^2(T) is rational, and by Niven's theorem (T a rational number of degrees) that happens
+// only for T mod 180 in {0, 30, 45, 60, 90, 120, 135, 150}; those are compared with rationals.
+// For any other T the two values differ, so MPFR evaluation with a proven error bound and
+// increasing precision always reaches a decision.
+AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& dot,
+                                      const mpz_class& squared_lengths_product, const Decimal& threshold_degrees);
+
+}  // namespace cutcom::ref

@@ -1,0 +1,396 @@
+// ref's walk through the program. Each step cites the spec clause it implements; geometry comes
+// from equidistant.hpp (exact constructions) and contour_element / contour_angle (exact predicates).
+#include "cutcom/ref/engine.hpp"
+
+#include <optional>
+
+#include "contour_angle.hpp"
+#include "contour_element.hpp"
+#include "equidistant.hpp"
+#include "exact_path.hpp"
+
+namespace cutcom::ref {
+
+namespace {
+
+// A point of the tool-centre path: exact in the plane, the applicate as programmed.
+struct CentrePoint {
+  Point plane;
+  Decimal applicate;
+};
+
+class Reference {
+ public:
+  Reference(const std::vector<Block>& program, const MachineData& md, PathSink& sink)
+      : program_(program), md_(md), sink_(sink), actions_done_(program.size(), false) {}
+
+  bool run() {
+    for (const Block& b : program_) {
+      if (stopped_) break;
+      step(b);
+    }
+    if (!stopped_) end_of_program();
+    return !stopped_;
+  }
+
+  ExactPath path;
+
+ private:
+  enum class Phase { kOff, kApproach, kActive };
+
+  // --- the compensation in force ---------------------------------------------------------------
+  struct Compensation {
+    Plane plane;
+    PlaneAxes axes;
+    Side side;
+    int s;            // +1 left, -1 right (TRC-RADIUS-2 applied)
+    FT side_radius;   // s * r, r = |effective radius| in units
+    Decimal radius;   // r
+    ActiveEdge edge;
+  };
+
+  // --- trace, alarms, output ---------------------------------------------------------------------
+  void decide(std::string_view clause, int line, std::string_view branch) {
+    Decision d;
+    d.clause = clause, d.line = line, d.branch = branch;
+    sink_.decision(d);
+  }
+  void decide(std::string_view clause, int line, std::string_view branch, std::string margin) {
+    Decision d;
+    d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin_exact = std::move(margin);
+    sink_.decision(d);
+  }
+  void raise(int number, const Block& at) {
+    sink_.alarm(make_alarm(number, at.words.line, at.words.number));
+    stopped_ = true;
+  }
+
+  // Auxiliary functions of a block run before its first element (PATH-ACTION-1).
+  void run_actions(const Block& b, const PathPoint& at) {
+    if (actions_done_[static_cast<std::size_t>(b.index)]) return;
+    actions_done_[static_cast<std::size_t>(b.index)] = true;
+    for (int i = 0; i < b.words.aux_count; ++i)
+      sink_.action({b.words.line, b.words.number, b.words.aux[static_cast<std::size_t>(i)], at});
+  }
+
+  Origin origin(const Block& b, OriginKind kind) const {
+    Origin o;
+    o.kind = kind, o.line = b.words.line, o.block = b.words.number;
+    return o;
+  }
+
+  // PATH-ELEMENT-1: a straight element; zero-length ones are not output.
+  void emit_line(const Block& owner, const ExactPoint& from, const ExactPoint& to, OriginKind kind,
+                 const ContourLine* offset_of = nullptr) {
+    PathPoint a = path.output(from), b = path.output(to);
+    run_actions(owner, a);
+    if (path.same(from, to)) return;
+    PathElement e;
+    e.type = ElementType::kLine, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
+    e.start = a, e.end = b, e.origin = origin(owner, kind);
+    path.add_line(from, to, offset_of, comp_ ? comp_->side_radius : FT(0), comp_ ? comp_->axes : PlaneAxes{0, 1, 2});
+    sink_.element(e);
+  }
+
+  ExactPoint at(const CentrePoint& p) const { return ExactPoint::in_plane(p.plane, p.applicate, comp_->axes); }
+  static ExactPoint at(const Point3& p) { return ExactPoint::programmed(p); }
+
+  // --- one block ---------------------------------------------------------------------------------
+  void step(const Block& b) {
+    switch (phase_) {
+      case Phase::kOff: return compensation_off(b);
+      case Phase::kApproach: return waiting_for_contour(b);
+      case Phase::kActive: return compensation_active(b);
+    }
+  }
+
+  void run_uncompensated(const Block& b) {
+    if (b.is_arc()) throw UnsupportedError(b.words.line, "circular interpolation G2/G3");
+    emit_line(b, at(b.start), at(b.end), OriginKind::kProgrammed);
+  }
+
+  // TRC-SEL-*: may this block select compensation?
+  void compensation_off(const Block& b) {
+    if (b.state.side == Side::kOff) return run_uncompensated(b);
+    if (b.is_arc()) return raise(10753, b);              // TRC-SEL-2
+    if (!b.programs_plane_axis()) {                      // TRC-SEL-4
+      decide("TRC-SEL-4", b.words.line, "no-plane-axis");
+      return run_uncompensated(b);
+    }
+    if (b.state.tool == 0) return raise(10750, b);       // TRC-SEL-6
+    if (b.state.edge == 0) {                             // TRC-SEL-5
+      decide("TRC-SEL-5", b.words.line, "d0");
+      if (!d0_noticed_) sink_.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
+      d0_noticed_ = true;
+      return run_uncompensated(b);
+    }
+    if (!b.state.edge_defined) return raise(17181, b);  // TRC-SEL-7
+    select(b);
+  }
+
+  // TRC-SEL-1: the selection block; TRC-RADIUS-1/2: effective radius and side.
+  void select(const Block& b) {
+    if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+      throw UnsupportedError(b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+    if (b.state.approach == ApproachMode::kKont) throw UnsupportedError(b.words.line, "KONT approach");
+    decide("TRC-SEL-1", b.words.line, "selected");
+    Decimal effective = b.state.effective_radius();
+    decide("TRC-RADIUS-2", b.words.line,
+           effective.sign() < 0 ? "negative" : effective.sign() == 0 ? "zero" : "positive");
+    int s = b.state.side == Side::kLeft ? 1 : -1;
+    if (effective.sign() < 0) s = -s;  // TRC-RADIUS-2: a negative radius swaps G41 and G42
+    Decimal r = effective.sign() < 0 ? -effective : effective;
+    comp_ = Compensation{b.state.plane, plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
+                         ActiveEdge::of(b.state)};
+    selection_ = &b;
+    dummies_.clear();
+    phase_ = Phase::kApproach;
+  }
+
+  // Checks of every block while compensation is selected. False: an alarm stopped the program.
+  bool still_compensable(const Block& b) {
+    if (b.state.side == Side::kOff) {
+      if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
+        raise(10754, b);
+        return false;
+      }
+      return true;
+    }
+    if (b.state.plane != comp_->plane) {  // TRC-PLANE-1
+      raise(10757, b);
+      return false;
+    }
+    if (b.is_arc()) throw UnsupportedError(b.words.line, "circular interpolation G2/G3 with compensation active");
+    if (b.state.side != comp_->side)
+      throw UnsupportedError(b.words.line, "change of compensation side G41/G42 without G40");
+    if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
+    if (!(ActiveEdge::of(b.state) == comp_->edge))
+      throw UnsupportedError(b.words.line, "change of tool, D number or OFFN while compensation is active");
+    if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+      throw UnsupportedError(b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+    return true;
+  }
+
+  // TRC-DUMMY-2: at most MD20250 blocks without motion in the plane in a row.
+  void hold_back(const Block& b) {
+    if (static_cast<int>(dummies_.size()) == md_.cutcom_maxnum_dummy_blocks) return raise(10762, b);
+    dummies_.push_back(&b);
+  }
+
+  // TRC-DUMMY-1: held-back blocks run at the corner point P*, only their applicate moving.
+  void run_held_back(const Point& corner_point) {
+    for (const Block* d : dummies_)
+      emit_line(*d, at({corner_point, coord(d->start, comp_->axes.applicate)}),
+                at({corner_point, coord(d->end, comp_->axes.applicate)}), OriginKind::kInfeed);
+    dummies_.clear();
+  }
+  void run_held_back_uncompensated() {
+    for (const Block* d : dummies_) emit_line(*d, at(d->start), at(d->end), OriginKind::kProgrammed);
+    dummies_.clear();
+  }
+
+  // --- approach ----------------------------------------------------------------------------------
+  void waiting_for_contour(const Block& b) {
+    if (b.state.side == Side::kOff) {
+      // TRC-SEL-8: deselected before any block moved in the plane: no selection took place.
+      decide("TRC-SEL-8", selection_->words.line, "deselected-before-contour");
+      emit_line(*selection_, at(selection_->start), at(selection_->end), OriginKind::kProgrammed);
+      run_held_back_uncompensated();
+      phase_ = Phase::kOff;
+      comp_.reset();
+      return compensation_off(b);
+    }
+    if (!still_compensable(b)) return;
+    if (!b.moves_in_plane()) return hold_back(b);
+    approach_norm(b);
+  }
+
+  // TRC-APPR-NORM-1: a straight line from the start position to the point normal to the start of
+  // the first contour element, at distance r on the compensation side.
+  void approach_norm(const Block& first_block) {
+    ContourLine first = ContourLine::of(first_block, comp_->axes);
+    Point onto = equidistant_point<Kernel>(first.a, first.normal, comp_->side_radius);
+    ExactPoint from = at(selection_->start);
+    ExactPoint to = at({onto, coord(selection_->end, comp_->axes.applicate)});
+    FT length = path.distance(from, to);
+    decide("TRC-APPR-NORM-1", selection_->words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line",
+           exact_mm(length));
+    emit_line(*selection_, from, to, OriginKind::kApproach);
+    run_held_back(onto);
+    open_ = first;
+    open_block_ = &first_block;
+    open_start_ = onto;
+    open_trim_ = FT(0);
+    phase_ = Phase::kActive;
+  }
+
+  // --- compensation active -----------------------------------------------------------------------
+  void compensation_active(const Block& b) {
+    if (!still_compensable(b)) return;
+    if (b.state.side == Side::kOff) {
+      if (!b.programs_plane_axis()) {  // TRC-DESEL-3
+        decide("TRC-DESEL-3", b.words.line, "no-plane-axis");
+        return hold_back(b);
+      }
+      return deselect_norm(b);
+    }
+    if (!b.moves_in_plane()) return hold_back(b);
+    corner(b);
+  }
+
+  // TRC-ELEMENT-1: the open element, shortened by its start and end trims, must keep a length >= 0;
+  // it is output unless that length is exactly 0.
+  bool close_open(const Point& end_point, const FT& trim_end, const Block& reporting) {
+    FT margin = open_->length - open_trim_ - trim_end;
+    CGAL::Sign sign = CGAL::sign(margin);
+    if (sign == CGAL::NEGATIVE) {
+      decide("TRC-ELEMENT-1", open_->line, "reverses", exact_mm(margin));
+      raise(10751, reporting);
+      return false;
+    }
+    decide("TRC-ELEMENT-1", open_->line, sign == CGAL::ZERO ? "vanishes" : "fits", exact_mm(margin));
+    ExactPoint from = at({open_start_, coord(open_->start3, comp_->axes.applicate)});
+    ExactPoint to = at({end_point, coord(open_->end3, comp_->axes.applicate)});
+    if (sign == CGAL::ZERO) {
+      run_actions(*open_block_, path.output(to));
+      return true;
+    }
+    emit_line(*open_block_, from, to, OriginKind::kOffset, &*open_);
+    return true;
+  }
+
+  void corner(const Block& next_block) {
+    ContourLine next = ContourLine::of(next_block, comp_->axes);
+    const ContourLine& first = *open_;
+    CornerClass c = classify_corner(first, next, comp_->s);  // TRC-CORNER-1
+    static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
+    FT sine = FT(comp_->s) * FT(CORE::BigInt(c.cross.get_mpz_t())) / (first.length * next.length);
+    decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(c.kind)], exact_text(sine));
+
+    bool circle = c.kind == CornerKind::kReversal;  // TRC-G450-3
+    if (c.kind == CornerKind::kOuter) {
+      if (next_block.state.corner == CornerMode::kG451) {
+        // TRC-CORNER-3: G451 becomes G450 when the contour angle exceeds MD20210.
+        AngleComparison a = compare_contour_angle(c.cross, c.dot, c.squared_lengths_product, md_.cutcom_corner_limit);
+        circle = a.sign > 0;
+        decide("TRC-CORNER-3", next_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
+      } else {
+        // TRC-CORNER-4: G450 becomes G451 when the contour angle is below MD20230.
+        AngleComparison a =
+            compare_contour_angle(c.cross, c.dot, c.squared_lengths_product, md_.cutcom_curve_insert_limit);
+        circle = !(a.sign < 0);
+        decide("TRC-CORNER-4", next_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
+      }
+    }
+    const Point& vertex = first.b;
+    if (circle) return transition_circle(next_block, next, vertex);
+
+    // TRC-G451-1, TRC-INNER-1 (and a tangent corner, trim 0): both equidistants end at their
+    // intersection.
+    FT trim = c.kind == CornerKind::kTangent
+                  ? FT(0)
+                  : corner_trim<Kernel>(FT(CORE::BigInt(c.cross.get_mpz_t())), FT(CORE::BigInt(c.dot.get_mpz_t())),
+                                        first.length, next.length, comp_->side_radius);
+    Point x = corner_intersection<Kernel>(vertex, first.normal, first.d, first.length, comp_->side_radius, trim);
+    if (!close_open(x, trim, next_block)) return;
+    run_held_back(x);
+    open(next_block, next, x, trim);
+  }
+
+  // TRC-G450-1: a circle of radius r about the programmed corner from the normal end point of the
+  // first equidistant to the normal start point of the second; it belongs to the second block.
+  void transition_circle(const Block& next_block, const ContourLine& next, const Point& vertex) {
+    Point from = equidistant_point<Kernel>(vertex, open_->normal, comp_->side_radius);
+    if (!close_open(from, FT(0), next_block)) return;
+    run_held_back(from);
+    Point to = equidistant_point<Kernel>(vertex, next.normal, comp_->side_radius);
+    Decimal h = coord(next_block.start, comp_->axes.applicate);
+    if (comp_->radius.sign() != 0) {  // TRC-G450-2: no circle for a zero radius
+      ExactPoint a = at({from, h}), e = at({to, h});
+      PathPoint start = path.output(a);
+      run_actions(next_block, start);
+      PathElement el;
+      el.type = ElementType::kArc, el.rapid = next_block.state.motion == Motion::kRapid;
+      el.feed = next_block.state.feed;
+      el.start = start, el.end = path.output(e), el.center = path.output(at({vertex, h}));
+      el.ccw = comp_->s < 0;  // around the outside of the corner
+      el.origin = origin(*open_block_, OriginKind::kTransitionCircle);
+      el.origin.next_line = next_block.words.line, el.origin.next_block = next_block.words.number;
+      path.add_circle(a, e, at({vertex, h}), comp_->side_radius, comp_->axes);
+      sink_.element(el);
+    }
+    open(next_block, next, to, FT(0));
+  }
+
+  void open(const Block& b, const ContourLine& line, const Point& start, const FT& trim) {
+    open_ = line;
+    open_block_ = &b;
+    open_start_ = start;
+    open_trim_ = trim;
+  }
+
+  // TRC-DESEL-1, TRC-RETR-NORM-1: the last equidistant ends at its normal end point; a straight
+  // line leads to the programmed end point of the deselection block.
+  void deselect_norm(const Block& b) {
+    Point end = equidistant_point<Kernel>(open_->b, open_->normal, comp_->side_radius);
+    decide("TRC-DESEL-1", b.words.line, "deselected");
+    if (!close_open(end, FT(0), b)) return;
+    run_held_back(end);
+    ExactPoint from = at({end, coord(b.start, comp_->axes.applicate)});
+    ExactPoint to = at(b.end);
+    FT length = path.distance(from, to);
+    decide("TRC-RETR-NORM-1", b.words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line",
+           exact_mm(length));
+    emit_line(b, from, to, OriginKind::kRetraction);
+    phase_ = Phase::kOff;
+    comp_.reset();
+    open_.reset();
+  }
+
+  // TRC-END-1: the program ends while compensation is selected.
+  void end_of_program() {
+    if (phase_ == Phase::kApproach) {
+      decide("TRC-END-1", selection_->words.line, "no-contour");
+      sink_.notice({selection_->words.line, "TRC-END-1",
+                    "compensation selected but no block with motion in the plane follows"});
+      emit_line(*selection_, at(selection_->start), at(selection_->end), OriginKind::kProgrammed);
+      run_held_back_uncompensated();
+    } else if (phase_ == Phase::kActive) {
+      decide("TRC-END-1", open_->line, "active-at-end");
+      sink_.notice({open_->line, "TRC-END-1",
+                    "program ends with compensation active: last block ends at its normal point"});
+      Point end = equidistant_point<Kernel>(open_->b, open_->normal, comp_->side_radius);
+      if (!close_open(end, FT(0), *open_block_)) return;
+      run_held_back(end);
+    }
+  }
+
+  const std::vector<Block>& program_;
+  const MachineData& md_;
+  PathSink& sink_;
+  std::vector<bool> actions_done_;
+  Phase phase_ = Phase::kOff;
+  bool stopped_ = false;
+  bool d0_noticed_ = false;
+  std::optional<Compensation> comp_;
+  const Block* selection_ = nullptr;
+  std::vector<const Block*> dummies_;
+  std::optional<ContourLine> open_;
+  const Block* open_block_ = nullptr;
+  Point open_start_;
+  FT open_trim_;
+};
+
+}  // namespace
+
+bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
+  std::vector<Block> program;
+  Block b;
+  while (reader.next(b)) program.push_back(b);
+  Reference engine(program, md, sink);
+  bool ok = engine.run();
+  if (checks) engine.path.check(*checks);
+  return ok;
+}
+
+}  // namespace cutcom::ref

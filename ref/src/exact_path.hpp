@@ -1,0 +1,46 @@
+// ref's exact record of the path it outputs, and the exact self-checks run on it
+// (PROP-EXACT-1..3): the properties are decided before anything is rounded.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "contour_element.hpp"
+#include "cutcom/ref/engine.hpp"
+#include "kernel.hpp"
+
+namespace cutcom::ref {
+
+// A point of the path in workpiece coordinates, exact, in units of 10^-9 mm.
+struct ExactPoint {
+  FT x, y, z;
+  static ExactPoint programmed(const Point3& p) { return {leaf(p.x), leaf(p.y), leaf(p.z)}; }
+  static ExactPoint in_plane(const Point& p, const Decimal& applicate, PlaneAxes axes);
+  Point plane(PlaneAxes axes) const;
+};
+
+class ExactPath {
+ public:
+  PathPoint output(const ExactPoint& p) const;     // rounded once, for the shared output model
+  bool same(const ExactPoint& a, const ExactPoint& b) const;
+  FT distance(const ExactPoint& a, const ExactPoint& b) const;
+
+  // Records an output line; `offset_of` names the programmed block for an equidistant.
+  void add_line(const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of, const FT& side_radius,
+                PlaneAxes axes);
+  void add_circle(const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre, const FT& side_radius,
+                  PlaneAxes axes);
+  void check(ExactCheckReport& report) const;
+
+ private:
+  struct Element {
+    ExactPoint start, end;
+    PlaneAxes axes{0, 1, 2};
+    std::optional<ContourLine> offset_of;  // equidistant of this programmed line
+    std::optional<ExactPoint> centre;      // transition circle
+    FT side_radius;
+  };
+  std::vector<Element> elements_;
+};
+
+}  // namespace cutcom::ref

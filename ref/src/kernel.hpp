@@ -1,0 +1,39 @@
+// ref's number model. Coordinates are exact: the kernel's FT is CORE::Expr (exact square roots),
+// built from integer leaves (program values in units of 10^-9, toolchain notes rule 3), and
+// decisions that can be phrased on the programmed data use GMP integers instead.
+#pragma once
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
+#include <gmpxx.h>
+
+#include <string>
+
+#include "cutcom/block.hpp"
+#include "cutcom/path.hpp"
+
+namespace cutcom::ref {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt;
+using FT = Kernel::FT;
+using Point = Kernel::Point_2;
+using Vector = Kernel::Vector_2;
+
+// Exact integer of a decimal's units (value * 10^9).
+mpz_class units_of(const Decimal& d);
+// An integer Expr leaf holding a decimal's units (fresh per call: no shared, polluted leaves).
+FT leaf(const Decimal& d);
+
+// The in-plane point (abscissa, ordinate) of a programmed position, in units.
+Point plane_point(const Point3& p, PlaneAxes axes);
+
+// Output boundary: exact plane point + programmed applicate -> workpiece coordinates in mm.
+PathPoint to_output(const Point& p, const Decimal& applicate, PlaneAxes axes);
+PathPoint to_output(const Point3& p);
+
+// A margin for the decision trace: the sign is exact, the digits are a 20-digit rendering.
+std::string exact_text(const FT& value);
+std::string exact_text(const mpq_class& value);
+// A length margin: units (10^-9 mm) rendered in mm.
+std::string exact_mm(const FT& units);
+
+}  // namespace cutcom::ref
