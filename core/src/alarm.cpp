@@ -10,7 +10,7 @@ namespace cutcom {
 namespace {
 constexpr std::array kCatalogue = {
     AlarmInfo{10750, "tool radius compensation activated without tool number", "TRC-SEL-6", false},
-    AlarmInfo{10751, "danger of collision due to tool radius compensation", "TRC-INNER-2", true},
+    AlarmInfo{10751, "danger of collision due to tool radius compensation", "TRC-ELEMENT-1", true},
     AlarmInfo{10753, "selection of tool radius compensation only possible in linear block", "TRC-SEL-2", false},
     AlarmInfo{10754, "deselection of tool radius compensation only possible in linear block", "TRC-DESEL-2", false},
     AlarmInfo{10757, "changing the compensation plane while tool radius compensation is active not possible",

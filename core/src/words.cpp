@@ -86,6 +86,18 @@ class WordLexer {
     return *v;
   }
 
+  // An unsigned whole number written with digits only (indices of system variables).
+  std::int64_t digits(const std::string& what) {
+    std::size_t start = i_;
+    std::int64_t v = 0;
+    while (!at_end() && is_digit(peek())) {
+      v = v * 10 + (s_[i_++] - '0');
+      if (v > 1'000'000'000) fail(fmt::format("{} is out of range", what), start);
+    }
+    if (i_ == start) fail(fmt::format("{} expected", what));
+    return v;
+  }
+
   bool equals() {
     skip_space();
     if (peek() != '=') return false;
@@ -312,12 +324,12 @@ class WordLexer {
     if (peek() != '[') fail("'[' expected after $TC_DP" + std::to_string(p));
     ++i_;
     skip_space();
-    std::int64_t t = integer("tool number");
+    std::int64_t t = digits("tool number");
     skip_space();
     if (peek() != ',') fail("',' expected between tool and edge number (write $TC_DPn[t,d])");
     ++i_;
     skip_space();
-    std::int64_t d = integer("edge number");
+    std::int64_t d = digits("edge number");
     skip_space();
     if (peek() != ']') fail("']' expected");
     ++i_;

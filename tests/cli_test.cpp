@@ -1,0 +1,111 @@
+// The command line as a user meets it: exit status, formats, stdin, machine data, errors.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out;
+};
+
+Result sh(const std::string& cmd) {
+  Result r{-1, {}};
+  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+const std::string kCli = CUTCOM_CLI;
+const std::string kExample = CUTCOM_SOURCE_DIR "/examples/pocket.mpf";
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  std::string path = std::string(CUTCOM_BINARY_DIR) + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// covers: CLI-1
+TEST(Cli, JsonOfTheExampleHasTheDocumentedShape) {
+  for (const char* engine : {"fast", "ref"}) {
+    Result r = sh(kCli + " run " + kExample + " --format json --engine " + engine);
+    ASSERT_EQ(r.status, 0) << engine;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["engine"], engine);
+    ASSERT_GT(j["path"].size(), 10u);
+    bool saw_arc = false;
+    for (const auto& e : j["path"]) {
+      EXPECT_TRUE(e["type"] == "line" || e["type"] == "arc");
+      EXPECT_TRUE(e["rapid"].is_boolean());
+      EXPECT_EQ(e["start"].size(), 3u);
+      EXPECT_EQ(e["end"].size(), 3u);
+      EXPECT_TRUE(e["line"].is_number_integer());
+      EXPECT_TRUE(e["origin"]["kind"].is_string());
+      if (e["type"] == "arc") {
+        saw_arc = true;
+        EXPECT_EQ(e["center"].size(), 3u);
+        EXPECT_TRUE(e["ccw"].is_boolean());
+      }
+    }
+    EXPECT_TRUE(saw_arc);
+    EXPECT_TRUE(j["alarms"].empty());
+  }
+}
+
+// covers: CLI-1 ALARM-1
+TEST(Cli, AlarmGivesExitOneWithThePathBeforeIt) {
+  std::string p = write_temp("alarm.mpf",
+                             "$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X0 Y0\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-5\n");
+  Result r = sh(kCli + " run " + p + " --format json");
+  EXPECT_EQ(r.status, 1);
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["alarms"].size(), 1u);
+  EXPECT_EQ(j["alarms"][0]["number"], 10751);
+  EXPECT_EQ(j["alarms"][0]["line"], 6);
+  EXPECT_EQ(j["path"].size(), 2u);
+}
+
+// covers: CLI-1 NC-ERR-1
+TEST(Cli, BadInputAndUsageGiveExitTwo) {
+  EXPECT_EQ(sh(kCli + " run " + write_temp("bad.mpf", "G1 X1\nQ7\n")).status, 2);
+  EXPECT_EQ(sh(kCli + " run /nonexistent.mpf").status, 2);
+  EXPECT_EQ(sh(kCli + " run " + kExample + " --md MD20210=500").status, 2);
+  EXPECT_EQ(sh(kCli + " run " + kExample + " --format pdf").status, 2);
+  EXPECT_EQ(sh(kCli + " frobnicate").status, 2);
+  EXPECT_EQ(sh(kCli + " run " + write_temp("arc.mpf", "G2 X1 Y1 CR=1\n")).status, 2);  // not supported yet
+}
+
+// covers: CLI-1
+TEST(Cli, StdinMachineDataAndSvg) {
+  Result a = sh("printf 'G0 X1\\nG1 Y2 F5\\n' | " + kCli + " run - --format json");
+  ASSERT_EQ(a.status, 0);
+  EXPECT_EQ(nlohmann::json::parse(a.out)["path"].size(), 2u);
+  // MD20210 = 130 keeps the 128 degree corner of the example as an intersection: one circle less.
+  auto circles = [](const std::string& out) {
+    int n = 0;
+    const auto j = nlohmann::json::parse(out);  // kept alive: the loop walks into it
+    for (const auto& e : j["path"]) n += e["type"] == "arc";
+    return n;
+  };
+  Result d = sh(kCli + " run " + kExample + " --format json");
+  Result m = sh(kCli + " run " + kExample + " --format json --md MD20210=130");
+  EXPECT_EQ(circles(m.out), circles(d.out) - 1);
+  Result s = sh(kCli + " run " + kExample + " --format svg");
+  EXPECT_EQ(s.status, 0);
+  EXPECT_NE(s.out.find("<svg"), std::string::npos);
+  EXPECT_NE(s.out.find("transition circle"), std::string::npos);
+  Result t = sh(kCli + " run " + kExample + " --trace");
+  EXPECT_NE(t.out.find("TRC-CORNER-1"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,64 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "cutcom/alarm.hpp"
+#include "cutcom/machine_data.hpp"
+
+namespace cutcom {
+namespace {
+
+// covers: MD-20202-1 MD-20204-1 MD-20210-1 MD-20220-1 MD-20230-1 MD-20240-1 MD-20250-1 MD-20150-1
+TEST(MachineData, DefaultsOfTheRulings) {
+  MachineData md;
+  EXPECT_EQ(md.wab_maxnum_dummy_blocks, 5);
+  EXPECT_EQ(md.wab_clearance_tolerance, *Decimal::parse("0.01").value);
+  EXPECT_EQ(md.cutcom_corner_limit, Decimal::from_int(100));
+  EXPECT_EQ(md.cutcom_max_disc, Decimal::from_int(50));
+  EXPECT_EQ(md.cutcom_curve_insert_limit, Decimal::from_int(10));
+  EXPECT_EQ(md.cutcom_maxnum_check_blocks, 3);
+  EXPECT_EQ(md.cutcom_maxnum_dummy_blocks, 5);
+  EXPECT_EQ(md.initial_state().edge_strategy, EdgeStrategy::kG462);
+}
+
+TEST(MachineData, SetByNumberOrNameAndValidated) {
+  MachineData md;
+  md.set_assignment("MD20204=0.02");
+  EXPECT_EQ(md.wab_clearance_tolerance, *Decimal::parse("0.02").value);
+  md.set("$mc_cutcom_maxnum_check_blocks", " 7 ");
+  EXPECT_EQ(md.cutcom_maxnum_check_blocks, 7);
+  md.set("MD20150[47]", "2");
+  EXPECT_EQ(md.initial_state().edge_strategy, EdgeStrategy::kG461);
+  EXPECT_THROW(md.set("MD20210", "181"), MachineDataError);
+  EXPECT_THROW(md.set("MD20240", "0"), MachineDataError);
+  EXPECT_THROW(md.set("MD20240", "2.5"), MachineDataError);
+  EXPECT_THROW(md.set("MD20204", "-1"), MachineDataError);
+  EXPECT_THROW(md.set("MD99999", "1"), MachineDataError);
+  EXPECT_THROW(md.set_assignment("MD20204"), MachineDataError);
+}
+
+TEST(MachineData, FileErrorsNameTheLine) {
+  MachineData md;
+  std::istringstream in("# machine\nMD20210 = 120 ; corner limit\n\nMD20230=abc\n");
+  try {
+    md.load(in, "m.md");
+    ADD_FAILURE();
+  } catch (const MachineDataError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.md:4"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(md.cutcom_corner_limit, Decimal::from_int(120));
+}
+
+// covers: ALARM-1
+TEST(Alarms, CatalogueNamesTheRaisingClause) {
+  const AlarmInfo* a = find_alarm(10751);
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->clause, "TRC-ELEMENT-1");
+  EXPECT_TRUE(a->number_confirmed);
+  EXPECT_EQ(find_alarm(12345), nullptr);
+  Alarm x = make_alarm(10751, 12, 50);
+  EXPECT_NE(x.text.find("N50"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cutcom

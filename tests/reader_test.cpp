@@ -1,0 +1,149 @@
+// The NC reader and the block model: exact numbers, words, modal state, positions, tool data,
+// and a clear error with line and column for everything else.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "cutcom/reader.hpp"
+
+namespace cutcom {
+namespace {
+
+std::vector<Block> read(const std::string& text) {
+  std::istringstream in(text);
+  ProgramReader r(in);
+  std::vector<Block> out;
+  Block b;
+  while (r.next(b)) out.push_back(b);
+  return out;
+}
+
+Decimal dec(const char* s) { return *Decimal::parse(s).value; }
+
+// covers: NC-NUM-1
+TEST(Decimal, LiteralsAreExact) {
+  EXPECT_EQ(dec("0.1") + dec("0.2"), dec("0.3"));  // never through binary floating point
+  EXPECT_EQ(dec("-.5").to_string(), "-0.5");
+  EXPECT_EQ(dec("5.").to_string(), "5");
+  EXPECT_EQ(dec("+12.3400").to_string(), "12.34");
+  EXPECT_EQ(dec("0.000000001").units(), 1);
+  EXPECT_EQ(dec("1.0000000000000").to_string(), "1");  // zeros beyond nine places change nothing
+  EXPECT_EQ(Decimal::parse("0.0000000001").error, Decimal::ParseError::kTooManyDecimals);
+  EXPECT_EQ(Decimal::parse("10000000000000").error, Decimal::ParseError::kOutOfRange);
+  EXPECT_FALSE(Decimal::parse("1e5").value);
+  EXPECT_FALSE(Decimal::parse(".").value);
+  EXPECT_DOUBLE_EQ(dec("123.456").to_double(), 123.456);  // correctly rounded
+  EXPECT_EQ(dec("-0.000000001").to_double(), -1e-9);
+}
+
+// covers: NC-LEX-1 NC-LEX-2 NC-LEX-3 NC-LEX-5
+TEST(Reader, WordsOfABlock) {
+  auto b = read("N10 G1 G41 X10.5 Y=-3 Z=AC(2) F1000 ; comment X99\n");
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(*b[0].words.number, 10);
+  EXPECT_EQ(b[0].state.motion, Motion::kLinear);
+  EXPECT_EQ(b[0].state.side, Side::kLeft);
+  EXPECT_EQ(b[0].end.x, dec("10.5"));
+  EXPECT_EQ(b[0].end.y, dec("-3"));
+  EXPECT_EQ(b[0].end.z, dec("2"));
+  EXPECT_EQ(b[0].state.feed, dec("1000"));
+  auto k = read("g1x1y2 kont cdof2 g451 g462 OFFN = 0.5 M 30\n");
+  EXPECT_EQ(k[0].end.y, dec("2"));
+  EXPECT_EQ(k[0].state.approach, ApproachMode::kKont);
+  EXPECT_EQ(k[0].state.collision, CollisionMode::kCdof2);
+  EXPECT_EQ(k[0].state.corner, CornerMode::kG451);
+  EXPECT_EQ(k[0].state.offn, dec("0.5"));
+  EXPECT_TRUE(k[0].words.program_end);
+}
+
+// covers: NC-LEX-4
+TEST(Reader, SarAndCornerParameters) {
+  auto b = read("G1 G41 G147 G340 G143 DISR=13 DISCL=AC(5) DISRP=2 FAD=PM(500) DISC=0 X1\nG248 DISCL=3 FAD=200\n");
+  EXPECT_EQ(*b[0].words.sar_contour, SarContour::kG147);
+  EXPECT_EQ(b[0].state.sar_side, SarSide::kG143);
+  EXPECT_EQ(*b[0].words.disr, dec("13"));
+  EXPECT_EQ(b[0].words.discl.mode, ValueMode::kAbsolute);
+  EXPECT_EQ(b[0].words.fad_mode, FadMode::kPm);
+  EXPECT_EQ(b[1].words.discl.mode, ValueMode::kModal);
+  EXPECT_EQ(*b[1].words.fad, dec("200"));
+}
+
+// covers: NC-POS-1 NC-POS-2 NC-MODAL-1
+TEST(Reader, AbsoluteIncrementalAndModalCompletion) {
+  auto b = read("G90 X10 Y10\nG91 X5\nY=AC(1)\nG90 X=IC(2)\nZ7\n");
+  EXPECT_EQ(b[1].end.x, dec("15"));
+  EXPECT_EQ(b[1].end.y, dec("10"));  // not programmed: kept
+  EXPECT_EQ(b[2].end.y, dec("1"));   // AC() inside G91
+  EXPECT_EQ(b[3].end.x, dec("17"));  // IC() inside G90
+  EXPECT_EQ(b[4].start, b[3].end);
+  EXPECT_EQ(b[4].end.z, dec("7"));
+  EXPECT_EQ(b[0].state.motion, Motion::kRapid);  // initial G0
+  EXPECT_EQ(b[4].state.plane, Plane::kG17);
+}
+
+// covers: NC-ARC-1
+TEST(Reader, ArcCentreIsIncrementalUnlessAc) {
+  auto b = read("G0 X10 Y0\nG2 X0 Y-10 I-10 J0\nG3 X10 Y0 I=AC(0) J=AC(0)\n");
+  ASSERT_TRUE(b[1].centre.has_value());
+  EXPECT_EQ(b[1].centre->x, dec("0"));
+  EXPECT_EQ(b[1].centre->y, dec("0"));
+  EXPECT_EQ(b[2].centre->x, dec("0"));
+}
+
+// covers: TOOL-DATA-1 TOOL-EDGE-1 TOOL-EDGE-2 TOOL-RADIUS-1
+TEST(Reader, ToolDataAndEffectiveRadius) {
+  auto b = read("$TC_DP1[1,1]=120 $TC_DP6[1,1]=7\n$TC_DP15[1,1]=-0.1\nT1 D1 OFFN=0.5\n$TC_DP6[1,1]=9\nX1\nD1\n");
+  EXPECT_EQ(b[2].state.effective_radius(), dec("7.4"));
+  EXPECT_EQ(b[4].state.effective_radius(), dec("7.4"));  // a later $TC_DP6 acts only from the next T/D
+  EXPECT_EQ(b[5].state.effective_radius(), dec("9.4"));
+  EXPECT_TRUE(b[2].state.edge_defined);
+  auto u = read("T2 D1\n");
+  EXPECT_FALSE(u[0].state.edge_defined);
+}
+
+struct BadLine {
+  std::string text;
+  int line, column;
+  std::string contains;
+};
+
+// covers: NC-LEX-6 NC-ERR-1 NC-END-1
+TEST(Reader, BadInputNamesLineAndColumn) {
+  const BadLine cases[] = {
+      {"G1 X10\nG1 Q5\n", 2, 4, "unknown address 'Q'"},
+      {"G1 X10 X20\n", 1, 8, "X programmed twice"},
+      {"G1 G2 X1\n", 1, 4, "two G codes of the motion group"},
+      {"G54 X1\n", 1, 1, "G54 is not supported"},
+      {"X1.2.3\n", 1, 2, "X"},
+      {"X0.0000000001\n", 1, 2, "more than 9 decimal places"},
+      {"OFFN 5\n", 1, 6, "OFFN needs '='"},
+      {"X=AC(5\n", 1, 7, "')' expected"},
+      {"$TC_DP3[1,1]=5\n", 1, 1, "$TC_DP3 is not supported"},
+      {"$TC_DP6[1.1]=5\n", 1, 10, "',' expected"},
+      {"N10 X1 M30\nN20 X2\n", 2, 1, "after the end of the program"},
+      {"G2 X10 Y0\n", 1, 1, "G2/G3 needs the centre"},
+      {"G1 I5 X1\n", 1, 1, "without G2/G3"},
+      {"X#1\n", 1, 2, "X needs a number"},
+      {"/N10 X1\n", 1, 1, "unexpected character '/'"},
+      {"T1.5\n", 1, 2, "T needs a whole number"},
+  };
+  for (const BadLine& c : cases) {
+    try {
+      read(c.text);
+      ADD_FAILURE() << "accepted: " << c.text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), c.line) << c.text << " -> " << e.what();
+      EXPECT_EQ(e.column(), c.column) << c.text << " -> " << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.contains), std::string::npos) << c.text << " -> " << e.what();
+    }
+  }
+}
+
+TEST(Reader, BlankAndCommentLinesAreNotBlocks) {
+  auto b = read("\n   \n; only a comment\nX1\n\n");
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].words.line, 4);
+}
+
+}  // namespace
+}  // namespace cutcom

@@ -1,0 +1,343 @@
+// Worked examples of the straight-line slice, one or more per clause. Every expected coordinate
+// is derived by hand in the comment above it (radius r = 2 unless said otherwise); both engines
+// must give it.
+#include <cmath>
+
+#include "support.hpp"
+
+namespace cutcom::test {
+namespace {
+
+using K = OriginKind;
+const double kSqrt5 = std::sqrt(5.0);
+
+// The common start: tool T1 D1 with r = 2, at X-10 Y0 before the contour.
+std::string program(const std::string& body, const std::string& radius = "2") {
+  return "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=" + radius + "\nN10 G0 X-10 Y0 T1 D1\n" + body;
+}
+
+// covers: TRC-SEL-1 TRC-EQ-1 TRC-APPR-NORM-1 TRC-CORNER-1 TRC-INNER-1 TRC-DESEL-1 TRC-RETR-NORM-1 TRC-ELEMENT-1
+TEST(SliceExamples, InnerCornerOnTheLeft) {
+  // N30 runs +X: its left normal is (0,1), so NORM approaches (0,0)+2(0,1) = (0,2).
+  // The corner at (10,0) turns left; G41 is on the inside: the equidistants y=2 and x=10-2=8
+  // meet at (8,2). N40 runs +Y, left normal (-1,0): its equidistant is x=8, normal end (8,10).
+  // G40 retracts straight to the programmed (20,20).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"));
+  EXPECT_TRUE(r.fast_ok && r.ref_ok);
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
+                  line(K::kOffset, {8, 2, 0}, {8, 10, 0}),
+                  line(K::kRetraction, {8, 10, 0}, {20, 20, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-1", "inner"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-1", "inner"));
+}
+
+// covers: TRC-G450-1 TRC-CORNER-1 TRC-CORNER-4
+TEST(SliceExamples, OuterCornerWithTransitionCircle) {
+  // G42: right normal of +X is (0,-2) -> approach to (0,-2). At (10,0) the contour turns left,
+  // G42 is outside: circle of radius 2 about (10,0) from (10,-2) to (10,0)+(2,0) = (12,0),
+  // counter-clockwise (around the outside on the right). N40's equidistant x=12 up to (12,10).
+  // The contour angle is 90 deg, not below MD20230 = 10 deg: G450 stays.
+  Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}),
+                  arc({10, -2, 0}, {12, 0, 0}, {10, 0, 0}, true),
+                  line(K::kOffset, {12, 0, 0}, {12, 10, 0}),
+                  line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-4", "keep-G450"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-4", "keep-G450"));
+}
+
+// covers: TRC-G451-1 TRC-CORNER-3
+TEST(SliceExamples, OuterCornerByIntersection) {
+  // As above with G451: the equidistants y=-2 and x=12 meet at (12,-2); 90 deg <= MD20210.
+  Runs r = run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {12, -2, 0}),
+                  line(K::kOffset, {12, -2, 0}, {12, 10, 0}),
+                  line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-3", "keep-G451"));
+}
+
+// covers: TRC-CORNER-3 TRC-G450-1
+TEST(SliceExamples, SharpCornerSwitchesG451ToG450) {
+  // (0,0)->(10,0)->(0,5): cos(angle) = -100/(10*sqrt(125)) -> 153.43 deg > MD20210 = 100 deg, so
+  // G451 becomes a circle. Right normal of (-10,5) is (5,10)/sqrt(125): the circle ends at
+  // (10,0) + 2(5,10)/(5 sqrt5) = (10 + 2/sqrt5, 4/sqrt5). The turn is left, G42 outside: ccw.
+  Runs r = run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 X0 Y5\nN50 G40 X-10 Y10\n"));
+  PathPoint after{10 + 2 / kSqrt5, 4 / kSqrt5, 0};
+  // N40's normal end: (0,5) + (2/sqrt5, 4/sqrt5).
+  PathPoint end{2 / kSqrt5, 5 + 4 / kSqrt5, 0};
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}),
+                  arc({10, -2, 0}, after, {10, 0, 0}, true),
+                  line(K::kOffset, after, end),
+                  line(K::kRetraction, end, {-10, 10, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-3", "switch-to-G450"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-3", "switch-to-G450"));
+}
+
+// covers: TRC-CORNER-3 TRC-G451-1 MD-20210-1
+TEST(SliceExamples, CornerLimitFromMachineData) {
+  // The same corner with MD20210 = 160: G451 stays. trim = s r cross/(L + dot)
+  // = -2*50/(50 sqrt5 - 100) = -(2 sqrt5 + 4): the intersection lies at (14 + 2 sqrt5, -2).
+  MachineData md;
+  md.set("MD20210", "160");
+  Runs r = run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 X0 Y5\nN50 G40 X-10 Y10\n"), md);
+  PathPoint x{14 + 2 * kSqrt5, -2, 0};
+  PathPoint end{2 / kSqrt5, 5 + 4 / kSqrt5, 0};
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, x),
+                  line(K::kOffset, x, end),
+                  line(K::kRetraction, end, {-10, 10, 0})});
+}
+
+// covers: TRC-CORNER-4 TRC-G451-1 MD-20230-1
+TEST(SliceExamples, FlatCornerSwitchesG450ToG451) {
+  // (0,0)->(10,0)->(20,1): angle atan(1/10) = 5.71 deg < MD20230 = 10 deg: intersection instead of
+  // a circle. trim = -2*10/(10 sqrt101 + 100) = -(2 sqrt101 - 20): x = (2 sqrt101 - 10, -2).
+  // N40's right normal is (1,-10)/sqrt101: normal end (20 + 2/sqrt101, 1 - 20/sqrt101).
+  Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 X20 Y1\nN50 G40 X30 Y1\n"));
+  const double s101 = std::sqrt(101.0);
+  PathPoint x{2 * s101 - 10, -2, 0};
+  PathPoint end{20 + 2 / s101, 1 - 20 / s101, 0};
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, x),
+                  line(K::kOffset, x, end),
+                  line(K::kRetraction, end, {30, 1, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-4", "switch-to-G451"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-4", "switch-to-G451"));
+}
+
+// covers: TRC-CORNER-1
+TEST(SliceExamples, TangentTransitionInsertsNothing) {
+  // Collinear blocks: the equidistants join at (10,2) without any inserted element.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 X20\nN50 G40 X30 Y10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}),
+                  line(K::kOffset, {10, 2, 0}, {20, 2, 0}),
+                  line(K::kRetraction, {20, 2, 0}, {30, 10, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-1", "tangent"));
+}
+
+// covers: TRC-G450-3 TRC-CORNER-1
+TEST(SliceExamples, ReversalIsAlwaysACircle) {
+  // (0,0)->(10,0)->(0,0) with G41 G451: a reversal has no intersection; the tool goes around
+  // the end on a half circle about (10,0) from (10,2) to (10,-2), clockwise (left side).
+  Runs r = run_both(program("N20 G1 G41 G451 X0 Y0 F100\nN30 X10\nN40 X0\nN50 G40 X-10 Y-10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}),
+                  arc({10, 2, 0}, {10, -2, 0}, {10, 0, 0}, false),
+                  line(K::kOffset, {10, -2, 0}, {0, -2, 0}),
+                  line(K::kRetraction, {0, -2, 0}, {-10, -10, 0})});
+  EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-1", "reversal"));
+}
+
+// covers: TRC-ELEMENT-1 ALARM-1
+TEST(SliceExamples, EquidistantsWithoutIntersectionRaise10751) {
+  // N40 is 1 mm long; the inner corner before it shortens it by r tan(45) = 2 and the inner corner
+  // after it by another 2: its equidistant would run backwards. The path stops after N30's
+  // equidistant (0,2)->(8,2); the alarm names N50, the block whose preparation found it.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-10 Y0\n"));
+  EXPECT_FALSE(r.fast_ok);
+  EXPECT_FALSE(r.ref_ok);
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0})});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10751);
+    EXPECT_EQ(x->alarms[0].line, 7);
+    EXPECT_EQ(x->alarms[0].block, 50);
+  }
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ELEMENT-1", "reverses"));
+}
+
+// covers: TRC-ELEMENT-1
+TEST(SliceExamples, ElementShortenedToZeroVanishes) {
+  // N40 is exactly 4 mm: the inner corners at both of its ends take r tan(45) = 2 mm each, so its
+  // equidistant x = 8 has length 0 and is not output: both corners are at (8,2). N50 runs -X,
+  // left normal (0,-1): equidistant y = 4-2 = 2, normal end (0,2).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y4\nN50 X0\nN60 G40 X-10 Y0\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
+                  line(K::kOffset, {8, 2, 0}, {0, 2, 0}),
+                  line(K::kRetraction, {0, 2, 0}, {-10, 0, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ELEMENT-1", "vanishes"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-ELEMENT-1", "vanishes"));
+}
+
+// covers: TRC-DUMMY-1 PATH-ACTION-1
+TEST(SliceExamples, InfeedBetweenCompensatedBlocksRunsAtTheCornerPoint) {
+  // N35 moves only Z: it runs at the intersection point (8,2), from Z0 to Z-5; its M8 runs there.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN35 Z-5 M8\nN40 Y10\nN50 G40 X20 Y20\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
+                  line(K::kInfeed, {8, 2, 0}, {8, 2, -5}),
+                  line(K::kOffset, {8, 2, -5}, {8, 10, -5}),
+                  line(K::kRetraction, {8, 10, -5}, {20, 20, -5})});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->actions.size(), 1u);
+    EXPECT_EQ(x->actions[0].function.value, 8);
+    expect_point(x->actions[0].at, {8, 2, 0}, "M8 position");
+  }
+}
+
+// covers: TRC-DUMMY-2 MD-20250-1
+TEST(SliceExamples, TooManyBlocksWithoutPlaneMotionRaise10762) {
+  MachineData md;
+  md.set("MD20250", "1");
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN31 Z-1\nN32 Z-2\nN40 Y10\nN50 G40 X20\n"), md);
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10762);
+    EXPECT_EQ(x->alarms[0].block, 32);
+  }
+}
+
+// covers: TRC-RADIUS-1 TOOL-EDGE-1
+TEST(SliceExamples, EffectiveRadiusAddsWearAndOffn) {
+  // 2.5 + (-0.3) + (-0.2) = 2: the path of InnerCornerOnTheLeft.
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2.5\n$TC_DP15[1,1]=-0.3\nN10 G0 X-10 Y0 T1 D1 OFFN=-0.2\n"
+      "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n";
+  Runs r = run_both(text);
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
+                  line(K::kOffset, {8, 2, 0}, {8, 10, 0}),
+                  line(K::kRetraction, {8, 10, 0}, {20, 20, 0})});
+}
+
+// covers: TRC-RADIUS-2
+TEST(SliceExamples, NegativeRadiusSwapsTheSide) {
+  // r = -2 with G41 acts as G42 with r = 2: the path of OuterCornerWithTransitionCircle.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n", "-2"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}),
+                  arc({10, -2, 0}, {12, 0, 0}, {10, 0, 0}, true),
+                  line(K::kOffset, {12, 0, 0}, {12, 10, 0}),
+                  line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-RADIUS-2", "negative"));
+}
+
+// covers: TRC-G450-2
+TEST(SliceExamples, ZeroRadiusFollowsTheContour) {
+  // r = 0: every equidistant is the block itself, no transition circle at the outer corner.
+  Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n", "0"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 0, 0}),
+                  line(K::kOffset, {0, 0, 0}, {10, 0, 0}),
+                  line(K::kOffset, {10, 0, 0}, {10, 10, 0}),
+                  line(K::kRetraction, {10, 10, 0}, {20, 20, 0})});
+}
+
+// covers: TRC-SEL-4
+TEST(SliceExamples, SelectionWaitsForAPlaneAxis) {
+  // N20 programs G41 with Z only: no selection yet; N30 selects (modal G41) and approaches.
+  Runs r = run_both(program("N20 G1 G41 Z-1 F100\nN30 X0 Y0\nN40 X10\nN50 G40 X10 Y-10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kProgrammed, {-10, 0, 0}, {-10, 0, -1}),
+                  line(K::kApproach, {-10, 0, -1}, {0, 2, -1}),
+                  line(K::kOffset, {0, 2, -1}, {10, 2, -1}),
+                  line(K::kRetraction, {10, 2, -1}, {10, -10, -1})});
+  EXPECT_TRUE(has_decision(r.fast, "TRC-SEL-4", "no-plane-axis"));
+}
+
+// covers: TRC-SEL-5
+TEST(SliceExamples, D0SelectsNothing) {
+  Runs r = run_both("N10 G0 X-10 T1 D0\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 X20\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
+                  line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}),
+                  line(K::kProgrammed, {10, 0, 0}, {20, 0, 0})});
+  EXPECT_EQ(r.fast.notices.size(), 1u);
+  EXPECT_EQ(r.ref.notices.size(), 1u);
+}
+
+// covers: TRC-SEL-6 TRC-SEL-7 TRC-SEL-2 TRC-DESEL-2 TRC-PLANE-1 ALARM-1
+TEST(SliceExamples, SelectionAndDeselectionAlarms) {
+  struct Case {
+    std::string text;
+    int alarm;
+  } cases[] = {
+      {"N10 G1 G41 X0 Y0 F100\nN20 X10\n", 10750},                          // no tool
+      {"N10 T1 D3\nN20 G1 G41 X0 Y0 F100\nN30 X10\n", 17181},               // edge not defined
+      {"$TC_DP6[1,1]=2\nN10 T1 D1\nN20 G2 G41 X10 Y0 CR=5\n", 10753},       // selection in a circle
+      {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G40 G2 X30 CR=5\n", 10754},
+      {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G18 X30\n", 10757},
+  };
+  for (const Case& c : cases) {
+    Runs r = run_both(c.text);
+    for (const RunResult* x : {&r.fast, &r.ref}) {
+      ASSERT_EQ(x->alarms.size(), 1u) << c.text;
+      EXPECT_EQ(x->alarms[0].number, c.alarm) << c.text;
+    }
+  }
+}
+
+// covers: TRC-SEL-8
+TEST(SliceExamples, DeselectionBeforeTheContourMeansNoSelection) {
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 G40 X10 Y5\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
+                  line(K::kProgrammed, {0, 0, 0}, {10, 5, 0})});
+}
+
+// covers: TRC-DESEL-3
+TEST(SliceExamples, DeselectionWaitsForAPlaneAxis) {
+  // N40 programs G40 with Z only: it runs at N30's normal end (10,2) as an infeed; N50 retracts.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 Z5\nN50 X20 Y-5\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}),
+                  line(K::kInfeed, {10, 2, 0}, {10, 2, 5}),
+                  line(K::kRetraction, {10, 2, 5}, {20, -5, 5})});
+}
+
+// covers: TRC-END-1
+TEST(SliceExamples, ProgramEndingWithCompensationActive) {
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 M30\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
+                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0})});
+  EXPECT_EQ(r.fast.notices.size(), 1u);
+  EXPECT_EQ(r.ref.actions.size(), 1u);  // M30, at the end point
+}
+
+// covers: NC-PLANE-1 TRC-EQ-1
+TEST(SliceExamples, PlaneG18UsesZAsAbscissaAndXAsOrdinate) {
+  // G18: plane Z/X, applicate Y. A block along +Z has its left normal along +X: the approach
+  // ends at Z0 X2. At Z10 the contour turns towards +X (left turn, G41 inside): the equidistants
+  // X=2 and Z=8 meet at Z8 X2.
+  std::string text =
+      "$TC_DP6[1,1]=2\nN10 G18 G0 Z-10 X0 T1 D1\nN20 G1 G41 Z0 X0 F100\nN30 Z10\nN40 X10\nN50 G40 Z20 X20\n";
+  Runs r = run_both(text);
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {0, 0, -10}),
+                  line(K::kApproach, {0, 0, -10}, {2, 0, 0}),
+                  line(K::kOffset, {2, 0, 0}, {2, 0, 8}),
+                  line(K::kOffset, {2, 0, 8}, {10, 0, 8}),
+                  line(K::kRetraction, {10, 0, 8}, {20, 0, 20})});
+}
+
+// covers: PATH-ELEMENT-1 NC-END-1
+TEST(SliceExamples, UncompensatedProgramIsItsOwnPath) {
+  Runs r = run_both("N10 G0 X10 Y10\nN20 G1 X10 Y10 F100\nN30 G91 X5 Y-5\nN40 M30\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {10, 10, 0}), line(K::kProgrammed, {10, 10, 0}, {15, 5, 0})});
+  EXPECT_TRUE(r.fast.path[0].rapid);
+  EXPECT_FALSE(r.fast.path[1].rapid);
+}
+
+}  // namespace
+}  // namespace cutcom::test
