@@ -377,6 +377,9 @@ bool run(ProgramReader& reader, const MachineData& md, PathSink& sink) {
   Engine engine(md, sink);
   Block b;
   while (!engine.stopped() && reader.next(b)) engine.push(b);
+  // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
+  while (engine.stopped() && reader.next(b)) {
+  }
   engine.finish();
   return !engine.stopped();
 }

@@ -2,6 +2,7 @@
 // from equidistant.hpp (exact constructions) and contour_element / contour_angle (exact predicates).
 #include "cutcom/ref/engine.hpp"
 
+#include <deque>
 #include <optional>
 
 #include "contour_angle.hpp"
@@ -21,13 +22,19 @@ struct CentrePoint {
 
 class Reference {
  public:
-  Reference(const std::vector<Block>& program, const MachineData& md, PathSink& sink)
-      : program_(program), md_(md), sink_(sink), actions_done_(program.size(), false) {}
+  Reference(const MachineData& md, PathSink& sink) : md_(md), sink_(sink) {}
 
-  bool run() {
-    for (const Block& b : program_) {
-      if (stopped_) break;
-      step(b);
+  // Blocks are read one by one, as a control reads them, and kept: ref may look back at any of
+  // them (a deque keeps references to earlier blocks valid).
+  bool run(ProgramReader& reader) {
+    Block b;
+    while (!stopped_ && reader.next(b)) {
+      program_.push_back(b);
+      actions_done_.push_back(false);
+      step(program_.back());
+    }
+    // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
+    while (stopped_ && reader.next(b)) {
     }
     if (!stopped_) end_of_program();
     return !stopped_;
@@ -365,7 +372,7 @@ class Reference {
     }
   }
 
-  const std::vector<Block>& program_;
+  std::deque<Block> program_;
   const MachineData& md_;
   PathSink& sink_;
   std::vector<bool> actions_done_;
@@ -384,11 +391,8 @@ class Reference {
 }  // namespace
 
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
-  std::vector<Block> program;
-  Block b;
-  while (reader.next(b)) program.push_back(b);
-  Reference engine(program, md, sink);
-  bool ok = engine.run();
+  Reference engine(md, sink);
+  bool ok = engine.run(reader);
   if (checks) engine.path.check(*checks);
   return ok;
 }

@@ -1,0 +1,38 @@
+// The differential comparison of fast against ref (docs/tolerances.md): decisions first, then
+// coordinates. A divergence is acceptable only where ref's exact margin lies inside the band
+// documented for that clause; coordinates must agree within a tolerance scaled to the contour.
+#pragma once
+
+#include <string>
+
+#include "cutcom/block.hpp"
+#include "cutcom/sink.hpp"
+
+namespace cutcom::props {
+
+// What the tolerances depend on, read off the program.
+struct Conditioning {
+  double size = 1;            // L: largest coordinate magnitude or radius, mm
+  double shortest = 1;        // d_min: shortest in-plane block, mm
+  double radius = 0;          // |r|, mm
+  double corner = 1;          // kappa: largest 1/(1 + cos phi) over the contour's corners
+};
+Conditioning conditioning_of(const std::vector<Block>& program);
+
+struct Tolerance {
+  double coordinate;  // mm
+  double sine;        // TRC-CORNER-1 margin (sine of the turn)
+  double degrees;     // TRC-CORNER-3/4 margin (contour angle - threshold)
+  static Tolerance for_program(const Conditioning& c);
+  double band(std::string_view clause) const;  // the band of a clause's margin
+};
+
+struct Verdict {
+  enum class Kind { kAgree, kKnifeEdge, kDiverge } kind = Kind::kAgree;
+  std::string explanation;  // what differs, where, and by how much
+  double max_coordinate_error = 0;
+};
+
+Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& tol);
+
+}  // namespace cutcom::props

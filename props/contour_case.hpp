@@ -1,0 +1,35 @@
+// A generated contour program: what the generators draw and how it is written as NC text.
+// Coordinates are integers in micrometres, so every program is exact decimal text.
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace cutcom::props {
+
+struct Step {
+  std::int64_t dx = 0, dy = 0;  // in-plane move of one contour block, um
+  bool g451 = false;            // corner mode programmed in this block
+  int dummies = 0;              // blocks without plane motion before this block (Z moves, M functions)
+};
+
+struct ContourCase {
+  std::int64_t radius_um = 2000;       // $TC_DP6 in um (0 and negative values included)
+  bool right = false;                  // G42 instead of G41
+  std::int64_t start_x = 0, start_y = 0;   // tool position before the selection block
+  std::int64_t first_x = 0, first_y = 0;   // end of the selection block = start of the contour
+  std::vector<Step> steps;             // the contour blocks
+  std::int64_t end_x = 0, end_y = 0;   // end point of the G40 block
+  int plane = 17;                      // 17, 18 or 19
+  int md20210 = 100, md20230 = 10;     // degrees
+  std::string style;                   // which generator made it (for RC_TAG)
+};
+
+std::string to_program(const ContourCase& c);
+std::string micrometres(std::int64_t um);  // "12.345", "-0.001"
+
+void showValue(const ContourCase& c, std::ostream& os);
+
+}  // namespace cutcom::props

@@ -1,0 +1,51 @@
+// fast agrees with ref (PROP-DIFF-1): same decisions unless ref's margin lies inside the band of
+// that clause, then the same path within the tolerance scaled to the contour.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+
+#include "generators.hpp"
+#include "run_case.hpp"
+
+namespace cutcom::props {
+namespace {
+
+void check_agreement(const ContourCase& c) {
+  RC_TAG(c.style);
+  CaseRuns r = run_case(c, false);
+  Verdict v = compare(r.ref, r.fast, r.tolerance);
+  RC_TAG(v.kind == Verdict::Kind::kKnifeEdge ? "knife-edge" : "agreeing");
+  RC_TAG(r.ref.alarms.empty() ? "no alarm" : "alarm " + std::to_string(r.ref.alarms[0].number));
+  if (v.kind == Verdict::Kind::kDiverge) RC_FAIL(v.explanation);
+}
+
+// covers: PROP-DIFF-1 TRC-CORNER-1 TRC-CORNER-3 TRC-CORNER-4 TRC-ELEMENT-1 TRC-G450-1 TRC-G451-1 TRC-INNER-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefOnAnyContour, ()) { check_agreement(*any_contour()); }
+
+// covers: PROP-DIFF-1 TRC-CORNER-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefNearTangents, ()) { check_agreement(*near_tangent()); }
+
+// covers: PROP-DIFF-1 TRC-CORNER-1 TRC-G450-3
+RC_GTEST_PROP(Differential, FastAgreesWithRefNearReversals, ()) { check_agreement(*near_reversal()); }
+
+// covers: PROP-DIFF-1 TRC-ELEMENT-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefOnVanishingElements, ()) { check_agreement(*notch()); }
+
+// covers: PROP-CONT-1 PATH-CONT-1
+RC_GTEST_PROP(Fast, PathIsContinuousAndFinite, ()) {
+  ContourCase c = *any_contour();
+  CaseRuns r = run_case(c, false);
+  for (std::size_t i = 0; i < r.fast.path.size(); ++i) {
+    const PathElement& e = r.fast.path[i];
+    for (double v : {e.start.x, e.start.y, e.start.z, e.end.x, e.end.y, e.end.z, e.center.x, e.center.y, e.center.z})
+      RC_ASSERT(std::isfinite(v));
+    if (i == 0) continue;
+    const PathPoint& a = r.fast.path[i - 1].end;
+    double gap = std::max({std::fabs(a.x - e.start.x), std::fabs(a.y - e.start.y), std::fabs(a.z - e.start.z)});
+    RC_ASSERT(gap <= r.tolerance.coordinate);
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::props

@@ -1,0 +1,53 @@
+// Running a generated case through both engines.
+#pragma once
+
+#include <sstream>
+
+#include "compare.hpp"
+#include "contour_case.hpp"
+#include "cutcom/fast/engine.hpp"
+#include "cutcom/ref/engine.hpp"
+
+namespace cutcom::props {
+
+struct CaseRuns {
+  RunResult ref, fast;
+  ref::ExactCheckReport exact;
+  Tolerance tolerance;
+};
+
+inline MachineData machine_data_of(const ContourCase& c) {
+  MachineData md;
+  md.set("MD20210", std::to_string(c.md20210));
+  md.set("MD20230", std::to_string(c.md20230));
+  return md;
+}
+
+inline CaseRuns run_case(const ContourCase& c, bool exact_checks) {
+  CaseRuns out;
+  std::string text = to_program(c);
+  MachineData md = machine_data_of(c);
+  {
+    std::istringstream in(text);
+    ProgramReader reader(in, md.initial_state());
+    CollectingSink sink;
+    ref::run(reader, md, sink, exact_checks ? &out.exact : nullptr);
+    out.ref = std::move(sink.result);
+  }
+  {
+    std::istringstream in(text);
+    ProgramReader reader(in, md.initial_state());
+    CollectingSink sink;
+    fast::run(reader, md, sink);
+    out.fast = std::move(sink.result);
+  }
+  std::istringstream in(text);
+  ProgramReader reader(in, md.initial_state());
+  std::vector<Block> blocks;
+  Block b;
+  while (reader.next(b)) blocks.push_back(b);
+  out.tolerance = Tolerance::for_program(conditioning_of(blocks));
+  return out;
+}
+
+}  // namespace cutcom::props
