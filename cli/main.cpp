@@ -1,8 +1,8 @@
 // cutcom: what a SINUMERIK 840D would do with an NC program under 2D tool radius compensation.
 // Exit status: 0 done without alarm, 1 an alarm stopped the program, 2 bad input or usage.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <fstream>
 #include <iostream>
 #include <memory>

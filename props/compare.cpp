@@ -11,7 +11,9 @@ namespace cutcom::props {
 namespace {
 constexpr double kUnitRoundoff = 0x1p-53;
 
-double margin_value(const Decision& d) { return d.margin_exact.empty() ? d.margin : std::strtod(d.margin_exact.c_str(), nullptr); }
+double margin_value(const Decision& d) {
+  return d.margin_exact.empty() ? d.margin : std::strtod(d.margin_exact.c_str(), nullptr);
+}
 
 double distance(const PathPoint& a, const PathPoint& b) {
   return std::max({std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z)});
@@ -25,7 +27,8 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
   for (const Block& b : program) {
     PlaneAxes ax = plane_axes(b.state.plane);
     for (const Point3* p : {&b.start, &b.end})
-      c.size = std::max({c.size, std::fabs(p->x.to_double()), std::fabs(p->y.to_double()), std::fabs(p->z.to_double())});
+      c.size =
+          std::max({c.size, std::fabs(p->x.to_double()), std::fabs(p->y.to_double()), std::fabs(p->z.to_double())});
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
     if (!b.moves_in_plane()) continue;
     double da = coord(b.end, ax.abscissa).to_double() - coord(b.start, ax.abscissa).to_double();

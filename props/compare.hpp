@@ -12,10 +12,10 @@ namespace cutcom::props {
 
 // What the tolerances depend on, read off the program.
 struct Conditioning {
-  double size = 1;            // L: largest coordinate magnitude or radius, mm
-  double shortest = 1;        // d_min: shortest in-plane block, mm
-  double radius = 0;          // |r|, mm
-  double corner = 1;          // kappa: largest 1/(1 + cos phi) over the contour's corners
+  double size = 1;      // L: largest coordinate magnitude or radius, mm
+  double shortest = 1;  // d_min: shortest in-plane block, mm
+  double radius = 0;    // |r|, mm
+  double corner = 1;    // kappa: largest 1/(1 + cos phi) over the contour's corners
 };
 Conditioning conditioning_of(const std::vector<Block>& program);
 

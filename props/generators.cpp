@@ -17,9 +17,9 @@ std::int64_t signed_um(std::int64_t max) {
 
 std::int64_t radius_um() {
   int kind = *inRange(0, 20);
-  if (kind == 0) return 0;                                   // zero radius
-  if (kind == 1) return -*inRange<std::int64_t>(1, 10001);   // negative: swaps the side
-  return *inRange<std::int64_t>(1, 10001);                   // 0.001 .. 10 mm
+  if (kind == 0) return 0;                                  // zero radius
+  if (kind == 1) return -*inRange<std::int64_t>(1, 10001);  // negative: swaps the side
+  return *inRange<std::int64_t>(1, 10001);                  // 0.001 .. 10 mm
 }
 
 // The parts every style shares: side, plane, start/end points, machine data, dummy blocks.
@@ -128,11 +128,8 @@ rc::Gen<ContourCase> notch() {
 }
 
 rc::Gen<ContourCase> any_contour() {
-  return rc::gen::weightedOneOf<ContourCase>({{4, random_walk()},
-                                              {3, grid_walk()},
-                                              {2, near_tangent()},
-                                              {2, near_reversal()},
-                                              {1, notch()}});
+  return rc::gen::weightedOneOf<ContourCase>(
+      {{4, random_walk()}, {3, grid_walk()}, {2, near_tangent()}, {2, near_reversal()}, {1, notch()}});
 }
 
 }  // namespace cutcom::props

@@ -8,11 +8,11 @@
 
 namespace cutcom::props {
 
-rc::Gen<ContourCase> any_contour();        // all styles below, weighted
-rc::Gen<ContourCase> random_walk();        // free directions and lengths
-rc::Gen<ContourCase> grid_walk();          // multiples of a grid step: exact 45/90 deg corners, ties
-rc::Gen<ContourCase> near_tangent();       // successive directions differ by a few micrometres
-rc::Gen<ContourCase> near_reversal();      // successive directions almost opposite
-rc::Gen<ContourCase> notch();              // slots of width exactly 2r: elements of length 0
+rc::Gen<ContourCase> any_contour();    // all styles below, weighted
+rc::Gen<ContourCase> random_walk();    // free directions and lengths
+rc::Gen<ContourCase> grid_walk();      // multiples of a grid step: exact 45/90 deg corners, ties
+rc::Gen<ContourCase> near_tangent();   // successive directions differ by a few micrometres
+rc::Gen<ContourCase> near_reversal();  // successive directions almost opposite
+rc::Gen<ContourCase> notch();          // slots of width exactly 2r: elements of length 0
 
 }  // namespace cutcom::props

@@ -63,11 +63,66 @@ void check_robust(const std::string& text) {
 }
 
 rc::Gen<std::string> nc_like_text() {
-  static const std::vector<std::string> tokens = {
-      "N10 ", "G0 ", "G1 ", "G2 ", "G3 ", "G17 ", "G18 ", "G41 ", "G42 ", "G40 ", "G450 ", "G451 ", "G91 ", "X", "Y",
-      "Z", "I", "J", "CR=", "=", "AC(", "IC(", ")", "-", ".", "0", "1", "5", "9", "12.5", "0.001", " ", "\n", "\n",
-      "; c", "$TC_DP6[1,1]=", "$TC_DP15[1,1]=", "T1 ", "D1 ", "D0 ", "M30", "M8 ", "H2 ", "OFFN=", "NORM ", "KONT ",
-      "F100 ", "DISR=", "DISCL=AC(", "FAD=PM(", "Q", "/", "\t", "(", "[", "]", ",", "G54", "999999999999999", "%"};
+  static const std::vector<std::string> tokens = {"N10 ",
+                                                  "G0 ",
+                                                  "G1 ",
+                                                  "G2 ",
+                                                  "G3 ",
+                                                  "G17 ",
+                                                  "G18 ",
+                                                  "G41 ",
+                                                  "G42 ",
+                                                  "G40 ",
+                                                  "G450 ",
+                                                  "G451 ",
+                                                  "G91 ",
+                                                  "X",
+                                                  "Y",
+                                                  "Z",
+                                                  "I",
+                                                  "J",
+                                                  "CR=",
+                                                  "=",
+                                                  "AC(",
+                                                  "IC(",
+                                                  ")",
+                                                  "-",
+                                                  ".",
+                                                  "0",
+                                                  "1",
+                                                  "5",
+                                                  "9",
+                                                  "12.5",
+                                                  "0.001",
+                                                  " ",
+                                                  "\n",
+                                                  "\n",
+                                                  "; c",
+                                                  "$TC_DP6[1,1]=",
+                                                  "$TC_DP15[1,1]=",
+                                                  "T1 ",
+                                                  "D1 ",
+                                                  "D0 ",
+                                                  "M30",
+                                                  "M8 ",
+                                                  "H2 ",
+                                                  "OFFN=",
+                                                  "NORM ",
+                                                  "KONT ",
+                                                  "F100 ",
+                                                  "DISR=",
+                                                  "DISCL=AC(",
+                                                  "FAD=PM(",
+                                                  "Q",
+                                                  "/",
+                                                  "\t",
+                                                  "(",
+                                                  "[",
+                                                  "]",
+                                                  ",",
+                                                  "G54",
+                                                  "999999999999999",
+                                                  "%"};
   return rc::gen::map(rc::gen::container<std::vector<std::string>>(rc::gen::elementOf(tokens)),
                       [](const std::vector<std::string>& parts) {
                         std::string s;
@@ -84,9 +139,15 @@ rc::Gen<std::string> mutated_program() {
       std::size_t at = static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, text.size()));
       char c = *rc::gen::elementOf(std::string("XYZGN0123456789.-=;() \n$[],ACQ"));
       switch (*rc::gen::inRange(0, 3)) {
-        case 0: text.erase(at, 1); break;
-        case 1: text.insert(at, 1, c); break;
-        default: text[at] = c; break;
+        case 0:
+          text.erase(at, 1);
+          break;
+        case 1:
+          text.insert(at, 1, c);
+          break;
+        default:
+          text[at] = c;
+          break;
       }
     }
     return text;

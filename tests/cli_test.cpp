@@ -35,7 +35,7 @@ std::string write_temp(const std::string& name, const std::string& text) {
   return path;
 }
 
-// covers: CLI-1
+// covers: CLI-1 PATH-ORIGIN-1
 TEST(Cli, JsonOfTheExampleHasTheDocumentedShape) {
   for (const char* engine : {"fast", "ref"}) {
     Result r = sh(kCli + " run " + kExample + " --format json --engine " + engine);
@@ -64,8 +64,8 @@ TEST(Cli, JsonOfTheExampleHasTheDocumentedShape) {
 
 // covers: CLI-1 ALARM-1
 TEST(Cli, AlarmGivesExitOneWithThePathBeforeIt) {
-  std::string p = write_temp("alarm.mpf",
-                             "$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X0 Y0\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-5\n");
+  std::string p =
+      write_temp("alarm.mpf", "$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X0 Y0\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-5\n");
   Result r = sh(kCli + " run " + p + " --format json");
   EXPECT_EQ(r.status, 1);
   auto j = nlohmann::json::parse(r.out);
@@ -85,7 +85,7 @@ TEST(Cli, BadInputAndUsageGiveExitTwo) {
   EXPECT_EQ(sh(kCli + " run " + write_temp("arc.mpf", "G2 X1 Y1 CR=1\n")).status, 2);  // not supported yet
 }
 
-// covers: CLI-1
+// covers: CLI-1 PATH-ORIGIN-1
 TEST(Cli, StdinMachineDataAndSvg) {
   Result a = sh("printf 'G0 X1\\nG1 Y2 F5\\n' | " + kCli + " run - --format json");
   ASSERT_EQ(a.status, 0);

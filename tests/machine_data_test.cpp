@@ -1,9 +1,10 @@
+#include "cutcom/machine_data.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 
 #include "cutcom/alarm.hpp"
-#include "cutcom/machine_data.hpp"
 
 namespace cutcom {
 namespace {

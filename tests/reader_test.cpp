@@ -1,10 +1,10 @@
 // The NC reader and the block model: exact numbers, words, modal state, positions, tool data,
 // and a clear error with line and column for everything else.
+#include "cutcom/reader.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
-
-#include "cutcom/reader.hpp"
 
 namespace cutcom {
 namespace {
@@ -90,7 +90,7 @@ TEST(Reader, ArcCentreIsIncrementalUnlessAc) {
   EXPECT_EQ(b[2].centre->x, dec("0"));
 }
 
-// covers: TOOL-DATA-1 TOOL-EDGE-1 TOOL-EDGE-2 TOOL-RADIUS-1
+// covers: TOOL-DATA-1 TOOL-EDGE-1 TOOL-EDGE-2 TRC-RADIUS-1
 TEST(Reader, ToolDataAndEffectiveRadius) {
   auto b = read("$TC_DP1[1,1]=120 $TC_DP6[1,1]=7\n$TC_DP15[1,1]=-0.1\nT1 D1 OFFN=0.5\n$TC_DP6[1,1]=9\nX1\nD1\n");
   EXPECT_EQ(b[2].state.effective_radius(), dec("7.4"));

@@ -24,10 +24,8 @@ TEST(SliceExamples, InnerCornerOnTheLeft) {
   // G40 retracts straight to the programmed (20,20).
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"));
   EXPECT_TRUE(r.fast_ok && r.ref_ok);
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
-                  line(K::kOffset, {8, 2, 0}, {8, 10, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}), line(K::kOffset, {8, 2, 0}, {8, 10, 0}),
                   line(K::kRetraction, {8, 10, 0}, {20, 20, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-1", "inner"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-1", "inner"));
@@ -40,12 +38,9 @@ TEST(SliceExamples, OuterCornerWithTransitionCircle) {
   // counter-clockwise (around the outside on the right). N40's equidistant x=12 up to (12,10).
   // The contour angle is 90 deg, not below MD20230 = 10 deg: G450 stays.
   Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
-                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}),
-                  arc({10, -2, 0}, {12, 0, 0}, {10, 0, 0}, true),
-                  line(K::kOffset, {12, 0, 0}, {12, 10, 0}),
-                  line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}), arc({10, -2, 0}, {12, 0, 0}, {10, 0, 0}, true),
+                  line(K::kOffset, {12, 0, 0}, {12, 10, 0}), line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-4", "keep-G450"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-4", "keep-G450"));
 }
@@ -54,10 +49,8 @@ TEST(SliceExamples, OuterCornerWithTransitionCircle) {
 TEST(SliceExamples, OuterCornerByIntersection) {
   // As above with G451: the equidistants y=-2 and x=12 meet at (12,-2); 90 deg <= MD20210.
   Runs r = run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
-                  line(K::kOffset, {0, -2, 0}, {12, -2, 0}),
-                  line(K::kOffset, {12, -2, 0}, {12, 10, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {12, -2, 0}), line(K::kOffset, {12, -2, 0}, {12, 10, 0}),
                   line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-3", "keep-G451"));
 }
@@ -71,12 +64,9 @@ TEST(SliceExamples, SharpCornerSwitchesG451ToG450) {
   PathPoint after{10 + 2 / kSqrt5, 4 / kSqrt5, 0};
   // N40's normal end: (0,5) + (2/sqrt5, 4/sqrt5).
   PathPoint end{2 / kSqrt5, 5 + 4 / kSqrt5, 0};
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
-                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}),
-                  arc({10, -2, 0}, after, {10, 0, 0}, true),
-                  line(K::kOffset, after, end),
-                  line(K::kRetraction, end, {-10, 10, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}), arc({10, -2, 0}, after, {10, 0, 0}, true),
+                  line(K::kOffset, after, end), line(K::kRetraction, end, {-10, 10, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-3", "switch-to-G450"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-3", "switch-to-G450"));
 }
@@ -90,11 +80,8 @@ TEST(SliceExamples, CornerLimitFromMachineData) {
   Runs r = run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 X0 Y5\nN50 G40 X-10 Y10\n"), md);
   PathPoint x{14 + 2 * kSqrt5, -2, 0};
   PathPoint end{2 / kSqrt5, 5 + 4 / kSqrt5, 0};
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
-                  line(K::kOffset, {0, -2, 0}, x),
-                  line(K::kOffset, x, end),
-                  line(K::kRetraction, end, {-10, 10, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, x), line(K::kOffset, x, end), line(K::kRetraction, end, {-10, 10, 0})});
 }
 
 // covers: TRC-CORNER-4 TRC-G451-1 MD-20230-1
@@ -106,11 +93,8 @@ TEST(SliceExamples, FlatCornerSwitchesG450ToG451) {
   const double s101 = std::sqrt(101.0);
   PathPoint x{2 * s101 - 10, -2, 0};
   PathPoint end{20 + 2 / s101, 1 - 20 / s101, 0};
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
-                  line(K::kOffset, {0, -2, 0}, x),
-                  line(K::kOffset, x, end),
-                  line(K::kRetraction, end, {30, 1, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, x), line(K::kOffset, x, end), line(K::kRetraction, end, {30, 1, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-4", "switch-to-G451"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-4", "switch-to-G451"));
 }
@@ -119,10 +103,8 @@ TEST(SliceExamples, FlatCornerSwitchesG450ToG451) {
 TEST(SliceExamples, TangentTransitionInsertsNothing) {
   // Collinear blocks: the equidistants join at (10,2) without any inserted element.
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 X20\nN50 G40 X30 Y10\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}),
-                  line(K::kOffset, {10, 2, 0}, {20, 2, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kOffset, {10, 2, 0}, {20, 2, 0}),
                   line(K::kRetraction, {20, 2, 0}, {30, 10, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-1", "tangent"));
 }
@@ -132,12 +114,9 @@ TEST(SliceExamples, ReversalIsAlwaysACircle) {
   // (0,0)->(10,0)->(0,0) with G41 G451: a reversal has no intersection; the tool goes around
   // the end on a half circle about (10,0) from (10,2) to (10,-2), clockwise (left side).
   Runs r = run_both(program("N20 G1 G41 G451 X0 Y0 F100\nN30 X10\nN40 X0\nN50 G40 X-10 Y-10\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}),
-                  arc({10, 2, 0}, {10, -2, 0}, {10, 0, 0}, false),
-                  line(K::kOffset, {10, -2, 0}, {0, -2, 0}),
-                  line(K::kRetraction, {0, -2, 0}, {-10, -10, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), arc({10, 2, 0}, {10, -2, 0}, {10, 0, 0}, false),
+                  line(K::kOffset, {10, -2, 0}, {0, -2, 0}), line(K::kRetraction, {0, -2, 0}, {-10, -10, 0})});
   EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-1", "reversal"));
 }
 
@@ -149,8 +128,7 @@ TEST(SliceExamples, EquidistantsWithoutIntersectionRaise10751) {
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-10 Y0\n"));
   EXPECT_FALSE(r.fast_ok);
   EXPECT_FALSE(r.ref_ok);
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
                   line(K::kOffset, {0, 2, 0}, {8, 2, 0})});
   for (const RunResult* x : {&r.fast, &r.ref}) {
     ASSERT_EQ(x->alarms.size(), 1u);
@@ -167,10 +145,8 @@ TEST(SliceExamples, ElementShortenedToZeroVanishes) {
   // equidistant x = 8 has length 0 and is not output: both corners are at (8,2). N50 runs -X,
   // left normal (0,-1): equidistant y = 4-2 = 2, normal end (0,2).
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y4\nN50 X0\nN60 G40 X-10 Y0\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
-                  line(K::kOffset, {8, 2, 0}, {0, 2, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}), line(K::kOffset, {8, 2, 0}, {0, 2, 0}),
                   line(K::kRetraction, {0, 2, 0}, {-10, 0, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-ELEMENT-1", "vanishes"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-ELEMENT-1", "vanishes"));
@@ -180,12 +156,9 @@ TEST(SliceExamples, ElementShortenedToZeroVanishes) {
 TEST(SliceExamples, InfeedBetweenCompensatedBlocksRunsAtTheCornerPoint) {
   // N35 moves only Z: it runs at the intersection point (8,2), from Z0 to Z-5; its M8 runs there.
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN35 Z-5 M8\nN40 Y10\nN50 G40 X20 Y20\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
-                  line(K::kInfeed, {8, 2, 0}, {8, 2, -5}),
-                  line(K::kOffset, {8, 2, -5}, {8, 10, -5}),
-                  line(K::kRetraction, {8, 10, -5}, {20, 20, -5})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}), line(K::kInfeed, {8, 2, 0}, {8, 2, -5}),
+                  line(K::kOffset, {8, 2, -5}, {8, 10, -5}), line(K::kRetraction, {8, 10, -5}, {20, 20, -5})});
   for (const RunResult* x : {&r.fast, &r.ref}) {
     ASSERT_EQ(x->actions.size(), 1u);
     EXPECT_EQ(x->actions[0].function.value, 8);
@@ -212,10 +185,8 @@ TEST(SliceExamples, EffectiveRadiusAddsWearAndOffn) {
       "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2.5\n$TC_DP15[1,1]=-0.3\nN10 G0 X-10 Y0 T1 D1 OFFN=-0.2\n"
       "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n";
   Runs r = run_both(text);
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}),
-                  line(K::kOffset, {8, 2, 0}, {8, 10, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}), line(K::kOffset, {8, 2, 0}, {8, 10, 0}),
                   line(K::kRetraction, {8, 10, 0}, {20, 20, 0})});
 }
 
@@ -223,12 +194,9 @@ TEST(SliceExamples, EffectiveRadiusAddsWearAndOffn) {
 TEST(SliceExamples, NegativeRadiusSwapsTheSide) {
   // r = -2 with G41 acts as G42 with r = 2: the path of OuterCornerWithTransitionCircle.
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n", "-2"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
-                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}),
-                  arc({10, -2, 0}, {12, 0, 0}, {10, 0, 0}, true),
-                  line(K::kOffset, {12, 0, 0}, {12, 10, 0}),
-                  line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}), arc({10, -2, 0}, {12, 0, 0}, {10, 0, 0}, true),
+                  line(K::kOffset, {12, 0, 0}, {12, 10, 0}), line(K::kRetraction, {12, 10, 0}, {20, 20, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-RADIUS-2", "negative"));
 }
 
@@ -236,10 +204,8 @@ TEST(SliceExamples, NegativeRadiusSwapsTheSide) {
 TEST(SliceExamples, ZeroRadiusFollowsTheContour) {
   // r = 0: every equidistant is the block itself, no transition circle at the outer corner.
   Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n", "0"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 0, 0}),
-                  line(K::kOffset, {0, 0, 0}, {10, 0, 0}),
-                  line(K::kOffset, {10, 0, 0}, {10, 10, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 0, 0}),
+                  line(K::kOffset, {0, 0, 0}, {10, 0, 0}), line(K::kOffset, {10, 0, 0}, {10, 10, 0}),
                   line(K::kRetraction, {10, 10, 0}, {20, 20, 0})});
 }
 
@@ -247,10 +213,8 @@ TEST(SliceExamples, ZeroRadiusFollowsTheContour) {
 TEST(SliceExamples, SelectionWaitsForAPlaneAxis) {
   // N20 programs G41 with Z only: no selection yet; N30 selects (modal G41) and approaches.
   Runs r = run_both(program("N20 G1 G41 Z-1 F100\nN30 X0 Y0\nN40 X10\nN50 G40 X10 Y-10\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kProgrammed, {-10, 0, 0}, {-10, 0, -1}),
-                  line(K::kApproach, {-10, 0, -1}, {0, 2, -1}),
-                  line(K::kOffset, {0, 2, -1}, {10, 2, -1}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kProgrammed, {-10, 0, 0}, {-10, 0, -1}),
+                  line(K::kApproach, {-10, 0, -1}, {0, 2, -1}), line(K::kOffset, {0, 2, -1}, {10, 2, -1}),
                   line(K::kRetraction, {10, 2, -1}, {10, -10, -1})});
   EXPECT_TRUE(has_decision(r.fast, "TRC-SEL-4", "no-plane-axis"));
 }
@@ -258,10 +222,8 @@ TEST(SliceExamples, SelectionWaitsForAPlaneAxis) {
 // covers: TRC-SEL-5
 TEST(SliceExamples, D0SelectsNothing) {
   Runs r = run_both("N10 G0 X-10 T1 D0\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 X20\n");
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
-                  line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}),
-                  line(K::kProgrammed, {10, 0, 0}, {20, 0, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
+                  line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}), line(K::kProgrammed, {10, 0, 0}, {20, 0, 0})});
   EXPECT_EQ(r.fast.notices.size(), 1u);
   EXPECT_EQ(r.ref.notices.size(), 1u);
 }
@@ -272,9 +234,9 @@ TEST(SliceExamples, SelectionAndDeselectionAlarms) {
     std::string text;
     int alarm;
   } cases[] = {
-      {"N10 G1 G41 X0 Y0 F100\nN20 X10\n", 10750},                          // no tool
-      {"N10 T1 D3\nN20 G1 G41 X0 Y0 F100\nN30 X10\n", 17181},               // edge not defined
-      {"$TC_DP6[1,1]=2\nN10 T1 D1\nN20 G2 G41 X10 Y0 CR=5\n", 10753},       // selection in a circle
+      {"N10 G1 G41 X0 Y0 F100\nN20 X10\n", 10750},                     // no tool
+      {"N10 T1 D3\nN20 G1 G41 X0 Y0 F100\nN30 X10\n", 17181},          // edge not defined
+      {"$TC_DP6[1,1]=2\nN10 T1 D1\nN20 G2 G41 X10 Y0 CR=5\n", 10753},  // selection in a circle
       {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G40 G2 X30 CR=5\n", 10754},
       {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G18 X30\n", 10757},
   };
@@ -290,8 +252,7 @@ TEST(SliceExamples, SelectionAndDeselectionAlarms) {
 // covers: TRC-SEL-8
 TEST(SliceExamples, DeselectionBeforeTheContourMeansNoSelection) {
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 G40 X10 Y5\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
                   line(K::kProgrammed, {0, 0, 0}, {10, 5, 0})});
 }
 
@@ -299,18 +260,15 @@ TEST(SliceExamples, DeselectionBeforeTheContourMeansNoSelection) {
 TEST(SliceExamples, DeselectionWaitsForAPlaneAxis) {
   // N40 programs G40 with Z only: it runs at N30's normal end (10,2) as an infeed; N50 retracts.
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 Z5\nN50 X20 Y-5\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}),
-                  line(K::kInfeed, {10, 2, 0}, {10, 2, 5}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kInfeed, {10, 2, 0}, {10, 2, 5}),
                   line(K::kRetraction, {10, 2, 5}, {20, -5, 5})});
 }
 
 // covers: TRC-END-1
 TEST(SliceExamples, ProgramEndingWithCompensationActive) {
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 M30\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),
-                  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
                   line(K::kOffset, {0, 2, 0}, {10, 2, 0})});
   EXPECT_EQ(r.fast.notices.size(), 1u);
   EXPECT_EQ(r.ref.actions.size(), 1u);  // M30, at the end point
@@ -324,10 +282,8 @@ TEST(SliceExamples, PlaneG18UsesZAsAbscissaAndXAsOrdinate) {
   std::string text =
       "$TC_DP6[1,1]=2\nN10 G18 G0 Z-10 X0 T1 D1\nN20 G1 G41 Z0 X0 F100\nN30 Z10\nN40 X10\nN50 G40 Z20 X20\n";
   Runs r = run_both(text);
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {0, 0, -10}),
-                  line(K::kApproach, {0, 0, -10}, {2, 0, 0}),
-                  line(K::kOffset, {2, 0, 0}, {2, 0, 8}),
-                  line(K::kOffset, {2, 0, 8}, {10, 0, 8}),
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {0, 0, -10}), line(K::kApproach, {0, 0, -10}, {2, 0, 0}),
+                  line(K::kOffset, {2, 0, 0}, {2, 0, 8}), line(K::kOffset, {2, 0, 8}, {10, 0, 8}),
                   line(K::kRetraction, {10, 0, 8}, {20, 0, 20})});
 }
 
@@ -337,6 +293,90 @@ TEST(SliceExamples, UncompensatedProgramIsItsOwnPath) {
   expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {10, 10, 0}), line(K::kProgrammed, {10, 10, 0}, {15, 5, 0})});
   EXPECT_TRUE(r.fast.path[0].rapid);
   EXPECT_FALSE(r.fast.path[1].rapid);
+}
+
+}  // namespace
+}  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: TRC-SEL-3
+TEST(SliceExamples, OneProgrammedPlaneAxisIsCompleted) {
+  // N20 programs only X0: Y stays 0 from N10; the selection approaches (0,2) as usual.
+  Runs r = run_both(program("N20 G1 G41 X0 F100\nN30 X10\nN40 G40 X20 Y10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {20, 10, 0})});
+}
+
+// covers: TRC-DUMMY-3
+TEST(SliceExamples, ProgrammedAxisWithoutDisplacementIsABlockWithoutPlaneMotion) {
+  // N35 programs X10 where the tool already is: no direction, it runs at the corner point (8,2).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN35 X10 Z-1\nN40 Y10\nN50 G40 X20 Y20\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8, 2, 0}), line(K::kInfeed, {8, 2, 0}, {8, 2, -1}),
+                  line(K::kOffset, {8, 2, -1}, {8, 10, -1}), line(K::kRetraction, {8, 10, -1}, {20, 20, -1})});
+}
+
+// covers: TRC-CORNER-2 TRC-CORNER-3 TRC-CORNER-4
+TEST(SliceExamples, ContourAngleExactlyOnTheLimitDoesNotSwitch) {
+  // A 90 deg outer corner with MD20210 = 90 is not above it: G451 stays (intersection (12,-2)).
+  // A 45 deg outer corner with MD20230 = 45 is not below it: G450 stays (circle).
+  MachineData md;
+  md.set("MD20210", "90");
+  Runs a = run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 Y10\nN50 G40 X20 Y20\n"), md);
+  for (const RunResult* x : {&a.fast, &a.ref}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-CORNER-3", "keep-G451"));
+    ASSERT_EQ(x->path.size(), 5u);
+    expect_point(x->path[2].end, {12, -2, 0}, "intersection");
+  }
+  EXPECT_EQ(a.ref.decisions[4].margin_exact, "0");
+  MachineData md2;
+  md2.set("MD20230", "45");
+  Runs b = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 X20 Y10\nN50 G40 X30 Y10\n"), md2);
+  for (const RunResult* x : {&b.fast, &b.ref}) EXPECT_TRUE(has_decision(*x, "TRC-CORNER-4", "keep-G450"));
+  // Directions 2e-9 deg above and 4e-9 deg below 100 deg (computed independently with 50-digit
+  // mpmath: theta - 100 = +1.9874e-9 and -3.6551e-9). cos(100 deg) is irrational; the exact
+  // comparison separates them, and so does fast here (far outside its band).
+  Runs above =
+      run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 X8.263518223 Y9.848077530\nN50 G40 X0 Y20\n"));
+  Runs below =
+      run_both(program("N20 G1 G42 G451 X0 Y0 F100\nN30 X10\nN40 X8.263518224 Y9.848077530\nN50 G40 X0 Y20\n"));
+  for (const RunResult* x : {&above.ref, &above.fast}) EXPECT_TRUE(has_decision(*x, "TRC-CORNER-3", "switch-to-G450"));
+  for (const RunResult* x : {&below.ref, &below.fast}) EXPECT_TRUE(has_decision(*x, "TRC-CORNER-3", "keep-G451"));
+  EXPECT_EQ(above.ref.decisions[4].margin_exact.substr(0, 6), "1.9874");
+  EXPECT_EQ(below.ref.decisions[4].margin_exact.substr(0, 7), "-3.6551");
+}
+
+// covers: TRC-UNSUP-1
+TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
+  const std::pair<std::string, int> cases[] = {
+      {program("N20 G1 G41 X0 Y0 F100\nN30 G3 X10 Y0 CR=20\n"), 5},
+      {program("N20 G1 G41 KONT X0 Y0 F100\nN30 X10\n"), 4},
+      {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},
+      {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},
+      {"N10 G2 X10 Y0 I5 J0\n", 1},
+  };
+  for (const auto& [text, line_no] : cases)
+    for (const char* engine : {"fast", "ref"}) {
+      bool ok = false;
+      try {
+        run_engine(engine, text, {}, &ok);
+        ADD_FAILURE() << engine << " accepted:\n" << text;
+      } catch (const UnsupportedError& e) {
+        EXPECT_EQ(e.line(), line_no) << engine << ": " << e.what();
+        EXPECT_NE(std::string(e.what()).find("not supported"), std::string::npos);
+      }
+    }
+}
+
+// covers: NC-ERR-2 ALARM-1
+TEST(SliceExamples, ReadingErrorAfterAnAlarmStillRejectsTheProgram) {
+  std::string text = program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-10 Y0\nN70 Q1\n");
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok = true;
+    EXPECT_THROW(run_engine(engine, text, {}, &ok), InputError) << engine;
+  }
 }
 
 }  // namespace

@@ -25,7 +25,10 @@ Decimal::ParseResult Decimal::parse(std::string_view s) {
   int int_digits = 0;
   while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
     integer = integer * 10 + (s[i++] - '0');
-    if (integer > kMaxUnits) { r.error = ParseError::kOutOfRange; return r; }
+    if (integer > kMaxUnits) {
+      r.error = ParseError::kOutOfRange;
+      return r;
+    }
     ++int_digits;
   }
   Int128 fraction = 0;
@@ -35,7 +38,10 @@ Decimal::ParseResult Decimal::parse(std::string_view s) {
     while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
       if (frac_digits == kFractionDigits) {
         // Trailing zeros beyond nine places change nothing; anything else cannot be held exactly.
-        if (s[i] != '0') { r.error = ParseError::kTooManyDecimals; return r; }
+        if (s[i] != '0') {
+          r.error = ParseError::kTooManyDecimals;
+          return r;
+        }
         ++i;
         continue;
       }
@@ -43,10 +49,16 @@ Decimal::ParseResult Decimal::parse(std::string_view s) {
       ++frac_digits;
     }
   }
-  if (i != s.size() || (int_digits == 0 && frac_digits == 0)) { r.error = ParseError::kSyntax; return r; }
+  if (i != s.size() || (int_digits == 0 && frac_digits == 0)) {
+    r.error = ParseError::kSyntax;
+    return r;
+  }
   for (int k = frac_digits; k < kFractionDigits; ++k) fraction *= 10;
   Int128 units = integer * kUnitsPerOne + fraction;
-  if (units > kMaxUnits) { r.error = ParseError::kOutOfRange; return r; }
+  if (units > kMaxUnits) {
+    r.error = ParseError::kOutOfRange;
+    return r;
+  }
   r.value = from_units(negative ? -units : units);
   return r;
 }

@@ -15,8 +15,8 @@ const std::vector<MachineDatumInfo>& machine_data_catalogue() {
        "blocks without traversing motion between a SAR block and the direction-defining block", "MD-20202-1"},
       {"MD20204", "$MC_WAB_CLEARANCE_TOLERANCE", "mm", ">= 0", "tolerance of the SAR direction-reversal check",
        "MD-20204-1"},
-      {"MD20210", "$MC_CUTCOM_CORNER_LIMIT", "degrees", "0 .. 180",
-       "contour angle above which G451 switches to G450", "MD-20210-1"},
+      {"MD20210", "$MC_CUTCOM_CORNER_LIMIT", "degrees", "0 .. 180", "contour angle above which G451 switches to G450",
+       "MD-20210-1"},
       {"MD20220", "$MC_CUTCOM_MAX_DISC", "", "0 .. 100", "largest DISC value", "MD-20220-1"},
       {"MD20230", "$MC_CUTCOM_CURVE_INSERT_LIMIT", "degrees", "0 .. 180",
        "contour angle below which G450 switches to G451", "MD-20230-1"},
@@ -46,9 +46,10 @@ const MachineDatumInfo& lookup(std::string_view name) {
   std::string u = upper(trim(name));
   for (const auto& d : machine_data_catalogue())
     if (u == d.id || u == d.name) return d;
-  throw MachineDataError(fmt::format("unknown machine datum '{}' (known: MD20150[47], MD20202, MD20204, MD20210, "
-                                     "MD20220, MD20230, MD20240, MD20250)",
-                                     name));
+  throw MachineDataError(
+      fmt::format("unknown machine datum '{}' (known: MD20150[47], MD20202, MD20204, MD20210, "
+                  "MD20220, MD20230, MD20240, MD20250)",
+                  name));
 }
 
 Decimal decimal_in(const MachineDatumInfo& d, std::string_view text, Decimal lo, std::optional<Decimal> hi) {
@@ -123,7 +124,8 @@ ModalState MachineData::initial_state() const {
 }
 
 std::string machine_datum_value(const MachineData& md, std::string_view id) {
-  if (id == "MD20150[47]") return md.group48_reset == EdgeStrategy::kG460 ? "1" : md.group48_reset == EdgeStrategy::kG461 ? "2" : "3";
+  if (id == "MD20150[47]")
+    return md.group48_reset == EdgeStrategy::kG460 ? "1" : md.group48_reset == EdgeStrategy::kG461 ? "2" : "3";
   if (id == "MD20202") return std::to_string(md.wab_maxnum_dummy_blocks);
   if (id == "MD20204") return md.wab_clearance_tolerance.to_string();
   if (id == "MD20210") return md.cutcom_corner_limit.to_string();

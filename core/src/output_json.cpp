@@ -70,8 +70,11 @@ void JsonWriter::decision(const Decision& d) {
 }
 
 void JsonWriter::alarm(const Alarm& a) {
-  append(alarms_, json{{"number", a.number}, {"line", a.line}, {"block", block_ref(a.block)},
-                       {"clause", a.clause}, {"text", a.text}});
+  append(alarms_, json{{"number", a.number},
+                       {"line", a.line},
+                       {"block", block_ref(a.block)},
+                       {"clause", a.clause},
+                       {"text", a.text}});
 }
 
 void JsonWriter::notice(const Notice& n) {

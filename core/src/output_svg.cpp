@@ -74,7 +74,8 @@ void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programm
   for (const auto& s : programmed) grow(s.start, 0), grow(s.end, 0);
   for (const auto& e : result.path) {
     grow(e.start, 0), grow(e.end, 0);
-    if (e.type == ElementType::kArc) grow(e.center, std::hypot(v.a(e.start) - v.a(e.center), v.b(e.start) - v.b(e.center)));
+    if (e.type == ElementType::kArc)
+      grow(e.center, std::hypot(v.a(e.start) - v.a(e.center), v.b(e.start) - v.b(e.center)));
   }
   if (lo_a > hi_a) lo_a = hi_a = lo_b = hi_b = 0;
   double span = std::max({hi_a - lo_a, hi_b - lo_b, 1e-9});
@@ -94,7 +95,8 @@ void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programm
   out << fmt::format(
       "<g transform=\"translate({},{})\"><line x1=\"0\" y1=\"0\" x2=\"24\" y2=\"0\" stroke=\"#999\" stroke-width=\"2\" "
       "stroke-dasharray=\"6 3\"/><text x=\"30\" y=\"4\">programmed contour</text>"
-      "<line x1=\"170\" y1=\"0\" x2=\"194\" y2=\"0\" stroke=\"#1f5fbf\" stroke-width=\"2\"/><text x=\"200\" y=\"4\">tool "
+      "<line x1=\"170\" y1=\"0\" x2=\"194\" y2=\"0\" stroke=\"#1f5fbf\" stroke-width=\"2\"/><text x=\"200\" "
+      "y=\"4\">tool "
       "centre, feed</text>"
       "<line x1=\"330\" y1=\"0\" x2=\"354\" y2=\"0\" stroke=\"#d62728\" stroke-width=\"1.5\" stroke-dasharray=\"4 3\"/>"
       "<text x=\"360\" y=\"4\">rapid</text>"
@@ -102,10 +104,11 @@ void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programm
       "transition circle</text><text x=\"580\" y=\"4\">plane {}{} (scale {:.3g} px/mm)</text></g>\n",
       v.pad, 38, names[v.axes.abscissa], names[v.axes.ordinate], v.scale);
   for (const auto& s : programmed) {
-    std::string d = s.arc ? arc_path(v, s.start, s.end, s.center, s.ccw)
-                          : fmt::format("M {:.3f} {:.3f} L {:.3f} {:.3f}", v.sx(s.start), v.sy(s.start), v.sx(s.end),
-                                        v.sy(s.end));
-    out << fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#999\" stroke-width=\"2\" stroke-dasharray=\"6 3\"/>\n", d);
+    std::string d =
+        s.arc ? arc_path(v, s.start, s.end, s.center, s.ccw)
+              : fmt::format("M {:.3f} {:.3f} L {:.3f} {:.3f}", v.sx(s.start), v.sy(s.start), v.sx(s.end), v.sy(s.end));
+    out << fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#999\" stroke-width=\"2\" stroke-dasharray=\"6 3\"/>\n",
+                       d);
   }
   for (const auto& s : programmed)
     out << fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#666\" font-size=\"10\">L{}</text>\n", v.sx(s.end) + 3,
@@ -115,9 +118,10 @@ void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programm
                                                 : fmt::format("M {:.3f} {:.3f} L {:.3f} {:.3f}", v.sx(e.start),
                                                               v.sy(e.start), v.sx(e.end), v.sy(e.end));
     const char* colour = e.rapid ? "#d62728" : e.origin.kind == OriginKind::kTransitionCircle ? "#ff8c00" : "#1f5fbf";
-    out << fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} marker-end=\"url(#arrow)\">"
-                       "<title>{}</title></path>\n",
-                       d, colour, e.rapid ? 1.5 : 2, e.rapid ? " stroke-dasharray=\"4 3\"" : "", describe(e.origin));
+    out << fmt::format(
+        "<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} marker-end=\"url(#arrow)\">"
+        "<title>{}</title></path>\n",
+        d, colour, e.rapid ? 1.5 : 2, e.rapid ? " stroke-dasharray=\"4 3\"" : "", describe(e.origin));
   }
   for (const auto& a : result.alarms)
     out << fmt::format("<text x=\"{}\" y=\"{:.0f}\" fill=\"#d62728\" font-weight=\"bold\">ALARM {} {}</text>\n", v.pad,

@@ -33,7 +33,8 @@ void TextWriter::action(const ActionEvent& a) {
 void TextWriter::decision(const Decision& d) {
   if (!with_trace_) return;
   out_ << fmt::format("     trace line {:>4}  {:<16} {:<22}", d.line, d.clause, d.branch);
-  if (d.has_margin) out_ << (d.margin_exact.empty() ? fmt::format("  margin {:.6g}", d.margin) : "  margin " + d.margin_exact);
+  if (d.has_margin)
+    out_ << (d.margin_exact.empty() ? fmt::format("  margin {:.6g}", d.margin) : "  margin " + d.margin_exact);
   out_ << "\n";
 }
 

@@ -6,12 +6,18 @@ namespace cutcom {
 
 std::string origin_kind_name(OriginKind k) {
   switch (k) {
-    case OriginKind::kProgrammed: return "programmed";
-    case OriginKind::kApproach: return "approach";
-    case OriginKind::kOffset: return "offset";
-    case OriginKind::kTransitionCircle: return "transition_circle";
-    case OriginKind::kRetraction: return "retraction";
-    case OriginKind::kInfeed: return "infeed";
+    case OriginKind::kProgrammed:
+      return "programmed";
+    case OriginKind::kApproach:
+      return "approach";
+    case OriginKind::kOffset:
+      return "offset";
+    case OriginKind::kTransitionCircle:
+      return "transition_circle";
+    case OriginKind::kRetraction:
+      return "retraction";
+    case OriginKind::kInfeed:
+      return "infeed";
   }
   return "?";
 }
@@ -25,13 +31,18 @@ std::string block_name(int line, const std::optional<std::int64_t>& n) {
 std::string describe(const Origin& o) {
   std::string b = block_name(o.line, o.block);
   switch (o.kind) {
-    case OriginKind::kProgrammed: return fmt::format("{} without compensation", b);
-    case OriginKind::kApproach: return fmt::format("approach {}", b);
-    case OriginKind::kOffset: return fmt::format("offset of {}", b);
+    case OriginKind::kProgrammed:
+      return fmt::format("{} without compensation", b);
+    case OriginKind::kApproach:
+      return fmt::format("approach {}", b);
+    case OriginKind::kOffset:
+      return fmt::format("offset of {}", b);
     case OriginKind::kTransitionCircle:
       return fmt::format("transition circle at corner {}/{}", b, block_name(o.next_line, o.next_block));
-    case OriginKind::kRetraction: return fmt::format("retraction {}", b);
-    case OriginKind::kInfeed: return fmt::format("{} at the corner point", b);
+    case OriginKind::kRetraction:
+      return fmt::format("retraction {}", b);
+    case OriginKind::kInfeed:
+      return fmt::format("{} at the corner point", b);
   }
   return b;
 }

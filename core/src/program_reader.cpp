@@ -10,10 +10,17 @@ namespace cutcom {
 void ToolTable::assign(const ToolDataAssignment& a) {
   EdgeData& e = edges_[{a.tool, a.edge}];
   switch (a.parameter) {
-    case 1: e.type = a.value; break;
-    case 6: e.radius = a.value; break;
-    case 15: e.wear = a.value; break;
-    default: break;
+    case 1:
+      e.type = a.value;
+      break;
+    case 6:
+      e.radius = a.value;
+      break;
+    case 15:
+      e.wear = a.value;
+      break;
+    default:
+      break;
   }
 }
 

@@ -1,6 +1,7 @@
 // NC-LEX-*: the words of one block. Every rejected input names its column and what is wrong.
-#include <cctype>
 #include <fmt/format.h>
+
+#include <cctype>
 
 #include "cutcom/reader.hpp"
 
@@ -8,7 +9,9 @@ namespace cutcom {
 
 InputError::InputError(int line, int column, const std::string& what)
     : std::runtime_error(fmt::format("line {}, column {}: {}", line, column, what)),
-      line_(line), column_(column), detail_(what) {}
+      line_(line),
+      column_(column),
+      detail_(what) {}
 
 namespace {
 
@@ -168,40 +171,107 @@ class WordLexer {
     };
     BlockWords& o = out_;
     switch (g) {
-      case 0: group(o.motion, Motion::kRapid, "motion"); break;
-      case 1: group(o.motion, Motion::kLinear, "motion"); break;
-      case 2: group(o.motion, Motion::kArcCw, "motion"); break;
-      case 3: group(o.motion, Motion::kArcCcw, "motion"); break;
-      case 17: group(o.plane, Plane::kG17, "plane"); break;
-      case 18: group(o.plane, Plane::kG18, "plane"); break;
-      case 19: group(o.plane, Plane::kG19, "plane"); break;
-      case 40: group(o.side, Side::kOff, "tool radius compensation"); break;
-      case 41: group(o.side, Side::kLeft, "tool radius compensation"); break;
-      case 42: group(o.side, Side::kRight, "tool radius compensation"); break;
-      case 60: group(o.path_mode, PathMode::kG60, "exact stop / continuous path"); break;
-      case 64: group(o.path_mode, PathMode::kG64, "exact stop / continuous path"); break;
-      case 90: group(o.absolute, true, "dimensions"); break;
-      case 91: group(o.absolute, false, "dimensions"); break;
-      case 94: group(o.feed_type, FeedType::kG94, "feed type"); break;
-      case 95: group(o.feed_type, FeedType::kG95, "feed type"); break;
-      case 140: group(o.sar_side, SarSide::kG140, "SAR side"); break;
-      case 141: group(o.sar_side, SarSide::kG141, "SAR side"); break;
-      case 142: group(o.sar_side, SarSide::kG142, "SAR side"); break;
-      case 143: group(o.sar_side, SarSide::kG143, "SAR side"); break;
-      case 147: group(o.sar_contour, SarContour::kG147, "SAR contour"); break;
-      case 148: group(o.sar_contour, SarContour::kG148, "SAR contour"); break;
-      case 247: group(o.sar_contour, SarContour::kG247, "SAR contour"); break;
-      case 248: group(o.sar_contour, SarContour::kG248, "SAR contour"); break;
-      case 347: group(o.sar_contour, SarContour::kG347, "SAR contour"); break;
-      case 348: group(o.sar_contour, SarContour::kG348, "SAR contour"); break;
-      case 340: group(o.sar_segmentation, SarSegmentation::kG340, "SAR segmentation"); break;
-      case 341: group(o.sar_segmentation, SarSegmentation::kG341, "SAR segmentation"); break;
-      case 450: group(o.corner, CornerMode::kG450, "outer corner"); break;
-      case 451: group(o.corner, CornerMode::kG451, "outer corner"); break;
-      case 460: group(o.edge_strategy, EdgeStrategy::kG460, "approach/retraction (group 48)"); break;
-      case 461: group(o.edge_strategy, EdgeStrategy::kG461, "approach/retraction (group 48)"); break;
-      case 462: group(o.edge_strategy, EdgeStrategy::kG462, "approach/retraction (group 48)"); break;
-      default: fail(fmt::format("G{} is not supported by cutcom", g), at);
+      case 0:
+        group(o.motion, Motion::kRapid, "motion");
+        break;
+      case 1:
+        group(o.motion, Motion::kLinear, "motion");
+        break;
+      case 2:
+        group(o.motion, Motion::kArcCw, "motion");
+        break;
+      case 3:
+        group(o.motion, Motion::kArcCcw, "motion");
+        break;
+      case 17:
+        group(o.plane, Plane::kG17, "plane");
+        break;
+      case 18:
+        group(o.plane, Plane::kG18, "plane");
+        break;
+      case 19:
+        group(o.plane, Plane::kG19, "plane");
+        break;
+      case 40:
+        group(o.side, Side::kOff, "tool radius compensation");
+        break;
+      case 41:
+        group(o.side, Side::kLeft, "tool radius compensation");
+        break;
+      case 42:
+        group(o.side, Side::kRight, "tool radius compensation");
+        break;
+      case 60:
+        group(o.path_mode, PathMode::kG60, "exact stop / continuous path");
+        break;
+      case 64:
+        group(o.path_mode, PathMode::kG64, "exact stop / continuous path");
+        break;
+      case 90:
+        group(o.absolute, true, "dimensions");
+        break;
+      case 91:
+        group(o.absolute, false, "dimensions");
+        break;
+      case 94:
+        group(o.feed_type, FeedType::kG94, "feed type");
+        break;
+      case 95:
+        group(o.feed_type, FeedType::kG95, "feed type");
+        break;
+      case 140:
+        group(o.sar_side, SarSide::kG140, "SAR side");
+        break;
+      case 141:
+        group(o.sar_side, SarSide::kG141, "SAR side");
+        break;
+      case 142:
+        group(o.sar_side, SarSide::kG142, "SAR side");
+        break;
+      case 143:
+        group(o.sar_side, SarSide::kG143, "SAR side");
+        break;
+      case 147:
+        group(o.sar_contour, SarContour::kG147, "SAR contour");
+        break;
+      case 148:
+        group(o.sar_contour, SarContour::kG148, "SAR contour");
+        break;
+      case 247:
+        group(o.sar_contour, SarContour::kG247, "SAR contour");
+        break;
+      case 248:
+        group(o.sar_contour, SarContour::kG248, "SAR contour");
+        break;
+      case 347:
+        group(o.sar_contour, SarContour::kG347, "SAR contour");
+        break;
+      case 348:
+        group(o.sar_contour, SarContour::kG348, "SAR contour");
+        break;
+      case 340:
+        group(o.sar_segmentation, SarSegmentation::kG340, "SAR segmentation");
+        break;
+      case 341:
+        group(o.sar_segmentation, SarSegmentation::kG341, "SAR segmentation");
+        break;
+      case 450:
+        group(o.corner, CornerMode::kG450, "outer corner");
+        break;
+      case 451:
+        group(o.corner, CornerMode::kG451, "outer corner");
+        break;
+      case 460:
+        group(o.edge_strategy, EdgeStrategy::kG460, "approach/retraction (group 48)");
+        break;
+      case 461:
+        group(o.edge_strategy, EdgeStrategy::kG461, "approach/retraction (group 48)");
+        break;
+      case 462:
+        group(o.edge_strategy, EdgeStrategy::kG462, "approach/retraction (group 48)");
+        break;
+      default:
+        fail(fmt::format("G{} is not supported by cutcom", g), at);
     }
   }
 
@@ -278,9 +348,12 @@ class WordLexer {
         out_.number = v;
         return;
       }
-      case 'G': return g_code(at);
-      case 'M': return aux('M', at);
-      case 'H': return aux('H', at);
+      case 'G':
+        return g_code(at);
+      case 'M':
+        return aux('M', at);
+      case 'H':
+        return aux('H', at);
       case 'T': {
         equals();
         std::int64_t v = integer("T");
@@ -298,13 +371,20 @@ class WordLexer {
         if (v.sign() < 0) fail("feed must not be negative", at);
         return set_once(out_.feed, v, "F", at);
       }
-      case 'X': return positional(out_.axis[0], "X", at, true, false);
-      case 'Y': return positional(out_.axis[1], "Y", at, true, false);
-      case 'Z': return positional(out_.axis[2], "Z", at, true, false);
-      case 'I': return positional(out_.centre[0], "I", at, true, false);
-      case 'J': return positional(out_.centre[1], "J", at, true, false);
-      case 'K': return positional(out_.centre[2], "K", at, true, false);
-      default: fail(fmt::format("unknown address '{}'", n), at);
+      case 'X':
+        return positional(out_.axis[0], "X", at, true, false);
+      case 'Y':
+        return positional(out_.axis[1], "Y", at, true, false);
+      case 'Z':
+        return positional(out_.axis[2], "Z", at, true, false);
+      case 'I':
+        return positional(out_.centre[0], "I", at, true, false);
+      case 'J':
+        return positional(out_.centre[1], "J", at, true, false);
+      case 'K':
+        return positional(out_.centre[2], "K", at, true, false);
+      default:
+        fail(fmt::format("unknown address '{}'", n), at);
     }
   }
 

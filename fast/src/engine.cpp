@@ -56,16 +56,16 @@ struct Engine::State {
   PlaneAxes axes{0, 1, 2};
   Plane plane = Plane::kG17;
   Side side = Side::kOff;
-  int s = 0;          // +1 left, -1 right (after TRC-RADIUS-2)
-  double r = 0;       // |effective radius|
+  int s = 0;     // +1 left, -1 right (after TRC-RADIUS-2)
+  double r = 0;  // |effective radius|
   ActiveEdge edge;
 
   BlockCopy selection;  // kApproach: the selection block
   // kActive: the open element, whose end waits for the next traversing block.
   BlockCopy open;
   LineSegment open_seg;
-  Vec2 open_start;      // start point of its equidistant (after the previous corner)
-  double open_trim = 0; // shortening at its start
+  Vec2 open_start;       // start point of its equidistant (after the previous corner)
+  double open_trim = 0;  // shortening at its start
   // Blocks without motion in the plane since the last traversing block (fixed capacity).
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
   int dummy_count = 0;
@@ -175,14 +175,21 @@ struct Engine::State {
       raise(10757, b.words.line, b.words.number);
       return false;
     }
-    if (b.is_arc()) throw UnsupportedError(b.words.line, "circular interpolation G2/G3 with compensation active");
+    if (b.is_arc())
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "circular interpolation G2/G3 with compensation active");
     if (b.state.side != side)
-      throw UnsupportedError(b.words.line, "change of compensation side G41/G42 without G40");
-    if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "change of compensation side G41/G42 without G40");
+    if (b.words.side)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "re-selection of G41/G42 while compensation is active");
     if (!(ActiveEdge::of(b.state) == edge))
-      throw UnsupportedError(b.words.line, "change of tool, D number or OFFN while compensation is active");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "change of tool, D number or OFFN while compensation is active");
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-      throw UnsupportedError(b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT approach (needs polynomial output)");
     return true;
   }
 
@@ -204,16 +211,21 @@ struct Engine::State {
         return select(b);
       }
     }
-    if (b.is_arc()) throw UnsupportedError(b.words.line, "circular interpolation G2/G3");
+    if (b.is_arc())
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "circular interpolation G2/G3");
     BlockCopy c = BlockCopy::of(b);
     line(c, c.start, c.end, OriginKind::kProgrammed, c.rapid);
   }
 
   void select(const Block& b) {
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-      throw UnsupportedError(b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT approach (needs polynomial output)");
     if (b.state.approach == ApproachMode::kKont)
-      throw UnsupportedError(b.words.line, "KONT approach");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONT approach");
+    // TRC-SEL-1; TRC-SEL-3: a single plane axis was completed by the reader (NC-POS-1).
     decide("TRC-SEL-1", b.words.line, "selected");
     plane = b.state.plane;
     axes = plane_axes(plane);
@@ -241,7 +253,7 @@ struct Engine::State {
       return off(b);
     }
     if (!check_active_block(b)) return;
-    if (!b.moves_in_plane()) return queue_dummy(b);
+    if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
     // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
     BlockCopy first = BlockCopy::of(b);
     LineSegment seg = LineSegment::between(ab(first.start), ab(first.end));
@@ -267,7 +279,7 @@ struct Engine::State {
       }
       return deselect(b);
     }
-    if (!b.moves_in_plane()) return queue_dummy(b);
+    if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3
     corner(b);
   }
 
@@ -281,6 +293,7 @@ struct Engine::State {
 
     bool circle = c.kind == Corner::Kind::kReversal;  // TRC-G450-3: a reversal is always a circle
     if (c.kind == Corner::Kind::kOuter) {
+      // TRC-CORNER-2: the contour angle is the deflection angle, in degrees.
       double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
       if (b.state.corner == CornerMode::kG451) {
         // TRC-CORNER-3: G451 switches to G450 above MD20210.
@@ -300,7 +313,7 @@ struct Engine::State {
       if (!close_open(from, 0, b.words.line, b.words.number)) return;
       run_dummies(from);
       Vec2 to = seg.offset(v, s * r);
-      if (r > 0) {
+      if (r > 0) {  // TRC-G450-2: no circle for a zero radius
         actions(next, xyz(from, h(next.start)));
         PathElement e;
         e.type = ElementType::kArc, e.rapid = next.rapid, e.feed = next.feed;
@@ -328,9 +341,9 @@ struct Engine::State {
     run_dummies(end);
     BlockCopy last = BlockCopy::of(b);
     PathPoint from = xyz(end, h(last.start));
-    double length = std::sqrt((last.end.x - from.x) * (last.end.x - from.x) +
-                              (last.end.y - from.y) * (last.end.y - from.y) +
-                              (last.end.z - from.z) * (last.end.z - from.z));
+    double length =
+        std::sqrt((last.end.x - from.x) * (last.end.x - from.x) + (last.end.y - from.y) * (last.end.y - from.y) +
+                  (last.end.z - from.z) * (last.end.z - from.z));
     decide("TRC-RETR-NORM-1", b.words.line, length == 0 ? "zero-length" : "line", length);
     line(last, from, last.end, OriginKind::kRetraction, last.rapid);
     phase = Phase::kOff;
@@ -345,7 +358,8 @@ struct Engine::State {
       run_dummies_uncompensated();
     } else if (phase == Phase::kActive) {
       decide("TRC-END-1", open.line, "active-at-end");
-      sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
+      sink.notice(
+          {open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
       Vec2 end = open_seg.offset(open_seg.end, s * r);
       if (!close_open(end, 0, open.line, open.number)) return;
       run_dummies(end);
@@ -363,9 +377,12 @@ void Engine::push(const Block& b) {
   State& st = *state_;
   if (st.stopped) return;
   switch (st.phase) {
-    case State::Phase::kOff: return st.off(b);
-    case State::Phase::kApproach: return st.approach(b);
-    case State::Phase::kActive: return st.active(b);
+    case State::Phase::kOff:
+      return st.off(b);
+    case State::Phase::kApproach:
+      return st.approach(b);
+    case State::Phase::kActive:
+      return st.active(b);
   }
 }
 

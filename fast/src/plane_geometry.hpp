@@ -19,8 +19,8 @@ inline double norm(Vec2 p) { return std::hypot(p.a, p.b); }
 // A straight compensated block in plane coordinates.
 struct LineSegment {
   Vec2 start, end;
-  Vec2 unit;       // direction of travel, |unit| = 1
-  double length;   // > 0 (blocks without motion in the plane never become segments)
+  Vec2 unit;      // direction of travel, |unit| = 1
+  double length;  // > 0 (blocks without motion in the plane never become segments)
   static LineSegment between(Vec2 s, Vec2 e) {
     LineSegment l;
     l.start = s, l.end = e;
@@ -29,16 +29,16 @@ struct LineSegment {
     l.unit = (1.0 / l.length) * d;
     return l;
   }
-  // Point of the equidistant at distance r on side s (+1 left, -1 right) of programmed point p.
+  // TRC-EQ-1: point of the equidistant at distance r on side s (+1 left, -1 right) of point p.
   Vec2 offset(Vec2 p, double sr) const { return p + sr * left_normal(unit); }
 };
 
 // The corner between two consecutive segments, seen from side s.
 struct Corner {
   enum class Kind { kTangent, kInner, kOuter, kReversal } kind;
-  double sine;      // s * sin(deflection): > 0 inner, < 0 outer (the TRC-CORNER-1 margin)
-  double cosine;    // cos(deflection)
-  double trim;      // signed shortening of both equidistants at the corner (< 0: extension, G451)
+  double sine;    // s * sin(deflection): > 0 inner, < 0 outer (the TRC-CORNER-1 margin)
+  double cosine;  // cos(deflection)
+  double trim;    // signed shortening of both equidistants at the corner (< 0: extension, G451)
 };
 
 Corner classify_corner(const LineSegment& first, const LineSegment& second, int side, double radius);

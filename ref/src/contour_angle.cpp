@@ -30,16 +30,44 @@ bool special_cosine(const mpq_class& t, mpq_class& cos_squared, int& cos_sign) {
   if (t.get_den() != 1) return false;
   long deg = t.get_num().get_si();
   switch (deg) {
-    case 0: cos_squared = 1; cos_sign = 1; return true;
-    case 30: cos_squared = mpq_class(3, 4); cos_sign = 1; return true;
-    case 45: cos_squared = mpq_class(1, 2); cos_sign = 1; return true;
-    case 60: cos_squared = mpq_class(1, 4); cos_sign = 1; return true;
-    case 90: cos_squared = 0; cos_sign = 0; return true;
-    case 120: cos_squared = mpq_class(1, 4); cos_sign = -1; return true;
-    case 135: cos_squared = mpq_class(1, 2); cos_sign = -1; return true;
-    case 150: cos_squared = mpq_class(3, 4); cos_sign = -1; return true;
-    case 180: cos_squared = 1; cos_sign = -1; return true;
-    default: return false;
+    case 0:
+      cos_squared = 1;
+      cos_sign = 1;
+      return true;
+    case 30:
+      cos_squared = mpq_class(3, 4);
+      cos_sign = 1;
+      return true;
+    case 45:
+      cos_squared = mpq_class(1, 2);
+      cos_sign = 1;
+      return true;
+    case 60:
+      cos_squared = mpq_class(1, 4);
+      cos_sign = 1;
+      return true;
+    case 90:
+      cos_squared = 0;
+      cos_sign = 0;
+      return true;
+    case 120:
+      cos_squared = mpq_class(1, 4);
+      cos_sign = -1;
+      return true;
+    case 135:
+      cos_squared = mpq_class(1, 2);
+      cos_sign = -1;
+      return true;
+    case 150:
+      cos_squared = mpq_class(3, 4);
+      cos_sign = -1;
+      return true;
+    case 180:
+      cos_squared = 1;
+      cos_sign = -1;
+      return true;
+    default:
+      return false;
   }
 }
 

@@ -1,4 +1,4 @@
-// TRC-CORNER-3/4: the exact comparison of a corner's contour angle with a threshold in degrees
+// TRC-CORNER-2 (used by TRC-CORNER-3/4): the exact comparison of a corner's contour angle with a threshold in degrees
 // (MD20210, MD20230), with no double anywhere (ruling 29).
 #pragma once
 

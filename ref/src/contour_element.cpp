@@ -23,7 +23,8 @@ CornerClass classify_corner(const ContourLine& first, const ContourLine& second,
   CornerClass c;
   c.cross = first.dx * second.dy - first.dy * second.dx;
   c.dot = first.dx * second.dx + first.dy * second.dy;
-  c.squared_lengths_product = (first.dx * first.dx + first.dy * first.dy) * (second.dx * second.dx + second.dy * second.dy);
+  c.squared_lengths_product =
+      (first.dx * first.dx + first.dy * first.dy) * (second.dx * second.dx + second.dy * second.dy);
   int turn = sgn(c.cross) * side;  // > 0: the tool is on the inside of the turn
   if (sgn(c.cross) == 0)
     c.kind = sgn(c.dot) > 0 ? CornerKind::kTangent : CornerKind::kReversal;

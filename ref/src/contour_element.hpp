@@ -27,7 +27,7 @@ struct ContourLine {
 enum class CornerKind { kTangent, kInner, kOuter, kReversal };
 struct CornerClass {
   CornerKind kind;
-  mpz_class cross, dot;   // of the integer directions
+  mpz_class cross, dot;               // of the integer directions
   mpz_class squared_lengths_product;  // |d1|^2 |d2|^2
 };
 CornerClass classify_corner(const ContourLine& first, const ContourLine& second, int side);

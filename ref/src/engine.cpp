@@ -50,9 +50,9 @@ class Reference {
     Plane plane;
     PlaneAxes axes;
     Side side;
-    int s;            // +1 left, -1 right (TRC-RADIUS-2 applied)
-    FT side_radius;   // s * r, r = |effective radius| in units
-    Decimal radius;   // r
+    int s;           // +1 left, -1 right (TRC-RADIUS-2 applied)
+    FT side_radius;  // s * r, r = |effective radius| in units
+    Decimal radius;  // r
     ActiveEdge edge;
   };
 
@@ -105,27 +105,32 @@ class Reference {
   // --- one block ---------------------------------------------------------------------------------
   void step(const Block& b) {
     switch (phase_) {
-      case Phase::kOff: return compensation_off(b);
-      case Phase::kApproach: return waiting_for_contour(b);
-      case Phase::kActive: return compensation_active(b);
+      case Phase::kOff:
+        return compensation_off(b);
+      case Phase::kApproach:
+        return waiting_for_contour(b);
+      case Phase::kActive:
+        return compensation_active(b);
     }
   }
 
   void run_uncompensated(const Block& b) {
-    if (b.is_arc()) throw UnsupportedError(b.words.line, "circular interpolation G2/G3");
+    if (b.is_arc())
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "circular interpolation G2/G3");
     emit_line(b, at(b.start), at(b.end), OriginKind::kProgrammed);
   }
 
   // TRC-SEL-*: may this block select compensation?
   void compensation_off(const Block& b) {
     if (b.state.side == Side::kOff) return run_uncompensated(b);
-    if (b.is_arc()) return raise(10753, b);              // TRC-SEL-2
-    if (!b.programs_plane_axis()) {                      // TRC-SEL-4
+    if (b.is_arc()) return raise(10753, b);  // TRC-SEL-2
+    if (!b.programs_plane_axis()) {          // TRC-SEL-4
       decide("TRC-SEL-4", b.words.line, "no-plane-axis");
       return run_uncompensated(b);
     }
-    if (b.state.tool == 0) return raise(10750, b);       // TRC-SEL-6
-    if (b.state.edge == 0) {                             // TRC-SEL-5
+    if (b.state.tool == 0) return raise(10750, b);  // TRC-SEL-6
+    if (b.state.edge == 0) {                        // TRC-SEL-5
       decide("TRC-SEL-5", b.words.line, "d0");
       if (!d0_noticed_) sink_.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
       d0_noticed_ = true;
@@ -138,16 +143,22 @@ class Reference {
   // TRC-SEL-1: the selection block; TRC-RADIUS-1/2: effective radius and side.
   void select(const Block& b) {
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-      throw UnsupportedError(b.words.line, "KONTC/KONTT approach (needs polynomial output)");
-    if (b.state.approach == ApproachMode::kKont) throw UnsupportedError(b.words.line, "KONT approach");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+    if (b.state.approach == ApproachMode::kKont)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONT approach");
+    // TRC-SEL-3: a single programmed plane axis was completed by the reader (NC-POS-1).
     decide("TRC-SEL-1", b.words.line, "selected");
     Decimal effective = b.state.effective_radius();
     decide("TRC-RADIUS-2", b.words.line,
-           effective.sign() < 0 ? "negative" : effective.sign() == 0 ? "zero" : "positive");
+           effective.sign() < 0    ? "negative"
+           : effective.sign() == 0 ? "zero"
+                                   : "positive");
     int s = b.state.side == Side::kLeft ? 1 : -1;
     if (effective.sign() < 0) s = -s;  // TRC-RADIUS-2: a negative radius swaps G41 and G42
     Decimal r = effective.sign() < 0 ? -effective : effective;
-    comp_ = Compensation{b.state.plane, plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
+    comp_ = Compensation{b.state.plane,          plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
                          ActiveEdge::of(b.state)};
     selection_ = &b;
     dummies_.clear();
@@ -167,14 +178,21 @@ class Reference {
       raise(10757, b);
       return false;
     }
-    if (b.is_arc()) throw UnsupportedError(b.words.line, "circular interpolation G2/G3 with compensation active");
+    if (b.is_arc())
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "circular interpolation G2/G3 with compensation active");
     if (b.state.side != comp_->side)
-      throw UnsupportedError(b.words.line, "change of compensation side G41/G42 without G40");
-    if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "change of compensation side G41/G42 without G40");
+    if (b.words.side)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "re-selection of G41/G42 while compensation is active");
     if (!(ActiveEdge::of(b.state) == comp_->edge))
-      throw UnsupportedError(b.words.line, "change of tool, D number or OFFN while compensation is active");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "change of tool, D number or OFFN while compensation is active");
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-      throw UnsupportedError(b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT approach (needs polynomial output)");
     return true;
   }
 
@@ -208,7 +226,7 @@ class Reference {
       return compensation_off(b);
     }
     if (!still_compensable(b)) return;
-    if (!b.moves_in_plane()) return hold_back(b);
+    if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
     approach_norm(b);
   }
 
@@ -241,7 +259,7 @@ class Reference {
       }
       return deselect_norm(b);
     }
-    if (!b.moves_in_plane()) return hold_back(b);
+    if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
     corner(b);
   }
 
@@ -358,14 +376,14 @@ class Reference {
   void end_of_program() {
     if (phase_ == Phase::kApproach) {
       decide("TRC-END-1", selection_->words.line, "no-contour");
-      sink_.notice({selection_->words.line, "TRC-END-1",
-                    "compensation selected but no block with motion in the plane follows"});
+      sink_.notice(
+          {selection_->words.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
       emit_line(*selection_, at(selection_->start), at(selection_->end), OriginKind::kProgrammed);
       run_held_back_uncompensated();
     } else if (phase_ == Phase::kActive) {
       decide("TRC-END-1", open_->line, "active-at-end");
-      sink_.notice({open_->line, "TRC-END-1",
-                    "program ends with compensation active: last block ends at its normal point"});
+      sink_.notice(
+          {open_->line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
       Point end = equidistant_point<Kernel>(open_->b, open_->normal, comp_->side_radius);
       if (!close_open(end, FT(0), *open_block_)) return;
       run_held_back(end);

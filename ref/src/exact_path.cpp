@@ -51,7 +51,8 @@ void ExactPath::check(ExactCheckReport& report) const {
       for (const ExactPoint* p : {&e.start, &e.end}) {
         ++report.offset_endpoints_checked;
         if (CGAL::determinant(l.d, p->plane(e.axes) - l.a) != e.side_radius * l.length)
-          report.failures.push_back(fmt::format("offset element {} of line {}: end point not at distance r", i, l.line));
+          report.failures.push_back(
+              fmt::format("offset element {} of line {}: end point not at distance r", i, l.line));
       }
     }
     if (e.centre) {
@@ -59,7 +60,8 @@ void ExactPath::check(ExactCheckReport& report) const {
       ++report.circles_checked;
       FT r2 = e.side_radius * e.side_radius;
       Point c = e.centre->plane(e.axes);
-      if (CGAL::squared_distance(e.start.plane(e.axes), c) != r2 || CGAL::squared_distance(e.end.plane(e.axes), c) != r2)
+      if (CGAL::squared_distance(e.start.plane(e.axes), c) != r2 ||
+          CGAL::squared_distance(e.end.plane(e.axes), c) != r2)
         report.failures.push_back(fmt::format("transition circle {}: end point not at distance r", i));
     }
     if (i > 0) {

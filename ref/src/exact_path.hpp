@@ -21,7 +21,7 @@ struct ExactPoint {
 
 class ExactPath {
  public:
-  PathPoint output(const ExactPoint& p) const;     // rounded once, for the shared output model
+  PathPoint output(const ExactPoint& p) const;  // rounded once, for the shared output model
   bool same(const ExactPoint& a, const ExactPoint& b) const;
   FT distance(const ExactPoint& a, const ExactPoint& b) const;
 

@@ -12,7 +12,9 @@ FT leaf(const Decimal& d) {
   return FT(CORE::BigInt(units_of(d).get_mpz_t()));
 }
 
-Point plane_point(const Point3& p, PlaneAxes axes) { return Point(leaf(coord(p, axes.abscissa)), leaf(coord(p, axes.ordinate))); }
+Point plane_point(const Point3& p, PlaneAxes axes) {
+  return Point(leaf(coord(p, axes.abscissa)), leaf(coord(p, axes.ordinate)));
+}
 
 namespace {
 // Units (10^-9 mm) to millimetres, rounded once to the nearest output value.

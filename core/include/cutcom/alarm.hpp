@@ -11,8 +11,8 @@ namespace cutcom {
 struct AlarmInfo {
   int number;
   std::string_view text;
-  std::string_view clause;   // spec clause that raises it
-  bool number_confirmed;     // false: number from the diagnostics list, not from the retrieved manual pages
+  std::string_view clause;  // spec clause that raises it
+  bool number_confirmed;    // false: number from the diagnostics list, not from the retrieved manual pages
 };
 
 // nullptr for a number not in the catalogue.
@@ -21,10 +21,10 @@ const AlarmInfo* find_alarm(int number);
 // An alarm raised while running a program; it stops the program (the path before it is kept).
 struct Alarm {
   int number = 0;
-  int line = 0;                         // 1-based source line of the block that raised it
-  std::optional<std::int64_t> block;    // its N number, if programmed
+  int line = 0;                       // 1-based source line of the block that raised it
+  std::optional<std::int64_t> block;  // its N number, if programmed
   std::string_view clause;
-  std::string text;                     // catalogue text, completed with the block
+  std::string text;  // catalogue text, completed with the block
 };
 
 Alarm make_alarm(int number, int line, std::optional<std::int64_t> block);

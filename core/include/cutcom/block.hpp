@@ -62,10 +62,10 @@ struct BlockWords {
   static constexpr int kMaxAux = 10;
   static constexpr int kMaxToolData = 4;
 
-  int line = 0;                 // 1-based source line
-  int word_count = 0;           // 0: blank or comment-only line
-  Opt<std::int64_t> number;     // N number
-  std::array<AxisWord, 3> axis; // X Y Z
+  int line = 0;                    // 1-based source line
+  int word_count = 0;              // 0: blank or comment-only line
+  Opt<std::int64_t> number;        // N number
+  std::array<AxisWord, 3> axis;    // X Y Z
   std::array<AxisWord, 3> centre;  // I J K
   Opt<Decimal> cr;
 
@@ -89,7 +89,7 @@ struct BlockWords {
   Opt<Decimal> offn;
   Opt<Decimal> disc;
   Opt<Decimal> disr;
-  AxisWord discl;   // DISCL= / DISCL=AC() (IC() not allowed)
+  AxisWord discl;  // DISCL= / DISCL=AC() (IC() not allowed)
   AxisWord disrp;
   Opt<Decimal> fad;
   FadMode fad_mode = FadMode::kModal;
@@ -120,15 +120,15 @@ struct ModalState {
   FeedType feed_type = FeedType::kG94;
   PathMode path_mode = PathMode::kG60;
   Decimal feed;
-  std::int64_t tool = 0;   // 0: no tool active
-  std::int64_t edge = 0;   // 0: D0, no edge active
+  std::int64_t tool = 0;  // 0: no tool active
+  std::int64_t edge = 0;  // 0: D0, no edge active
   Decimal offn;
   // Edge data captured when T or D was programmed (spec TOOL-EDGE-2).
-  Decimal edge_radius;   // $TC_DP6
-  Decimal edge_wear;     // $TC_DP15
+  Decimal edge_radius;  // $TC_DP6
+  Decimal edge_wear;    // $TC_DP15
   bool edge_defined = false;
 
-  // TOOL-RADIUS-1: effective radius = $TC_DP6 + $TC_DP15 + OFFN (may be negative).
+  // TRC-RADIUS-1: effective radius = $TC_DP6 + $TC_DP15 + OFFN (may be negative).
   Decimal effective_radius() const { return edge_radius + edge_wear + offn; }
 };
 
@@ -138,9 +138,12 @@ struct PlaneAxes {
 };
 constexpr PlaneAxes plane_axes(Plane p) {
   switch (p) {
-    case Plane::kG17: return {0, 1, 2};
-    case Plane::kG18: return {2, 0, 1};
-    case Plane::kG19: return {1, 2, 0};
+    case Plane::kG17:
+      return {0, 1, 2};
+    case Plane::kG18:
+      return {2, 0, 1};
+    case Plane::kG19:
+      return {1, 2, 0};
   }
   return {0, 1, 2};
 }

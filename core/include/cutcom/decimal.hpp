@@ -21,7 +21,11 @@ class Decimal {
   static constexpr Int128 kMaxUnits = Int128(1'000'000'000'000) * kUnitsPerOne;
 
   constexpr Decimal() = default;
-  static constexpr Decimal from_units(Int128 units) { Decimal d; d.units_ = units; return d; }
+  static constexpr Decimal from_units(Int128 units) {
+    Decimal d;
+    d.units_ = units;
+    return d;
+  }
   static constexpr Decimal from_int(std::int64_t v) { return from_units(Int128(v) * kUnitsPerOne); }
 
   // Why parsing fails, for the reader's error message.
@@ -46,7 +50,7 @@ class Decimal {
   friend constexpr Decimal operator-(Decimal a) { return from_units(-a.units_); }
   friend constexpr bool operator==(Decimal a, Decimal b) = default;
   friend constexpr std::strong_ordering operator<=>(Decimal a, Decimal b) {
-    return a.units_ < b.units_ ? std::strong_ordering::less
+    return a.units_ < b.units_   ? std::strong_ordering::less
            : a.units_ > b.units_ ? std::strong_ordering::greater
                                  : std::strong_ordering::equal;
   }

@@ -10,7 +10,8 @@ namespace cutcom {
 // A program construct the engines do not implement yet: named with its line, never run wrongly.
 class UnsupportedError : public InputError {
  public:
-  UnsupportedError(int line, const std::string& what) : InputError(line, 1, what + " (not supported by this version of cutcom)") {}
+  UnsupportedError(int line, const std::string& what)
+      : InputError(line, 1, what + " (not supported by this version of cutcom)") {}
 };
 
 // The effective radius and the edge it came from; a change while active is a D change (ruling 30).

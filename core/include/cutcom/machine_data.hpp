@@ -23,14 +23,14 @@ struct MachineData {
   static constexpr int kMaxCheckBlocks = 50;
   static constexpr int kMaxDummyBlocks = 50;
 
-  int wab_maxnum_dummy_blocks = 5;            // MD20202
+  int wab_maxnum_dummy_blocks = 5;                                    // MD20202
   Decimal wab_clearance_tolerance = Decimal::from_units(10'000'000);  // MD20204, 0.01 mm
   Decimal cutcom_corner_limit = Decimal::from_int(100);               // MD20210, degrees
   Decimal cutcom_max_disc = Decimal::from_int(50);                    // MD20220
   Decimal cutcom_curve_insert_limit = Decimal::from_int(10);          // MD20230, degrees
-  int cutcom_maxnum_check_blocks = 3;         // MD20240
-  int cutcom_maxnum_dummy_blocks = 5;         // MD20250
-  EdgeStrategy group48_reset = EdgeStrategy::kG462;  // MD20150 $MC_GCODE_RESET_VALUES[47]
+  int cutcom_maxnum_check_blocks = 3;                                 // MD20240
+  int cutcom_maxnum_dummy_blocks = 5;                                 // MD20250
+  EdgeStrategy group48_reset = EdgeStrategy::kG462;                   // MD20150 $MC_GCODE_RESET_VALUES[47]
 
   // Sets one datum from NAME=VALUE text; NAME is "MD20204" or "$MC_WAB_CLEARANCE_TOLERANCE".
   void set(std::string_view name, std::string_view value);
@@ -43,12 +43,12 @@ struct MachineData {
 
 // Descriptions for documentation and `cutcom md`.
 struct MachineDatumInfo {
-  std::string_view id;        // "MD20204"
-  std::string_view name;      // "$MC_WAB_CLEARANCE_TOLERANCE"
+  std::string_view id;    // "MD20204"
+  std::string_view name;  // "$MC_WAB_CLEARANCE_TOLERANCE"
   std::string_view unit;
   std::string_view range;
   std::string_view meaning;
-  std::string_view clause;    // spec clause defining the default
+  std::string_view clause;  // spec clause defining the default
 };
 const std::vector<MachineDatumInfo>& machine_data_catalogue();
 std::string machine_datum_value(const MachineData& md, std::string_view id);

@@ -9,9 +9,9 @@
 namespace cutcom {
 
 struct Decision {
-  std::string_view clause;   // e.g. "TRC-CORNER-1"
-  int line = 0;              // source line of the block the decision is about
-  std::string_view branch;   // e.g. "outer", "inner", "tangent"
+  std::string_view clause;  // e.g. "TRC-CORNER-1"
+  int line = 0;             // source line of the block the decision is about
+  std::string_view branch;  // e.g. "outer", "inner", "tangent"
   bool has_margin = false;
   double margin = 0;         // fast: estimate in the clause's margin unit
   std::string margin_exact;  // ref: the exact margin, as a decimal with its sign exact
