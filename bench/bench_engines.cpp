@@ -1,0 +1,154 @@
+// Time per block of both engines on the bundled example, and fast's throughput and allocations
+// on long programs generated on the fly (the text is never held in memory).
+#include <benchmark/benchmark.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <fstream>
+#include <new>
+#include <sstream>
+#include <streambuf>
+#include <string>
+
+#include "cutcom/fast/engine.hpp"
+#include "cutcom/ref/engine.hpp"
+
+// Counting allocations: the steady state of fast must not allocate per block.
+static std::atomic<long> g_allocations{0};
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+using namespace cutcom;
+
+class NullSink : public PathSink {
+ public:
+  void element(const PathElement&) override { ++elements; }
+  long elements = 0;
+};
+
+// A compensated zig-zag of `blocks` blocks (inner and outer corners, G450 circles, infeeds),
+// produced line by line as the reader asks for it.
+class ZigZagProgram : public std::streambuf {
+ public:
+  explicit ZigZagProgram(long blocks) : total_(blocks) {}
+
+ protected:
+  int_type underflow() override {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    if (n_ > total_ + 3) return traits_type::eof();
+    line_ = next_line();
+    setg(line_.data(), line_.data(), line_.data() + line_.size());
+    return traits_type::to_int_type(*gptr());
+  }
+
+ private:
+  std::string next_line() {
+    long k = n_++;
+    if (k == 0) return "$TC_DP6[1,1]=2\n";
+    if (k == 1) return "N1 G0 X-10 Y-10 T1 D1\n";
+    if (k == 2) return "N2 G1 G41 X0 Y0 F500\n";
+    if (k == total_ + 3) return "G40 X-10 Y-10\n";
+    if (k % 7 == 0) return "Z-1 M8\n";  // a block without plane motion
+    long i = k - 3;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "X%ld.5 Y%d\n", 10 * (i + 1), i % 2 == 0 ? 20 : 0);
+    return buf;
+  }
+  long total_, n_ = 0;
+  std::string line_;
+};
+
+std::string example_text() {
+  std::ifstream in(CUTCOM_EXAMPLE);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int example_blocks(const std::string& text) {
+  std::istringstream in(text);
+  ProgramReader r(in);
+  Block b;
+  int n = 0;
+  while (r.next(b)) ++n;
+  return n;
+}
+
+void BM_ExampleFast(benchmark::State& state) {
+  std::string text = example_text();
+  MachineData md;
+  for (auto _ : state) {
+    std::istringstream in(text);
+    ProgramReader reader(in, md.initial_state());
+    NullSink sink;
+    fast::run(reader, md, sink);
+    benchmark::DoNotOptimize(sink.elements);
+  }
+  state.SetItemsProcessed(state.iterations() * example_blocks(text));
+  state.counters["us/block"] =
+      benchmark::Counter(static_cast<double>(example_blocks(text)),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ExampleFast)->Unit(benchmark::kMicrosecond);
+
+void BM_ExampleRef(benchmark::State& state) {
+  std::string text = example_text();
+  MachineData md;
+  for (auto _ : state) {
+    std::istringstream in(text);
+    ProgramReader reader(in, md.initial_state());
+    NullSink sink;
+    ref::run(reader, md, sink);
+    benchmark::DoNotOptimize(sink.elements);
+  }
+  state.SetItemsProcessed(state.iterations() * example_blocks(text));
+  state.counters["us/block"] =
+      benchmark::Counter(static_cast<double>(example_blocks(text)),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ExampleRef)->Unit(benchmark::kMicrosecond);
+
+// fast on long programs: blocks per second, and allocations per block (0 in the steady state:
+// the count does not grow with the program length).
+void BM_FastLongProgram(benchmark::State& state) {
+  MachineData md;
+  long allocations = 0;
+  for (auto _ : state) {
+    ZigZagProgram text(state.range(0));
+    std::istream in(&text);
+    ProgramReader reader(in, md.initial_state());
+    NullSink sink;
+    long before = g_allocations.load();
+    fast::run(reader, md, sink);
+    allocations = g_allocations.load() - before;
+    benchmark::DoNotOptimize(sink.elements);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+  state.counters["allocations"] = static_cast<double>(allocations);
+}
+BENCHMARK(BM_FastLongProgram)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void BM_RefLongProgram(benchmark::State& state) {
+  MachineData md;
+  for (auto _ : state) {
+    ZigZagProgram text(state.range(0));
+    std::istream in(&text);
+    ProgramReader reader(in, md.initial_state());
+    NullSink sink;
+    ref::run(reader, md, sink);
+    benchmark::DoNotOptimize(sink.elements);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_RefLongProgram)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
