@@ -4,9 +4,11 @@
 
 namespace cutcom::props {
 
-std::string micrometres(std::int64_t um) {
-  std::uint64_t a = um < 0 ? static_cast<std::uint64_t>(-(um + 1)) + 1 : static_cast<std::uint64_t>(um);
-  return fmt::format("{}{}.{:03}", um < 0 ? "-" : "", a / 1000, a % 1000);
+std::string fixed(std::int64_t units, int decimals) {
+  std::uint64_t a = units < 0 ? static_cast<std::uint64_t>(-(units + 1)) + 1 : static_cast<std::uint64_t>(units);
+  std::uint64_t one = 1;
+  for (int i = 0; i < decimals; ++i) one *= 10;
+  return fmt::format("{}{}.{:0{}}", units < 0 ? "-" : "", a / one, a % one, decimals);
 }
 
 std::string to_program(const ContourCase& c) {
@@ -14,13 +16,13 @@ std::string to_program(const ContourCase& c) {
   const char* a = c.plane == 17 ? "X" : c.plane == 18 ? "Z" : "Y";
   const char* b = c.plane == 17 ? "Y" : c.plane == 18 ? "X" : "Z";
   const char* h = c.plane == 17 ? "Z" : c.plane == 18 ? "Y" : "X";
-  std::string p = fmt::format("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={}\n", micrometres(c.radius_um));
+  std::string p = fmt::format("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={}\n", fixed(c.radius_um, c.decimals));
   int n = 10;
-  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}0 T1 D1\n", n, c.plane, a, micrometres(c.start_x), b,
-                   micrometres(c.start_y), h);
+  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}0 T1 D1\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
+                   fixed(c.start_y, c.decimals), h);
   n += 10;
-  p += fmt::format("N{} G1 {} {}{} {}{} F500\n", n, c.right ? "G42" : "G41", a, micrometres(c.first_x), b,
-                   micrometres(c.first_y));
+  p += fmt::format("N{} G1 {} {}{} {}{} F500\n", n, c.right ? "G42" : "G41", a, fixed(c.first_x, c.decimals), b,
+                   fixed(c.first_y, c.decimals));
   std::int64_t x = c.first_x, y = c.first_y;
   int depth = 0;
   for (const Step& s : c.steps) {
@@ -30,10 +32,11 @@ std::string to_program(const ContourCase& c) {
     }
     x += s.dx, y += s.dy;
     n += 10;
-    p += fmt::format("N{} {}{} {}{} {}\n", n, a, micrometres(x), b, micrometres(y), s.g451 ? "G451" : "G450");
+    p += fmt::format("N{} {}{} {}{} {}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
+                     s.g451 ? "G451" : "G450");
   }
   n += 10;
-  p += fmt::format("N{} G40 {}{} {}{}\n", n, a, micrometres(c.end_x), b, micrometres(c.end_y));
+  p += fmt::format("N{} G40 {}{} {}{}\n", n, a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));
   p += fmt::format("N{} M30\n", n + 10);
   return p;
 }

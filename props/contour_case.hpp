@@ -1,5 +1,5 @@
 // A generated contour program: what the generators draw and how it is written as NC text.
-// Coordinates are integers in micrometres, so every program is exact decimal text.
+// Coordinates are integers (micrometres unless `decimals` says otherwise): exact decimal text.
 #pragma once
 
 #include <cstdint>
@@ -23,12 +23,13 @@ struct ContourCase {
   std::vector<Step> steps;                // the contour blocks
   std::int64_t end_x = 0, end_y = 0;      // end point of the G40 block
   int plane = 17;                         // 17, 18 or 19
+  int decimals = 3;                       // coordinates and radius in units of 10^-decimals mm
   int md20210 = 100, md20230 = 10;        // degrees
   std::string style;                      // which generator made it (for RC_TAG)
 };
 
 std::string to_program(const ContourCase& c);
-std::string micrometres(std::int64_t um);  // "12.345", "-0.001"
+std::string fixed(std::int64_t units, int decimals);  // fixed(12345, 3) = "12.345"
 
 void showValue(const ContourCase& c, std::ostream& os);
 

@@ -95,7 +95,8 @@ class Reference {
     PathElement e;
     e.type = ElementType::kLine, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
     e.start = a, e.end = b, e.origin = origin(owner, kind);
-    path.add_line(from, to, offset_of, comp_ ? comp_->side_radius : FT(0), comp_ ? comp_->axes : PlaneAxes{0, 1, 2});
+    path.add_line(owner.words.line, from, to, offset_of, comp_ ? comp_->side_radius : FT(0),
+                  comp_ ? comp_->axes : PlaneAxes{0, 1, 2});
     sink_.element(e);
   }
 
@@ -341,7 +342,7 @@ class Reference {
       el.ccw = comp_->s < 0;  // around the outside of the corner
       el.origin = origin(*open_block_, OriginKind::kTransitionCircle);
       el.origin.next_line = next_block.words.line, el.origin.next_block = next_block.words.number;
-      path.add_circle(a, e, at({vertex, h}), comp_->side_radius, comp_->axes);
+      path.add_circle(open_block_->words.line, a, e, at({vertex, h}), comp_->side_radius, comp_->axes);
       sink_.element(el);
     }
     open(next_block, next, to, FT(0));
@@ -407,6 +408,13 @@ class Reference {
 };
 
 }  // namespace
+
+bool run_exact(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactPath& path) {
+  Reference engine(md, sink);
+  bool ok = engine.run(reader);
+  path = std::move(engine.path);
+  return ok;
+}
 
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
   Reference engine(md, sink);

@@ -30,16 +30,16 @@ FT ExactPath::distance(const ExactPoint& a, const ExactPoint& b) const {
   return CGAL::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-void ExactPath::add_line(const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of,
+void ExactPath::add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of,
                          const FT& side_radius, PlaneAxes axes) {
-  Element e{from, to, axes, std::nullopt, std::nullopt, side_radius};
+  Element e{line, from, to, axes, std::nullopt, std::nullopt, side_radius};
   if (offset_of) e.offset_of = *offset_of;
   elements_.push_back(std::move(e));
 }
 
-void ExactPath::add_circle(const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
+void ExactPath::add_circle(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
                            const FT& side_radius, PlaneAxes axes) {
-  elements_.push_back(Element{from, to, axes, std::nullopt, centre, side_radius});
+  elements_.push_back(Element{line, from, to, axes, std::nullopt, centre, side_radius});
 }
 
 void ExactPath::check(ExactCheckReport& report) const {

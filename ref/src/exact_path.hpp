@@ -26,21 +26,29 @@ class ExactPath {
   FT distance(const ExactPoint& a, const ExactPoint& b) const;
 
   // Records an output line; `offset_of` names the programmed block for an equidistant.
-  void add_line(const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of, const FT& side_radius,
-                PlaneAxes axes);
-  void add_circle(const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre, const FT& side_radius,
-                  PlaneAxes axes);
+  void add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of,
+                const FT& side_radius, PlaneAxes axes);
+  void add_circle(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
+                  const FT& side_radius, PlaneAxes axes);
   void check(ExactCheckReport& report) const;
 
- private:
   struct Element {
+    int line = 0;  // source line of the block the element belongs to
     ExactPoint start, end;
     PlaneAxes axes{0, 1, 2};
     std::optional<ContourLine> offset_of;  // equidistant of this programmed line
     std::optional<ExactPoint> centre;      // transition circle
     FT side_radius;
   };
+  const std::vector<Element>& elements() const { return elements_; }
+
+ private:
   std::vector<Element> elements_;
 };
 
+}  // namespace cutcom::ref
+
+namespace cutcom::ref {
+// Runs a program and hands over ref's exact path (metamorphic checks).
+bool run_exact(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactPath& path);
 }  // namespace cutcom::ref

@@ -3,6 +3,7 @@
 // is CGAL-free so that the CLI, tests and props can include it.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,22 @@ struct ExactCheckReport {
   std::vector<std::string> failures;
 };
 
-// Reads the whole program, then runs it. Returns false if an alarm stopped it.
+// An exact affine map of workpiece coordinates: x' = (m x) / denominator + offset.
+struct AffineMap {
+  std::array<std::array<long, 3>, 3> m{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  long denominator = 1;
+  std::array<Decimal, 3> offset{};
+};
+
+// PROP-META-*: runs both programs and checks exactly (before rounding) that the second's path is
+// the image of the first's under `map`, element by element, with the same decisions and alarms.
+// Elements of source lines before `first_line` are not compared (the first move starts at the
+// implicit position X0 Y0 Z0, which is no part of the program and is not mapped).
+// Returns what differs, or an empty string.
+std::string exact_image_mismatch(const std::string& original, const std::string& mapped, const MachineData& md,
+                                 const AffineMap& map, int first_line = 1);
+
+// Reads the program block by block and runs it. Returns false if an alarm stopped it.
 // With `checks`, also verifies the exact path (costs exact zero tests: milliseconds each).
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks = nullptr);
 

@@ -1,0 +1,131 @@
+// Metamorphic properties (PROP-META-*), decided exactly in ref: moving, turning, mirroring or
+// scaling a program, or writing it in another plane, moves the exact tool-centre path the same
+// way and changes no decision.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "generators.hpp"
+#include "run_case.hpp"
+
+namespace cutcom::props {
+namespace {
+
+// Applies the in-plane map v -> (M v) / den + t to a case. Coordinates move to a finer unit
+// (10^extra, with den dividing 10^extra) so that they stay whole numbers.
+struct PlaneMap {
+  std::int64_t m00 = 1, m01 = 0, m10 = 0, m11 = 1, den = 1;
+  std::int64_t ta = 0, tb = 0;  // translation in the case's units
+  std::int64_t radius_factor = 1;
+  bool mirror = false;
+};
+
+int extra_digits(std::int64_t den) {
+  int e = 0;
+  for (std::int64_t p = 1; p % den != 0; p *= 10) ++e;
+  return e;
+}
+
+std::int64_t pow10(int e) {
+  std::int64_t p = 1;
+  while (e-- > 0) p *= 10;
+  return p;
+}
+
+ContourCase apply(const ContourCase& c, const PlaneMap& f) {
+  ContourCase o = c;
+  int extra = extra_digits(f.den);
+  std::int64_t k = pow10(extra) / f.den;
+  auto lin = [&](std::int64_t a, std::int64_t b, std::int64_t& oa, std::int64_t& ob) {
+    oa = (f.m00 * a + f.m01 * b) * k;
+    ob = (f.m10 * a + f.m11 * b) * k;
+  };
+  auto point = [&](std::int64_t a, std::int64_t b, std::int64_t& oa, std::int64_t& ob) {
+    lin(a, b, oa, ob);
+    oa += f.ta * pow10(extra), ob += f.tb * pow10(extra);
+  };
+  point(c.start_x, c.start_y, o.start_x, o.start_y);
+  point(c.first_x, c.first_y, o.first_x, o.first_y);
+  point(c.end_x, c.end_y, o.end_x, o.end_y);
+  for (std::size_t i = 0; i < c.steps.size(); ++i) lin(c.steps[i].dx, c.steps[i].dy, o.steps[i].dx, o.steps[i].dy);
+  o.radius_um = c.radius_um * f.radius_factor * pow10(extra);
+  o.decimals = c.decimals + extra;
+  if (f.mirror) o.right = !c.right;
+  return o;
+}
+
+// The same map in workpiece coordinates (mm), for ref's exact comparison.
+ref::AffineMap workpiece_map(const PlaneMap& f, int plane, int decimals) {
+  PlaneAxes ax = plane_axes(plane == 17 ? Plane::kG17 : plane == 18 ? Plane::kG18 : Plane::kG19);
+  ref::AffineMap m;
+  m.m = {};
+  auto at = [&](int i, int j) -> long& { return m.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]; };
+  at(ax.abscissa, ax.abscissa) = f.m00, at(ax.abscissa, ax.ordinate) = f.m01;
+  at(ax.ordinate, ax.abscissa) = f.m10, at(ax.ordinate, ax.ordinate) = f.m11;
+  at(ax.applicate, ax.applicate) = f.den;
+  m.denominator = f.den;
+  auto mm = [&](std::int64_t units) { return *Decimal::parse(fixed(units, decimals)).value; };
+  m.offset[static_cast<std::size_t>(ax.abscissa)] = mm(f.ta);
+  m.offset[static_cast<std::size_t>(ax.ordinate)] = mm(f.tb);
+  return m;
+}
+
+void check_image(const ContourCase& c, const PlaneMap& f) {
+  RC_TAG(c.style);
+  ContourCase image = apply(c, f);
+  // Line 4 is the selection block: the first move (line 3) starts at the implicit X0 Y0 Z0.
+  std::string why = ref::exact_image_mismatch(to_program(c), to_program(image), machine_data_of(c),
+                                              workpiece_map(f, c.plane, c.decimals), 4);
+  if (!why.empty()) RC_FAIL(why + "\nimage program:\n" + to_program(image));
+}
+
+// covers: PROP-META-1
+RC_GTEST_PROP(Metamorphic, TranslationMovesThePathExactly, ()) {
+  PlaneMap f;
+  f.ta = *rc::gen::inRange<std::int64_t>(-50000, 50001);
+  f.tb = *rc::gen::inRange<std::int64_t>(-50000, 50001);
+  check_image(*any_contour(), f);
+}
+
+// covers: PROP-META-2
+RC_GTEST_PROP(Metamorphic, RationalRotationTurnsThePathExactly, ()) {
+  // Pythagorean triples with c a power of 5, so the rotated program is still exact decimal text.
+  static const std::int64_t triples[][3] = {{3, 4, 5},   {4, 3, 5},      {7, 24, 25},
+                                            {24, 7, 25}, {117, 44, 125}, {44, 117, 125}};
+  const auto& t = triples[*rc::gen::inRange(0, 6)];
+  int sign = *rc::gen::arbitrary<bool>() ? -1 : 1;
+  PlaneMap f;
+  f.m00 = t[0], f.m01 = -sign * t[1], f.m10 = sign * t[1], f.m11 = t[0], f.den = t[2];
+  check_image(*any_contour(), f);
+}
+
+// covers: PROP-META-3 TRC-EQ-1
+RC_GTEST_PROP(Metamorphic, MirroringSwapsTheSideAndMirrorsThePath, ()) {
+  PlaneMap f;
+  f.m00 = -1, f.mirror = true;
+  check_image(*any_contour(), f);
+}
+
+// covers: PROP-META-4 TRC-RADIUS-1
+RC_GTEST_PROP(Metamorphic, ScalingContourAndRadiusScalesThePath, ()) {
+  PlaneMap f;
+  std::int64_t k = *rc::gen::element<std::int64_t>(2, 3, 10);
+  f.m00 = k, f.m11 = k, f.radius_factor = k;
+  check_image(*any_contour(), f);
+}
+
+// covers: PROP-META-5 NC-PLANE-1
+RC_GTEST_PROP(Metamorphic, SameContourInAnotherPlaneIsThePermutedPath, ()) {
+  ContourCase c = *any_contour();
+  c.plane = 17;
+  ContourCase other = c;
+  other.plane = *rc::gen::element(18, 19);
+  // G17 (X,Y,Z) = plane (a,b,h); in G18 the same (a,b,h) is (Z,X,Y), in G19 (Y,Z,X).
+  ref::AffineMap m;
+  m.m = other.plane == 18 ? std::array<std::array<long, 3>, 3>{{{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}}
+                          : std::array<std::array<long, 3>, 3>{{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}};
+  std::string why = ref::exact_image_mismatch(to_program(c), to_program(other), machine_data_of(c), m);
+  if (!why.empty()) RC_FAIL(why + "\nother program:\n" + to_program(other));
+}
+
+}  // namespace
+}  // namespace cutcom::props
