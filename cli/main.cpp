@@ -118,7 +118,7 @@ int list_machine_data(const std::vector<std::string>& assignments) {
 }
 
 int list_alarms() {
-  for (int n : {10750, 10751, 10753, 10754, 10757, 10762, 17181}) {
+  for (int n : {10750, 10751, 10753, 10754, 10757, 10762, 14040, 17181}) {
     const cutcom::AlarmInfo* a = cutcom::find_alarm(n);
     std::cout << fmt::format("{}  {:<96} [{}]{}\n", a->number, a->text, a->clause,
                              a->number_confirmed ? "" : " (number not confirmed by the manual pages)");

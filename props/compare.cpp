@@ -22,8 +22,8 @@ double distance(const PathPoint& a, const PathPoint& b) {
 
 Conditioning conditioning_of(const std::vector<Block>& program) {
   Conditioning c;
-  double prev_a = 0, prev_b = 0;
-  bool have_prev = false;
+  double prev_a = 0, prev_b = 0;  // end tangent of the previous traversing block
+  bool have_prev = false, prev_arc = false;
   for (const Block& b : program) {
     PlaneAxes ax = plane_axes(b.state.plane);
     for (const Point3* p : {&b.start, &b.end})
@@ -31,15 +31,29 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
           std::max({c.size, std::fabs(p->x.to_double()), std::fabs(p->y.to_double()), std::fabs(p->z.to_double())});
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
     if (!b.moves_in_plane()) continue;
-    double da = coord(b.end, ax.abscissa).to_double() - coord(b.start, ax.abscissa).to_double();
-    double db = coord(b.end, ax.ordinate).to_double() - coord(b.start, ax.ordinate).to_double();
-    double len = std::hypot(da, db);
-    c.shortest = std::min(c.shortest, len);
-    if (have_prev) {
-      double cosine = (prev_a * da + prev_b * db) / (std::hypot(prev_a, prev_b) * len);
-      c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
+    auto at = [&](const Point3& p) {
+      return std::pair{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()};
+    };
+    auto [sa, sb] = at(b.start);
+    auto [ea, eb] = at(b.end);
+    double ta = ea - sa, tb = eb - sb, ua = ta, ub = tb;  // start and end tangents
+    double scale = std::hypot(ta, tb);
+    if (b.is_arc() && b.centre) {
+      auto [ca, cb] = at(*b.centre);
+      double sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
+      ta = -sense * (sb - cb), tb = sense * (sa - ca);
+      ua = -sense * (eb - cb), ub = sense * (ea - ca);
+      double radius = std::hypot(sa - ca, sb - cb);
+      scale = scale > 0 ? std::min(scale, radius) : radius;  // a full circle has no chord
     }
-    prev_a = da, prev_b = db, have_prev = true;
+    if (scale > 0) c.shortest = std::min(c.shortest, scale);
+    if (have_prev) {
+      double cosine = (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb));
+      if (std::isfinite(cosine)) c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
+      if (std::isfinite(cosine) && (b.is_arc() || prev_arc))
+        c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
+    }
+    prev_a = ua, prev_b = ub, have_prev = true, prev_arc = b.is_arc();
   }
   c.size = std::max(c.size, c.radius);
   return c;
@@ -48,7 +62,7 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
 Tolerance Tolerance::for_program(const Conditioning& c) {
   Tolerance t;
   double leverage = c.size / c.shortest;  // how far a rounded input tilts the shortest direction
-  t.coordinate = 64 * kUnitRoundoff * (c.size + c.radius * leverage * c.corner);
+  t.coordinate = 64 * kUnitRoundoff * (c.size + c.radius * leverage * c.corner + c.size * c.crossing);
   t.sine = 16 * kUnitRoundoff * leverage;
   t.degrees = t.sine * 180 / 3.14159265358979323846;
   return t;

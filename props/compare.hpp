@@ -16,6 +16,7 @@ struct Conditioning {
   double shortest = 1;  // d_min: shortest in-plane block, mm
   double radius = 0;    // |r|, mm
   double corner = 1;    // kappa: largest 1/(1 + cos phi) over the contour's corners
+  double crossing = 1;  // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
 };
 Conditioning conditioning_of(const std::vector<Block>& program);
 

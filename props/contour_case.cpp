@@ -28,15 +28,24 @@ std::string to_program(const ContourCase& c) {
   for (const Step& s : c.steps) {
     for (int k = 0; k < s.dummies; ++k) {
       n += 10;
-      p += k % 2 == 0 ? fmt::format("N{} {}-{}\n", n, h, ++depth) : fmt::format("N{} M8\n", n);
+      p += k % 2 == 0 ? fmt::format("N{} G1 {}-{}\n", n, h, ++depth) : fmt::format("N{} M8\n", n);
     }
     x += s.dx, y += s.dy;
     n += 10;
-    p += fmt::format("N{} {}{} {}{} {}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
-                     s.g451 ? "G451" : "G450");
+    if (s.arc) {
+      // Centre words of the plane: I/J (G17), K/I (G18), J/K (G19).
+      const char* ci = c.plane == 17 ? "I" : c.plane == 18 ? "K" : "J";
+      const char* cj = c.plane == 17 ? "J" : c.plane == 18 ? "I" : "K";
+      p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
+                       fixed(y, c.decimals), ci, fixed(s.ci, c.decimals), cj, fixed(s.cj, c.decimals),
+                       s.g451 ? "G451" : "G450");
+    } else {
+      p += fmt::format("N{} G1 {}{} {}{} {}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
+                       s.g451 ? "G451" : "G450");
+    }
   }
   n += 10;
-  p += fmt::format("N{} G40 {}{} {}{}\n", n, a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));
+  p += fmt::format("N{} G1 G40 {}{} {}{}\n", n, a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));
   p += fmt::format("N{} M30\n", n + 10);
   return p;
 }

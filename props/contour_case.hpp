@@ -13,6 +13,9 @@ struct Step {
   std::int64_t dx = 0, dy = 0;  // in-plane move of one contour block, um
   bool g451 = false;            // corner mode programmed in this block
   int dummies = 0;              // blocks without plane motion before this block (Z moves, M functions)
+  bool arc = false;             // G2/G3 instead of G1
+  bool ccw = false;             // G3
+  std::int64_t ci = 0, cj = 0;  // centre relative to the block's start (I, J in the plane)
 };
 
 struct ContourCase {

@@ -32,6 +32,9 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefNearReversals, ()) { check_agreemen
 // covers: PROP-DIFF-1 TRC-ELEMENT-1
 RC_GTEST_PROP(Differential, FastAgreesWithRefOnVanishingElements, ()) { check_agreement(*notch()); }
 
+// covers: PROP-DIFF-1 TRC-ARC-EQ-1 TRC-ARC-CORNER-1 TRC-ARC-CORNER-2 TRC-ARC-ELEMENT-1 ARC-CENTRE-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefWithCircles, ()) { check_agreement(*with_circles()); }
+
 // covers: PROP-CONT-1 PATH-CONT-1
 RC_GTEST_PROP(Fast, PathIsContinuousAndFinite, ()) {
   ContourCase c = *any_contour();

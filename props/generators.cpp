@@ -1,6 +1,7 @@
 #include "generators.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 namespace cutcom::props {
 
@@ -123,6 +124,59 @@ rc::Gen<ContourCase> notch() {
     common(c);
     c.right = false;  // G41 with this meander puts the tool inside the turns
     c.plane = 17;
+    return c;
+  });
+}
+
+rc::Gen<ContourCase> with_circles() {
+  return rc::gen::exec([] {
+    ContourCase c;
+    c.style = "circles";
+    c.radius_um = radius_um();
+    // Rotations with integer results on multiples of the hypotenuse (Pythagorean triples),
+    // quarter and half turns, and the full turn.
+    static const std::int64_t rotations[][3] = {{3, 4, 5},    {4, 3, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25},
+                                                {20, 21, 29}, {0, 1, 1}, {-1, 0, 1},  {1, 0, 1},   {-3, 4, 5}};
+    std::size_t n = static_cast<std::size_t>(*inRange(1, 7));
+    c.steps.resize(n);
+    std::int64_t px = 1000, py = 0;  // direction of travel at the end of the previous step
+    for (Step& s : c.steps) {
+      int kind = *inRange(0, 5);
+      if (kind == 0) {  // a line
+        s.dx = signed_um(40000), s.dy = signed_um(40000);
+        nonzero(s);
+        px = s.dx, py = s.dy;
+        continue;
+      }
+      const auto& rot = rotations[*inRange(0, 10)];
+      std::int64_t m = rot[0], q = *rc::gen::arbitrary<bool>() ? rot[1] : -rot[1], o = rot[2];
+      std::int64_t u, v;
+      if (kind == 1) {
+        // Tangent to the previous direction: the centre on its normal, turning towards it.
+        std::int64_t g = std::gcd(std::abs(px), std::abs(py));
+        std::int64_t k = *inRange<std::int64_t>(1, 6) * (*rc::gen::arbitrary<bool>() ? 1 : -1);
+        u = -py / g * k, v = px / g * k;
+        while ((std::abs(u) * o > 60000 || std::abs(v) * o > 60000) && (std::abs(u) > 1 || std::abs(v) > 1))
+          u /= 2, v /= 2;
+        if (u == 0 && v == 0) u = 1;
+        s.ccw = k > 0;
+      } else {
+        u = signed_um(8000 / o + 1), v = signed_um(8000 / o + 1);
+        if (u == 0 && v == 0) v = 1;
+        s.ccw = *rc::gen::arbitrary<bool>();
+      }
+      s.arc = true;
+      s.ci = o * u, s.cj = o * v;  // centre relative to the start
+      // End = centre + R (start - centre), R the rotation (m, q) / o: exactly on the circle.
+      std::int64_t rx = -s.ci, ry = -s.cj;
+      s.dx = s.ci + (m * rx - q * ry) / o, s.dy = s.cj + (q * rx + m * ry) / o;
+      if (kind == 4) s.dx += *inRange<std::int64_t>(-3, 4);  // a few um off: the centre is corrected
+      // Direction of travel at the end: sense * perp(end - centre).
+      std::int64_t ex = s.dx - s.ci, ey = s.dy - s.cj;
+      px = s.ccw ? -ey : ey, py = s.ccw ? ex : -ex;
+      if (px == 0 && py == 0) px = 1000;
+    }
+    common(c);
     return c;
   });
 }

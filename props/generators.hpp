@@ -13,6 +13,7 @@ rc::Gen<ContourCase> random_walk();    // free directions and lengths
 rc::Gen<ContourCase> grid_walk();      // multiples of a grid step: exact 45/90 deg corners, ties
 rc::Gen<ContourCase> near_tangent();   // successive directions differ by a few micrometres
 rc::Gen<ContourCase> near_reversal();  // successive directions almost opposite
+rc::Gen<ContourCase> with_circles();   // lines and I/J/K circles: tangent, inner, outer, full
 rc::Gen<ContourCase> notch();          // slots of width exactly 2r: elements of length 0
 
 }  // namespace cutcom::props

@@ -147,3 +147,19 @@ TEST(Reader, BlankAndCommentLinesAreNotBlocks) {
 
 }  // namespace
 }  // namespace cutcom
+
+namespace cutcom {
+namespace {
+
+// covers: NC-ARC-2
+TEST(Reader, BlockWithoutAxesUnderG2IsNoCircle) {
+  auto b = read("G0 X10\nG2 X0 Y-10 I-10 J0\nM8\nF200\nX10 Y0 I0 J10\n");
+  EXPECT_TRUE(b[1].is_arc());
+  EXPECT_FALSE(b[2].is_arc());
+  EXPECT_FALSE(b[3].is_arc());
+  EXPECT_TRUE(b[4].is_arc());                                   // G2 still modal
+  EXPECT_THROW(read("G2 X0 Y-10 I-10 J0\nZ-5\n"), InputError);  // an axis but no circle data
+}
+
+}  // namespace
+}  // namespace cutcom

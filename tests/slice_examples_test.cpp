@@ -234,10 +234,10 @@ TEST(SliceExamples, SelectionAndDeselectionAlarms) {
     std::string text;
     int alarm;
   } cases[] = {
-      {"N10 G1 G41 X0 Y0 F100\nN20 X10\n", 10750},                     // no tool
-      {"N10 T1 D3\nN20 G1 G41 X0 Y0 F100\nN30 X10\n", 17181},          // edge not defined
-      {"$TC_DP6[1,1]=2\nN10 T1 D1\nN20 G2 G41 X10 Y0 CR=5\n", 10753},  // selection in a circle
-      {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G40 G2 X30 CR=5\n", 10754},
+      {"N10 G1 G41 X0 Y0 F100\nN20 X10\n", 10750},                      // no tool
+      {"N10 T1 D3\nN20 G1 G41 X0 Y0 F100\nN30 X10\n", 17181},           // edge not defined
+      {"$TC_DP6[1,1]=2\nN10 T1 D1\nN20 G2 G41 X10 Y0 I5 J0\n", 10753},  // selection in a circle
+      {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G40 G2 X30 I5 J0\n", 10754},
       {"$TC_DP6[1,1]=2\nN10 T1 D1 G1 F1\nN20 G41 X10\nN30 X20\nN40 G18 X30\n", 10757},
   };
   for (const Case& c : cases) {
@@ -355,7 +355,7 @@ TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
       {program("N20 G1 G41 KONT X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},
-      {"N10 G2 X10 Y0 I5 J0\n", 1},
+      {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G41 X20\n"), 6},
   };
   for (const auto& [text, line_no] : cases)
     for (const char* engine : {"fast", "ref"}) {

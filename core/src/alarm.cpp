@@ -17,6 +17,7 @@ constexpr std::array kCatalogue = {
               "TRC-PLANE-1", true},
     AlarmInfo{10762, "too many empty blocks between two traversing blocks with active tool radius compensation",
               "TRC-DUMMY-2", false},
+    AlarmInfo{14040, "error in end point of circle", "ARC-CENTRE-2", false},
     AlarmInfo{17181, "D number not defined for the active tool", "TRC-SEL-7", false},
 };
 }  // namespace

@@ -24,6 +24,9 @@ const std::vector<MachineDatumInfo>& machine_data_catalogue() {
        "blocks examined by predictive contour calculation and collision detection", "MD-20240-1"},
       {"MD20250", "$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS", "blocks", "0 .. 50",
        "blocks without motion in the compensation plane between two compensated blocks", "MD-20250-1"},
+      {"MD21000", "$MC_CIRCLE_ERROR_CONST", "mm", ">= 0",
+       "end point of a circle may miss the circle by this much (or MD21010 x radius)", "MD-21000-1"},
+      {"MD21010", "$MC_CIRCLE_ERROR_FACTOR", "", ">= 0", "circle end point tolerance per mm of radius", "MD-21010-1"},
   };
   return k;
 }
@@ -48,7 +51,7 @@ const MachineDatumInfo& lookup(std::string_view name) {
     if (u == d.id || u == d.name) return d;
   throw MachineDataError(
       fmt::format("unknown machine datum '{}' (known: MD20150[47], MD20202, MD20204, MD20210, "
-                  "MD20220, MD20230, MD20240, MD20250)",
+                  "MD20220, MD20230, MD20240, MD20250, MD21000, MD21010)",
                   name));
 }
 
@@ -89,6 +92,10 @@ void MachineData::set(std::string_view name, std::string_view value) {
     cutcom_maxnum_check_blocks = count_in(d, value, 1, kMaxCheckBlocks);
   } else if (id == "MD20250") {
     cutcom_maxnum_dummy_blocks = count_in(d, value, 0, kMaxDummyBlocks);
+  } else if (id == "MD21000") {
+    circle_error_const = decimal_in(d, value, Decimal{}, std::nullopt);
+  } else if (id == "MD21010") {
+    circle_error_factor = decimal_in(d, value, Decimal{}, std::nullopt);
   }
 }
 
@@ -133,6 +140,8 @@ std::string machine_datum_value(const MachineData& md, std::string_view id) {
   if (id == "MD20230") return md.cutcom_curve_insert_limit.to_string();
   if (id == "MD20240") return std::to_string(md.cutcom_maxnum_check_blocks);
   if (id == "MD20250") return std::to_string(md.cutcom_maxnum_dummy_blocks);
+  if (id == "MD21000") return md.circle_error_const.to_string();
+  if (id == "MD21010") return md.circle_error_factor.to_string();
   return "";
 }
 

@@ -102,6 +102,8 @@ void ProgramReader::resolve(Block& b) {
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
   bool has_centre = w.centre[0].present || w.centre[1].present || w.centre[2].present;
   b.centre.reset();
+  b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw) &&
+             (w.programs_any_axis() || has_centre || w.cr.has_value());
   if (has_centre || w.cr) {
     if (!b.is_arc()) fail("I, J, K or CR= programmed in a block without G2/G3");
     if (has_centre && w.cr) fail("an arc takes either I/J/K or CR=, not both");
@@ -119,6 +121,8 @@ void ProgramReader::resolve(Block& b) {
         if (!cw.present) continue;
         target = cw.mode == ValueMode::kAbsolute ? cw.value : target + cw.value;
       }
+      if (coord(c, pa.abscissa) == coord(b.start, pa.abscissa) && coord(c, pa.ordinate) == coord(b.start, pa.ordinate))
+        fail("the circle centre lies on the start point (radius 0)");
       b.centre = c;
     }
   }

@@ -2,6 +2,7 @@
 // implements; ref implements the same clauses independently in exact arithmetic.
 #include "cutcom/fast/engine.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -18,6 +19,9 @@ struct BlockCopy {
   std::optional<std::int64_t> number;
   PathPoint start, end;  // programmed, workpiece coordinates
   bool rapid = false;
+  bool arc = false;  // G2/G3 with I/J/K
+  int sense = 1;     // +1 G3, -1 G2
+  PathPoint centre;  // programmed centre (arcs)
   Decimal feed;
   std::array<AuxFunction, BlockWords::kMaxAux> aux{};
   int aux_count = 0;
@@ -30,6 +34,9 @@ struct BlockCopy {
     c.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
     c.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
     c.rapid = b.state.motion == Motion::kRapid;
+    c.arc = b.is_arc();
+    c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
+    if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
     c.feed = b.state.feed;
     c.aux = b.words.aux;
     c.aux_count = b.words.aux_count;
@@ -63,9 +70,9 @@ struct Engine::State {
   BlockCopy selection;  // kApproach: the selection block
   // kActive: the open element, whose end waits for the next traversing block.
   BlockCopy open;
-  LineSegment open_seg;
-  Vec2 open_start;       // start point of its equidistant (after the previous corner)
-  double open_trim = 0;  // shortening at its start
+  Element open_el;
+  Vec2 open_start;         // start point of its equidistant (after the previous corner)
+  double open_radius = 0;  // arcs: radius of its equidistant
   // Blocks without motion in the plane since the last traversing block (fixed capacity).
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
   int dummy_count = 0;
@@ -114,6 +121,20 @@ struct Engine::State {
     sink.element(e);
   }
 
+  void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
+           const Origin& from_what) {
+    actions(owner, from);
+    PathElement e;
+    e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
+    e.feed = owner.feed, e.origin = from_what;
+    sink.element(e);
+  }
+
+  Element element_of(const BlockCopy& c) const {
+    return c.arc ? Element::circle(ab(c.start), ab(c.end), ab(c.centre), c.sense)
+                 : Element::line(ab(c.start), ab(c.end));
+  }
+
   // TRC-DUMMY-1: blocks without motion in the plane run at the corner point P*.
   void run_dummies(Vec2 at) {
     for (int i = 0; i < dummy_count; ++i) {
@@ -135,30 +156,53 @@ struct Engine::State {
     dummies[static_cast<std::size_t>(dummy_count++)] = BlockCopy::of(b);
   }
 
-  // TRC-ELEMENT-1: the open element ends `trim_end` before its normal end point; it must not
-  // reverse. Emits it (unless it vanishes). Returns false when an alarm stopped the program.
-  // The alarm names `alarm_line`: the block whose preparation found the problem.
-  bool close_open(Vec2 end_point, double trim_end, int alarm_line, std::optional<std::int64_t> alarm_block) {
-    double margin = open_seg.length - open_trim - trim_end;
+  // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
+  // not run backwards; it is output unless its length is 0. The alarm names `alarm_line`: the
+  // block whose preparation found the problem. False when an alarm stopped the program.
+  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block) {
+    const Element& e = open_el;
+    double margin;
+    if (!e.arc) {
+      margin = dot(end_point - open_start, e.unit);
+    } else {
+      double left = sweep(e) - signed_rotation(e.start - e.centre, open_start - e.centre, e.sense) +
+                    signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
+      margin = left * open_radius;
+    }
+    std::string_view clause = e.arc ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
     if (margin < 0) {
-      decide("TRC-ELEMENT-1", open.line, "reverses", margin);
+      decide(clause, open.line, "reverses", margin);
       raise(10751, alarm_line, alarm_block);
       return false;
     }
-    decide("TRC-ELEMENT-1", open.line, margin == 0 ? "vanishes" : "fits", margin);
+    decide(clause, open.line, margin == 0 ? "vanishes" : "fits", margin);
+    PathPoint from = xyz(open_start, h(open.start)), to = xyz(end_point, h(open.end));
     if (margin == 0) {
-      actions(open, xyz(end_point, h(open.end)));
+      actions(open, to);
       return true;
     }
-    line(open, xyz(open_start, h(open.start)), xyz(end_point, h(open.end)), OriginKind::kOffset, open.rapid);
+    if (!e.arc) {
+      line(open, from, to, OriginKind::kOffset, open.rapid);
+    } else {
+      arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
+    }
     return true;
   }
 
-  void open_element(const Block& b, const LineSegment& seg, Vec2 start, double trim) {
+  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; else alarm 10751.
+  bool equidistant_exists(const Block& b, const Element& e, double& radius) {
+    if (!e.arc) return true;
+    radius = e.equidistant_radius(s * r);
+    decide("TRC-ARC-EQ-1", b.words.line, radius > 0 ? "concentric" : "collapses", radius);
+    if (!(radius > 0)) raise(10751, b.words.line, b.words.number);
+    return radius > 0;
+  }
+
+  void open_element(const Block& b, const Element& e, Vec2 start, double radius) {
     open = BlockCopy::of(b);
-    open_seg = seg;
+    open_el = e;
     open_start = start;
-    open_trim = trim;
+    open_radius = radius;
   }
 
   // --- checks shared by the phases with compensation in force --------------------------------
@@ -175,9 +219,6 @@ struct Engine::State {
       raise(10757, b.words.line, b.words.number);
       return false;
     }
-    if (b.is_arc())
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "circular interpolation G2/G3 with compensation active");
     if (b.state.side != side)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "change of compensation side G41/G42 without G40");
@@ -211,11 +252,12 @@ struct Engine::State {
         return select(b);
       }
     }
-    if (b.is_arc())
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "circular interpolation G2/G3");
     BlockCopy c = BlockCopy::of(b);
-    line(c, c.start, c.end, OriginKind::kProgrammed, c.rapid);
+    if (!c.arc) return line(c, c.start, c.end, OriginKind::kProgrammed, c.rapid);
+    // A programmed circle about its (corrected, ARC-CENTRE-1) centre.
+    axes = plane_axes(b.state.plane);
+    Element e = element_of(c);
+    arc(c, c.start, c.end, xyz(e.centre, h(c.start)), c.sense > 0, origin(c, OriginKind::kProgrammed));
   }
 
   void select(const Block& b) {
@@ -256,8 +298,10 @@ struct Engine::State {
     if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
     // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
     BlockCopy first = BlockCopy::of(b);
-    LineSegment seg = LineSegment::between(ab(first.start), ab(first.end));
-    Vec2 q = seg.offset(seg.start, s * r);
+    Element e = element_of(first);
+    double radius = 0;
+    if (!equidistant_exists(b, e, radius)) return;
+    Vec2 q = Element::offset(e.start, e.start_tangent(), s * r);
     PathPoint to = xyz(q, h(selection.end));
     double length = std::sqrt((to.x - selection.start.x) * (to.x - selection.start.x) +
                               (to.y - selection.start.y) * (to.y - selection.start.y) +
@@ -265,7 +309,7 @@ struct Engine::State {
     decide("TRC-APPR-NORM-1", selection.line, length == 0 ? "zero-length" : "line", length);
     line(selection, selection.start, to, OriginKind::kApproach, selection.rapid);
     run_dummies(q);
-    open_element(b, seg, q, 0);
+    open_element(b, e, q, radius);
     phase = Phase::kActive;
   }
 
@@ -283,11 +327,22 @@ struct Engine::State {
     corner(b);
   }
 
+  Carrier carrier_of(const Element& e, double radius) const {
+    Carrier c;
+    c.circle = e.arc;
+    if (e.arc)
+      c.point = e.centre, c.radius = radius;
+    else
+      c.point = Element::offset(e.start, e.unit, s * r), c.direction = e.unit;
+    return c;
+  }
+
   void corner(const Block& b) {
-    BlockCopy next = BlockCopy::of(b);
-    LineSegment seg = LineSegment::between(ab(next.start), ab(next.end));
-    Vec2 v = open_seg.end;
-    Corner c = classify_corner(open_seg, seg, s, r);
+    Element next = element_of(BlockCopy::of(b));
+    double next_radius = 0;
+    if (!equidistant_exists(b, next, next_radius)) return;
+    Vec2 v = open_el.end;
+    Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
     decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
 
@@ -307,37 +362,49 @@ struct Engine::State {
         decide("TRC-CORNER-4", b.words.line, circle ? "keep-G450" : "switch-to-G451", angle - limit);
       }
     }
-    if (circle) {
-      // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points.
-      Vec2 from = open_seg.offset(v, s * r);
-      if (!close_open(from, 0, b.words.line, b.words.number)) return;
-      run_dummies(from);
-      Vec2 to = seg.offset(v, s * r);
-      if (r > 0) {  // TRC-G450-2: no circle for a zero radius
-        actions(next, xyz(from, h(next.start)));
-        PathElement e;
-        e.type = ElementType::kArc, e.rapid = next.rapid, e.feed = next.feed;
-        e.start = xyz(from, h(next.start)), e.end = xyz(to, h(next.start)), e.center = xyz(v, h(next.start));
-        e.ccw = s < 0;  // around the outside: clockwise on the left, counter-clockwise on the right
-        e.origin = origin(open, OriginKind::kTransitionCircle);
-        e.origin.next_line = next.line, e.origin.next_block = next.number;
-        sink.element(e);
-      }
-      return open_element(b, seg, to, 0);
+    if (circle) return transition_circle(b, next, next_radius, v);
+    Vec2 x;
+    if (c.kind == Corner::Kind::kTangent) {
+      x = Element::offset(v, open_el.end_tangent(), s * r);  // both equidistants pass through it
+    } else if (!open_el.arc && !next.arc) {
+      // TRC-G451-1 / TRC-INNER-1: the intersection of two straight equidistants.
+      x = Element::offset(v, open_el.unit, s * r) - corner_trim(c, s, r) * open_el.unit;
+    } else {
+      // TRC-ARC-CORNER-1: the intersection of the carriers nearest to the corner.
+      bool found = nearest_intersection(carrier_of(open_el, open_radius), carrier_of(next, next_radius), v, x);
+      decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none");
+      if (!found && c.kind == Corner::Kind::kOuter)
+        return transition_circle(b, next, next_radius, v);  // TRC-ARC-CORNER-2
+      if (!found) return raise(10751, b.words.line, b.words.number);
     }
-    // TRC-G451-1 / TRC-INNER-1 / tangent: both equidistants end at their intersection.
-    Vec2 x = open_seg.offset(v, s * r) - c.trim * open_seg.unit;
-    if (!close_open(x, c.trim, b.words.line, b.words.number)) return;
+    if (!close_open(x, b.words.line, b.words.number)) return;
     run_dummies(x);
-    open_element(b, seg, x, c.trim);
+    open_element(b, next, x, next_radius);
+  }
+
+  // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points; it
+  // belongs to the second block.
+  void transition_circle(const Block& b, const Element& next, double next_radius, Vec2 v) {
+    Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
+    if (!close_open(from, b.words.line, b.words.number)) return;
+    run_dummies(from);
+    Vec2 to = Element::offset(v, next.start_tangent(), s * r);
+    Origin corner = origin(open, OriginKind::kTransitionCircle);
+    open_element(b, next, to, next_radius);
+    corner.next_line = open.line, corner.next_block = open.number;
+    if (r > 0) {  // TRC-G450-2: no circle for a zero radius
+      double hv = h(open.start);
+      // Around the outside: clockwise on the left, counter-clockwise on the right.
+      arc(open, xyz(from, hv), xyz(to, hv), xyz(v, hv), s < 0, corner);
+    }
   }
 
   // TRC-DESEL-1, TRC-RETR-NORM-1: the last element ends at its normal point, then a straight
   // line to the programmed end point of the deselection block.
   void deselect(const Block& b) {
-    Vec2 end = open_seg.offset(open_seg.end, s * r);
+    Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
     decide("TRC-DESEL-1", b.words.line, "deselected");
-    if (!close_open(end, 0, b.words.line, b.words.number)) return;
+    if (!close_open(end, b.words.line, b.words.number)) return;
     run_dummies(end);
     BlockCopy last = BlockCopy::of(b);
     PathPoint from = xyz(end, h(last.start));
@@ -360,11 +427,30 @@ struct Engine::State {
       decide("TRC-END-1", open.line, "active-at-end");
       sink.notice(
           {open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
-      Vec2 end = open_seg.offset(open_seg.end, s * r);
-      if (!close_open(end, 0, open.line, open.number)) return;
+      Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+      if (!close_open(end, open.line, open.number)) return;
       run_dummies(end);
     }
     phase = Phase::kOff;
+  }
+
+  // ARC-CENTRE-2: the end point may miss the circle about the programmed centre by at most
+  // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
+  bool arc_is_consistent(const Block& b) {
+    if (!b.centre)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "circle programmed with CR=");
+    PlaneAxes ax = plane_axes(b.state.plane);
+    auto at = [&](const Point3& p) {
+      return Vec2{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()};
+    };
+    Vec2 c = at(*b.centre);
+    double rs = norm(at(b.start) - c), re = norm(at(b.end) - c);
+    double tolerance = std::max(md.circle_error_const.to_double(), md.circle_error_factor.to_double() * rs);
+    double excess = std::fabs(re - rs) - tolerance;
+    decide("ARC-CENTRE-2", b.words.line, excess <= 0 ? "within" : "beyond", excess);
+    if (excess > 0) raise(14040, b.words.line, b.words.number);
+    return excess <= 0;
   }
 };
 
@@ -376,6 +462,7 @@ bool Engine::stopped() const { return state_->stopped; }
 void Engine::push(const Block& b) {
   State& st = *state_;
   if (st.stopped) return;
+  if (b.is_arc() && !st.arc_is_consistent(b)) return;
   switch (st.phase) {
     case State::Phase::kOff:
       return st.off(b);

@@ -1,24 +1,98 @@
 #include "plane_geometry.hpp"
 
+#include <numbers>
+
 namespace cutcom::fast {
 
-Corner classify_corner(const LineSegment& first, const LineSegment& second, int side, double radius) {
+Element Element::line(Vec2 s, Vec2 e) {
+  Element l;
+  l.start = s, l.end = e;
+  Vec2 d = e - s;
+  l.length = norm(d);
+  l.unit = (1.0 / l.length) * d;
+  return l;
+}
+
+Element Element::circle(Vec2 s, Vec2 e, Vec2 c, int sense) {
+  Element a;
+  a.arc = true;
+  a.start = s, a.end = e, a.sense = sense;
+  a.full = s.a == e.a && s.b == e.b;
+  if (!a.full) {
+    // ARC-CENTRE-1: project the programmed centre onto the chord's perpendicular bisector.
+    Vec2 m = 0.5 * (s + e);
+    Vec2 p = left_normal(e - s);
+    c = m + (dot(c - m, p) / dot(p, p)) * p;
+  }
+  a.centre = c;
+  a.radius = norm(s - c);
+  return a;
+}
+
+Corner classify_corner(Vec2 t1, Vec2 t2, int side) {
   Corner c;
-  double sn = cross(first.unit, second.unit);
-  double cs = dot(first.unit, second.unit);
+  double sn = cross(t1, t2);
+  double cs = dot(t1, t2);
   c.sine = side * sn;
   c.cosine = cs;
-  if (sn == 0) {
+  if (sn == 0)
     c.kind = cs > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
-    c.trim = 0;
-    return c;
-  }
-  c.kind = c.sine > 0 ? Corner::Kind::kInner : Corner::Kind::kOuter;
-  // trim = s r tan(phi/2) with the sign of the turn; tan(phi/2) = sin/(1+cos) = (1-cos)/sin,
-  // the form without cancellation chosen by the sign of cos.
-  double tan_half = cs >= 0 ? sn / (1 + cs) : (1 - cs) / sn;
-  c.trim = side * radius * tan_half;
+  else
+    c.kind = c.sine > 0 ? Corner::Kind::kInner : Corner::Kind::kOuter;
   return c;
+}
+
+double corner_trim(const Corner& c, int side, double radius) {
+  // tan(phi/2) = sin/(1+cos) = (1-cos)/sin: the form without cancellation, chosen by cos's sign.
+  double sn = side * c.sine;
+  double tan_half = c.cosine >= 0 ? sn / (1 + c.cosine) : (1 - c.cosine) / sn;
+  return side * radius * tan_half;
+}
+
+namespace {
+bool pick(Vec2 p, Vec2 q, bool two, Vec2 near, Vec2& out) {
+  out = two && norm(q - near) < norm(p - near) ? q : p;
+  return true;
+}
+}  // namespace
+
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& out) {
+  if (!u.circle && !v.circle) {
+    double den = cross(u.direction, v.direction);
+    if (den == 0) return false;
+    double t = cross(v.point - u.point, v.direction) / den;
+    out = u.point + t * u.direction;
+    return true;
+  }
+  if (u.circle != v.circle) {
+    const Carrier& l = u.circle ? v : u;
+    const Carrier& c = u.circle ? u : v;
+    // Foot of the perpendicular from the centre, then half the chord along the line.
+    Vec2 d = (1.0 / norm(l.direction)) * l.direction;
+    Vec2 foot = l.point + dot(c.point - l.point, d) * d;
+    double dist2 = dot(foot - c.point, foot - c.point);
+    double half2 = c.radius * c.radius - dist2;
+    if (half2 < 0) return false;
+    double h = std::sqrt(half2);
+    return pick(foot - h * d, foot + h * d, h > 0, near, out);
+  }
+  Vec2 d = v.point - u.point;
+  double dd = dot(d, d);
+  if (dd == 0) return false;
+  double along = (u.radius * u.radius - v.radius * v.radius + dd) / (2 * dd);
+  double across2 = u.radius * u.radius / dd - along * along;
+  if (across2 < 0) return false;
+  Vec2 m = u.point + along * d;
+  double h = std::sqrt(across2);
+  return pick(m + h * left_normal(d), m - h * left_normal(d), h > 0, near, out);
+}
+
+double signed_rotation(Vec2 from, Vec2 to, int sense) { return sense * std::atan2(cross(from, to), dot(from, to)); }
+
+double sweep(const Element& e) {
+  if (e.full) return 2 * std::numbers::pi;
+  double a = signed_rotation(e.start - e.centre, e.end - e.centre, e.sense);
+  return a > 0 ? a : a + 2 * std::numbers::pi;
 }
 
 }  // namespace cutcom::fast

@@ -1,4 +1,5 @@
-// fast's double-precision plane geometry: vectors in (abscissa, ordinate) of the active plane.
+// fast's double-precision plane geometry: vectors in (abscissa, ordinate) of the active plane,
+// contour elements (straight or circular), corners and intersections of equidistants.
 #pragma once
 
 #include <cmath>
@@ -16,31 +17,53 @@ inline double cross(Vec2 p, Vec2 q) { return p.a * q.b - p.b * q.a; }
 inline Vec2 left_normal(Vec2 unit) { return {-unit.b, unit.a}; }
 inline double norm(Vec2 p) { return std::hypot(p.a, p.b); }
 
-// A straight compensated block in plane coordinates.
-struct LineSegment {
+// A compensated block in plane coordinates: a straight line or a circle (I/J/K).
+struct Element {
+  bool arc = false;
   Vec2 start, end;
-  Vec2 unit;      // direction of travel, |unit| = 1
-  double length;  // > 0 (blocks without motion in the plane never become segments)
-  static LineSegment between(Vec2 s, Vec2 e) {
-    LineSegment l;
-    l.start = s, l.end = e;
-    Vec2 d = e - s;
-    l.length = norm(d);
-    l.unit = (1.0 / l.length) * d;
-    return l;
+  Vec2 unit;          // lines: direction of travel
+  double length = 0;  // lines: > 0
+  Vec2 centre;        // arcs: centre on the chord's bisector (ARC-CENTRE-1)
+  double radius = 0;  // arcs
+  int sense = 1;      // arcs: +1 ccw (G3), -1 cw (G2)
+  bool full = false;  // arcs: start = end
+
+  static Element line(Vec2 s, Vec2 e);
+  static Element circle(Vec2 s, Vec2 e, Vec2 programmed_centre, int sense);
+
+  Vec2 start_tangent() const { return arc ? tangent_at(start) : unit; }  // unit vectors
+  Vec2 end_tangent() const { return arc ? tangent_at(end) : unit; }
+  Vec2 tangent_at(Vec2 p) const { return (sense / radius) * left_normal(p - centre); }
+  // TRC-EQ-1: the equidistant's point for programmed point p with unit tangent t.
+  static Vec2 offset(Vec2 p, Vec2 unit_tangent, double side_radius) {
+    return p + side_radius * left_normal(unit_tangent);
   }
-  // TRC-EQ-1: point of the equidistant at distance r on side s (+1 left, -1 right) of point p.
-  Vec2 offset(Vec2 p, double sr) const { return p + sr * left_normal(unit); }
+  // TRC-ARC-EQ-1: radius of a circle's equidistant.
+  double equidistant_radius(double side_radius) const { return radius - side_radius * sense; }
 };
 
-// The corner between two consecutive segments, seen from side s.
+// The corner between two elements, seen from side s.
 struct Corner {
   enum class Kind { kTangent, kInner, kOuter, kReversal } kind;
   double sine;    // s * sin(deflection): > 0 inner, < 0 outer (the TRC-CORNER-1 margin)
   double cosine;  // cos(deflection)
-  double trim;    // signed shortening of both equidistants at the corner (< 0: extension, G451)
 };
+Corner classify_corner(Vec2 end_tangent, Vec2 start_tangent, int side);
 
-Corner classify_corner(const LineSegment& first, const LineSegment& second, int side, double radius);
+// Signed shortening s r tan(phi/2) of two straight equidistants at their intersection.
+double corner_trim(const Corner& c, int side, double radius);
+
+// An equidistant extended to its carrier, and the carriers' intersection nearest to a point.
+struct Carrier {
+  bool circle = false;
+  Vec2 point, direction;  // line
+  double radius = 0;      // circle about `point`
+};
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& out);
+
+// The signed rotation in (-pi, pi] from `from` to `to` in the sense `sense`, and the sweep in
+// (0, 2 pi] of a circle element.
+double signed_rotation(Vec2 from, Vec2 to, int sense);
+double sweep(const Element& e);
 
 }  // namespace cutcom::fast

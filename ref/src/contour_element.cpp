@@ -2,29 +2,109 @@
 
 namespace cutcom::ref {
 
-ContourLine ContourLine::of(const Block& block, PlaneAxes axes) {
-  ContourLine l;
-  l.line = block.words.line;
-  l.number = block.words.number;
-  l.start3 = block.start;
-  l.end3 = block.end;
-  l.dx = units_of(coord(block.end, axes.abscissa)) - units_of(coord(block.start, axes.abscissa));
-  l.dy = units_of(coord(block.end, axes.ordinate)) - units_of(coord(block.start, axes.ordinate));
-  l.a = plane_point(block.start, axes);
-  l.b = plane_point(block.end, axes);
-  l.d = l.b - l.a;
-  mpz_class sq = l.dx * l.dx + l.dy * l.dy;
-  l.length = CGAL::sqrt(FT(CORE::BigInt(sq.get_mpz_t())));
-  l.normal = Vector(-l.d.y() / l.length, l.d.x() / l.length);
-  return l;
+FT to_ft(const mpq_class& q) {
+  if (q.get_den() == 1) return FT(CORE::BigInt(q.get_num().get_mpz_t()));
+  return FT(CORE::BigRat(q.get_mpq_t()));
 }
 
-CornerClass classify_corner(const ContourLine& first, const ContourLine& second, int side) {
+namespace {
+mpq_class units_q(const Decimal& d) { return mpq_class(units_of(d)); }
+
+// sigma * perp(p - c) = sigma * (-(p_b - c_b), p_a - c_a): the direction of travel at p.
+RationalVector arc_tangent(const mpq_class& pa, const mpq_class& pb, const mpq_class& ca, const mpq_class& cb,
+                           int sense) {
+  return {-sense * (pb - cb), sense * (pa - ca)};
+}
+}  // namespace
+
+ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
+  ContourElement e;
+  e.kind = Kind::kLine;
+  e.line = block.words.line;
+  e.number = block.words.number;
+  e.start3 = block.start;
+  e.end3 = block.end;
+  mpz_class dx = units_of(coord(block.end, axes.abscissa)) - units_of(coord(block.start, axes.abscissa));
+  mpz_class dy = units_of(coord(block.end, axes.ordinate)) - units_of(coord(block.start, axes.ordinate));
+  e.start_tangent = e.end_tangent = {mpq_class(dx), mpq_class(dy)};
+  e.a = plane_point(block.start, axes);
+  e.b = plane_point(block.end, axes);
+  e.d = e.b - e.a;
+  mpz_class sq = dx * dx + dy * dy;
+  e.length = CGAL::sqrt(FT(CORE::BigInt(sq.get_mpz_t())));
+  e.normal = Vector(-e.d.y() / e.length, e.d.x() / e.length);
+  return e;
+}
+
+ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
+  ContourElement e;
+  e.kind = Kind::kArc;
+  e.line = block.words.line;
+  e.number = block.words.number;
+  e.start3 = block.start;
+  e.end3 = block.end;
+  e.sense = block.state.motion == Motion::kArcCcw ? 1 : -1;
+  mpq_class sa = units_q(coord(block.start, axes.abscissa)), sb = units_q(coord(block.start, axes.ordinate));
+  mpq_class ea = units_q(coord(block.end, axes.abscissa)), eb = units_q(coord(block.end, axes.ordinate));
+  mpq_class ca = units_q(coord(*block.centre, axes.abscissa)), cb = units_q(coord(*block.centre, axes.ordinate));
+  e.full_circle = sa == ea && sb == eb;
+  if (!e.full_circle) {
+    // ARC-CENTRE-1: the programmed centre projected onto the perpendicular bisector of the chord,
+    // so that start and end lie exactly on one circle: c' = m + ((c - m) . p / |p|^2) p,
+    // p = perp(e - s), m the midpoint. Rational.
+    mpq_class ma = (sa + ea) / 2, mb = (sb + eb) / 2;
+    mpq_class pa = -(eb - sb), pb = ea - sa;
+    mpq_class k = ((ca - ma) * pa + (cb - mb) * pb) / (pa * pa + pb * pb);
+    ca = ma + k * pa;
+    cb = mb + k * pb;
+  }
+  e.cx = ca, e.cy = cb;
+  e.radius_squared = (sa - ca) * (sa - ca) + (sb - cb) * (sb - cb);
+  e.centre = Point(to_ft(ca), to_ft(cb));
+  e.radius = CGAL::sqrt(to_ft(e.radius_squared));
+  e.start_tangent = arc_tangent(sa, sb, ca, cb, e.sense);
+  e.end_tangent = arc_tangent(ea, eb, ca, cb, e.sense);
+  e.a = plane_point(block.start, axes);
+  e.b = plane_point(block.end, axes);
+  return e;
+}
+
+Vector ContourElement::start_normal() const {
+  if (kind == Kind::kLine) return normal;
+  // Left of the direction of travel: towards the centre for ccw, away from it for cw.
+  return (centre - a) * FT(sense) / radius;
+}
+
+Vector ContourElement::end_normal() const {
+  if (kind == Kind::kLine) return normal;
+  return (centre - b) * FT(sense) / radius;
+}
+
+ArcTolerance arc_end_point_check(const Block& block, PlaneAxes axes, const Decimal& error_const,
+                                 const Decimal& error_factor) {
+  mpq_class sa = units_q(coord(block.start, axes.abscissa)), sb = units_q(coord(block.start, axes.ordinate));
+  mpq_class ea = units_q(coord(block.end, axes.abscissa)), eb = units_q(coord(block.end, axes.ordinate));
+  mpq_class ca = units_q(coord(*block.centre, axes.abscissa)), cb = units_q(coord(*block.centre, axes.ordinate));
+  mpq_class rs2 = (sa - ca) * (sa - ca) + (sb - cb) * (sb - cb);
+  mpq_class re2 = (ea - ca) * (ea - ca) + (eb - cb) * (eb - cb);
+  FT rs = CGAL::sqrt(to_ft(rs2));
+  FT deviation = rs2 == re2 ? FT(0) : CGAL::abs(CGAL::sqrt(to_ft(re2)) - rs);
+  // The factor is a plain number: tolerance = max(const, factor * rho_start), in units.
+  FT by_factor = to_ft(mpq_class(units_of(error_factor), mpz_class(Decimal::kUnitsPerOne))) * rs;
+  FT constant = leaf(error_const);
+  FT tolerance = CGAL::compare(by_factor, constant) == CGAL::LARGER ? by_factor : constant;
+  FT excess = deviation - tolerance;
+  return {CGAL::sign(excess) != CGAL::POSITIVE, excess};
+}
+
+CornerClass classify_corner(const RationalVector& t1, const RationalVector& t2, int side) {
   CornerClass c;
-  c.cross = first.dx * second.dy - first.dy * second.dx;
-  c.dot = first.dx * second.dx + first.dy * second.dy;
-  c.squared_lengths_product =
-      (first.dx * first.dx + first.dy * first.dy) * (second.dx * second.dx + second.dy * second.dy);
+  c.cross = t1.a * t2.b - t1.b * t2.a;
+  c.dot = t1.a * t2.a + t1.b * t2.b;
+  // Positive scalings to integers keep every angle.
+  mpz_class k1 = lcm(t1.a.get_den(), t1.b.get_den()), k2 = lcm(t2.a.get_den(), t2.b.get_den());
+  c.a1 = mpz_class(t1.a * k1), c.b1 = mpz_class(t1.b * k1);
+  c.a2 = mpz_class(t2.a * k2), c.b2 = mpz_class(t2.b * k2);
   int turn = sgn(c.cross) * side;  // > 0: the tool is on the inside of the turn
   if (sgn(c.cross) == 0)
     c.kind = sgn(c.dot) > 0 ? CornerKind::kTangent : CornerKind::kReversal;

@@ -1,4 +1,6 @@
-// Exact straight contour elements and the rational predicates decided on programmed data.
+// Exact contour elements (straight or circular) and the rational predicates decided on them.
+// Lines and I/J/K circles have rational data: end points, centre, squared radius and tangent
+// directions. Square roots enter only through lengths, radii and unit normals.
 #pragma once
 
 #include <optional>
@@ -7,29 +9,59 @@
 
 namespace cutcom::ref {
 
-// A programmed straight block in the active plane. The integer direction (dx, dy) in units
-// carries every rational predicate; the Expr objects carry constructions.
-struct ContourLine {
+// A rational in-plane vector (exact tangent directions, not normalised).
+struct RationalVector {
+  mpq_class a, b;
+};
+
+struct ContourElement {
+  enum class Kind { kLine, kArc } kind = Kind::kLine;
   int line = 0;                        // source line
   std::optional<std::int64_t> number;  // N number
   Point3 start3, end3;                 // programmed positions (exact decimals)
-  mpz_class dx, dy;                    // end - start in plane units
-  Point a, b;                          // start, end in the plane
-  Vector d;                            // b - a
-  FT length;                           // |d| = sqrt(dx^2 + dy^2)
-  Vector normal;                       // left unit normal perp(d)/|d|
+  Point a, b;                          // start and end in the plane (units of 10^-9 mm)
+  RationalVector start_tangent, end_tangent;
 
-  static ContourLine of(const Block& block, PlaneAxes axes);
+  // Lines.
+  Vector d;       // b - a
+  FT length;      // |d|
+  Vector normal;  // left unit normal
+
+  // Arcs (ARC-CENTRE-1): centre on the bisector of the chord, sense +1 ccw (G3), -1 cw (G2).
+  mpq_class cx, cy, radius_squared;
+  Point centre;
+  FT radius;
+  int sense = 1;
+  bool full_circle = false;
+
+  static ContourElement of_line(const Block& block, PlaneAxes axes);
+  static ContourElement of_arc(const Block& block, PlaneAxes axes);
+  bool is_arc() const { return kind == Kind::kArc; }
+
+  // Unit left normal of the tangent at the start / end (exact, with one square root).
+  Vector start_normal() const;
+  Vector end_normal() const;
 };
 
-// TRC-CORNER-1: the kind of the corner between two straight elements, from the sign of the
-// cross product of their integer directions (an exact rational predicate).
+// ARC-CENTRE-2: how far the programmed end point misses the circle about the programmed centre,
+// |rho_end - rho_start|, against max(MD21000, MD21010 * rho_start). True if within.
+struct ArcTolerance {
+  bool within;
+  FT excess;  // |rho_end - rho_start| - tolerance (<= 0 within)
+};
+ArcTolerance arc_end_point_check(const Block& block, PlaneAxes axes, const Decimal& error_const,
+                                 const Decimal& error_factor);
+
+// TRC-CORNER-1: the kind of the corner between two elements, from the exact tangents.
 enum class CornerKind { kTangent, kInner, kOuter, kReversal };
 struct CornerClass {
   CornerKind kind;
-  mpz_class cross, dot;               // of the integer directions
-  mpz_class squared_lengths_product;  // |d1|^2 |d2|^2
+  mpq_class cross, dot;
+  // Integer directions with the same angles (scaled tangents), for the contour angle.
+  mpz_class a1, b1, a2, b2;
 };
-CornerClass classify_corner(const ContourLine& first, const ContourLine& second, int side);
+CornerClass classify_corner(const RationalVector& end_tangent, const RationalVector& start_tangent, int side);
+
+FT to_ft(const mpq_class& q);
 
 }  // namespace cutcom::ref

@@ -8,6 +8,7 @@
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
 #include "equidistant.hpp"
+#include "exact_angle.hpp"
 #include "exact_path.hpp"
 
 namespace cutcom::ref {
@@ -88,7 +89,7 @@ class Reference {
 
   // PATH-ELEMENT-1: a straight element; zero-length ones are not output.
   void emit_line(const Block& owner, const ExactPoint& from, const ExactPoint& to, OriginKind kind,
-                 const ContourLine* offset_of = nullptr) {
+                 const ContourElement* offset_of = nullptr) {
     PathPoint a = path.output(from), b = path.output(to);
     run_actions(owner, a);
     if (path.same(from, to)) return;
@@ -100,11 +101,26 @@ class Reference {
     sink_.element(e);
   }
 
+  // A circular element about `centre` (at the applicate of its start), radius `radius` in the plane;
+  // `owner` gives feed, motion type and actions.
+  void emit_arc(const Block& owner, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
+                const FT& radius, bool ccw, const Origin& from_what, PlaneAxes axes) {
+    PathPoint a = path.output(from);
+    run_actions(owner, a);
+    PathElement e;
+    e.type = ElementType::kArc, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
+    e.start = a, e.end = path.output(to), e.center = path.output(centre), e.ccw = ccw;
+    e.origin = from_what;
+    path.add_circle(owner.words.line, from, to, centre, radius, axes);
+    sink_.element(e);
+  }
+
   ExactPoint at(const CentrePoint& p) const { return ExactPoint::in_plane(p.plane, p.applicate, comp_->axes); }
   static ExactPoint at(const Point3& p) { return ExactPoint::programmed(p); }
 
   // --- one block ---------------------------------------------------------------------------------
   void step(const Block& b) {
+    if (b.is_arc() && !arc_is_consistent(b)) return;
     switch (phase_) {
       case Phase::kOff:
         return compensation_off(b);
@@ -115,11 +131,30 @@ class Reference {
     }
   }
 
-  void run_uncompensated(const Block& b) {
-    if (b.is_arc())
+  // ARC-CENTRE-2: a circle's end point may miss the circle about its programmed centre by at most
+  // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
+  bool arc_is_consistent(const Block& b) {
+    if (!b.centre)
       throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "circular interpolation G2/G3");
-    emit_line(b, at(b.start), at(b.end), OriginKind::kProgrammed);
+          b.words.line, "circle programmed with CR=");
+    ArcTolerance t = arc_end_point_check(b, plane_axes(b.state.plane), md_.circle_error_const, md_.circle_error_factor);
+    decide("ARC-CENTRE-2", b.words.line, t.within ? "within" : "beyond", exact_mm(t.excess));
+    if (!t.within) raise(14040, b);
+    return t.within;
+  }
+
+  ContourElement element_of(const Block& b) const {
+    return b.is_arc() ? ContourElement::of_arc(b, comp_->axes) : ContourElement::of_line(b, comp_->axes);
+  }
+
+  void run_uncompensated(const Block& b) {
+    if (!b.is_arc()) return emit_line(b, at(b.start), at(b.end), OriginKind::kProgrammed);
+    // A programmed circle, about its (corrected, ARC-CENTRE-1) centre.
+    PlaneAxes axes = plane_axes(b.state.plane);
+    ContourElement arc = ContourElement::of_arc(b, axes);
+    Decimal h = coord(b.start, axes.applicate);
+    emit_arc(b, at(b.start), at(b.end), ExactPoint::in_plane(arc.centre, h, axes), arc.radius, arc.sense > 0,
+             origin(b, OriginKind::kProgrammed), axes);
   }
 
   // TRC-SEL-*: may this block select compensation?
@@ -179,9 +214,6 @@ class Reference {
       raise(10757, b);
       return false;
     }
-    if (b.is_arc())
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "circular interpolation G2/G3 with compensation active");
     if (b.state.side != comp_->side)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "change of compensation side G41/G42 without G40");
@@ -234,8 +266,10 @@ class Reference {
   // TRC-APPR-NORM-1: a straight line from the start position to the point normal to the start of
   // the first contour element, at distance r on the compensation side.
   void approach_norm(const Block& first_block) {
-    ContourLine first = ContourLine::of(first_block, comp_->axes);
-    Point onto = equidistant_point<Kernel>(first.a, first.normal, comp_->side_radius);
+    ContourElement first = element_of(first_block);
+    FT radius;
+    if (!equidistant_exists(first_block, first, radius)) return;
+    Point onto = equidistant_point<Kernel>(first.a, first.start_normal(), comp_->side_radius);
     ExactPoint from = at(selection_->start);
     ExactPoint to = at({onto, coord(selection_->end, comp_->axes.applicate)});
     FT length = path.distance(from, to);
@@ -243,10 +277,7 @@ class Reference {
            exact_mm(length));
     emit_line(*selection_, from, to, OriginKind::kApproach);
     run_held_back(onto);
-    open_ = first;
-    open_block_ = &first_block;
-    open_start_ = onto;
-    open_trim_ = FT(0);
+    open(first_block, first, onto, radius, true);
     phase_ = Phase::kActive;
   }
 
@@ -264,103 +295,173 @@ class Reference {
     corner(b);
   }
 
-  // TRC-ELEMENT-1: the open element, shortened by its start and end trims, must keep a length >= 0;
-  // it is output unless that length is exactly 0.
-  bool close_open(const Point& end_point, const FT& trim_end, const Block& reporting) {
-    FT margin = open_->length - open_trim_ - trim_end;
-    CGAL::Sign sign = CGAL::sign(margin);
+  // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
+  // not run backwards; it is output unless it has length exactly 0.
+  // `at_normal_end`: the end point was built as the normal end point (no cut at the end), so its
+  // rotation from it is 0 by construction and needs no exact zero test.
+  bool close_open(const Point& end_point, const Block& reporting, bool at_normal_end = false) {
+    const ContourElement& e = *open_;
+    CGAL::Sign sign;
+    std::string margin;
+    if (!e.is_arc()) {
+      FT left = (end_point - open_start_) * e.d / e.length;  // signed length along the block
+      sign = CGAL::sign(left);
+      margin = exact_mm(left);
+    } else {
+      // Sweep of the programmed circle, less the rotation already cut at the start, plus the
+      // (negative) rotation cut at the end.
+      ExactAngle sweep =
+          e.full_circle ? ExactAngle::full_turn() : ExactAngle::rotation(e.a - e.centre, e.b - e.centre, e.sense);
+      ExactAngle left = sweep;
+      if (!open_at_normal_start_)
+        left = left + -ExactAngle::signed_rotation(e.a - e.centre, open_start_ - e.centre, e.sense);
+      if (!at_normal_end) left = left + ExactAngle::signed_rotation(e.b - e.centre, end_point - e.centre, e.sense);
+      sign = left.sign();
+      margin = arc_length_text(left, open_radius_);
+    }
+    std::string_view clause = e.is_arc() ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
     if (sign == CGAL::NEGATIVE) {
-      decide("TRC-ELEMENT-1", open_->line, "reverses", exact_mm(margin));
+      decide(clause, e.line, "reverses", margin);
       raise(10751, reporting);
       return false;
     }
-    decide("TRC-ELEMENT-1", open_->line, sign == CGAL::ZERO ? "vanishes" : "fits", exact_mm(margin));
-    ExactPoint from = at({open_start_, coord(open_->start3, comp_->axes.applicate)});
-    ExactPoint to = at({end_point, coord(open_->end3, comp_->axes.applicate)});
+    decide(clause, e.line, sign == CGAL::ZERO ? "vanishes" : "fits", margin);
+    ExactPoint from = at({open_start_, coord(e.start3, comp_->axes.applicate)});
+    ExactPoint to = at({end_point, coord(e.end3, comp_->axes.applicate)});
     if (sign == CGAL::ZERO) {
       run_actions(*open_block_, path.output(to));
       return true;
     }
-    emit_line(*open_block_, from, to, OriginKind::kOffset, &*open_);
+    if (!e.is_arc()) {
+      emit_line(*open_block_, from, to, OriginKind::kOffset, &e);
+    } else {
+      ExactPoint centre = at({e.centre, coord(e.start3, comp_->axes.applicate)});
+      emit_arc(*open_block_, from, to, centre, open_radius_, e.sense > 0, origin(*open_block_, OriginKind::kOffset),
+               comp_->axes);
+    }
     return true;
   }
 
+  // The carrier of an equidistant: the offset line, or the concentric circle.
+  Carrier<Kernel> carrier_of(const ContourElement& e, const FT& radius) const {
+    Carrier<Kernel> c;
+    c.circle = e.is_arc();
+    if (c.circle) {
+      c.point = e.centre, c.radius = radius;
+    } else {
+      c.point = equidistant_point<Kernel>(e.a, e.normal, comp_->side_radius), c.direction = e.d;
+    }
+    return c;
+  }
+
   void corner(const Block& next_block) {
-    ContourLine next = ContourLine::of(next_block, comp_->axes);
-    const ContourLine& first = *open_;
-    CornerClass c = classify_corner(first, next, comp_->s);  // TRC-CORNER-1
+    ContourElement next = element_of(next_block);
+    FT next_radius;
+    if (!equidistant_exists(next_block, next, next_radius)) return;
+    const ContourElement& first = *open_;
+    CornerClass c = classify_corner(first.end_tangent, next.start_tangent, comp_->s);  // TRC-CORNER-1
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
-    FT sine = FT(comp_->s) * FT(CORE::BigInt(c.cross.get_mpz_t())) / (first.length * next.length);
+    FT sine = FT(comp_->s) * to_ft(c.cross) /
+              CGAL::sqrt(to_ft(c.dot * c.dot + c.cross * c.cross));  // s * sin(phi), |t1||t2| = sqrt(dot^2 + cross^2)
     decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(c.kind)], exact_text(sine));
 
     bool circle = c.kind == CornerKind::kReversal;  // TRC-G450-3
     if (c.kind == CornerKind::kOuter) {
+      mpz_class cross = c.a1 * c.b2 - c.b1 * c.a2, dot = c.a1 * c.a2 + c.b1 * c.b2;
+      mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
       if (next_block.state.corner == CornerMode::kG451) {
         // TRC-CORNER-3: G451 becomes G450 when the contour angle exceeds MD20210.
-        AngleComparison a = compare_contour_angle(c.cross, c.dot, c.squared_lengths_product, md_.cutcom_corner_limit);
+        AngleComparison a = compare_contour_angle(cross, dot, l2, md_.cutcom_corner_limit);
         circle = a.sign > 0;
         decide("TRC-CORNER-3", next_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
       } else {
         // TRC-CORNER-4: G450 becomes G451 when the contour angle is below MD20230.
-        AngleComparison a =
-            compare_contour_angle(c.cross, c.dot, c.squared_lengths_product, md_.cutcom_curve_insert_limit);
+        AngleComparison a = compare_contour_angle(cross, dot, l2, md_.cutcom_curve_insert_limit);
         circle = !(a.sign < 0);
         decide("TRC-CORNER-4", next_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
       }
     }
-    const Point& vertex = first.b;
-    if (circle) return transition_circle(next_block, next, vertex);
+    const Point vertex = first.b;  // a copy: open() replaces the element it comes from
+    if (circle) return transition_circle(next_block, next, next_radius, vertex);
+    if (c.kind == CornerKind::kTangent) {
+      // Both equidistants pass through the common normal point.
+      Point x = equidistant_point<Kernel>(vertex, first.end_normal(), comp_->side_radius);
+      if (!close_open(x, next_block, true)) return;
+      run_held_back(x);
+      return open(next_block, next, x, next_radius, true);
+    }
+    std::optional<Point> x;
+    if (!first.is_arc() && !next.is_arc()) {
+      // TRC-G451-1 / TRC-INNER-1 for two straight blocks.
+      FT trim = corner_trim<Kernel>(to_ft(c.cross), to_ft(c.dot), first.length, next.length, comp_->side_radius);
+      x = corner_intersection<Kernel>(vertex, first.normal, first.d, first.length, comp_->side_radius, trim);
+    } else {
+      // TRC-ARC-CORNER-1: the intersection of the equidistants' carriers nearest to the corner.
+      x = nearest_intersection(carrier_of(first, open_radius_), carrier_of(next, next_radius), vertex);
+      decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none");
+      if (!x && c.kind == CornerKind::kOuter)
+        return transition_circle(next_block, next, next_radius, vertex);  // TRC-ARC-CORNER-2
+      if (!x) return raise(10751, next_block);
+    }
+    if (!close_open(*x, next_block)) return;
+    run_held_back(*x);
+    open(next_block, next, *x, next_radius);
+  }
 
-    // TRC-G451-1, TRC-INNER-1 (and a tangent corner, trim 0): both equidistants end at their
-    // intersection.
-    FT trim = c.kind == CornerKind::kTangent
-                  ? FT(0)
-                  : corner_trim<Kernel>(FT(CORE::BigInt(c.cross.get_mpz_t())), FT(CORE::BigInt(c.dot.get_mpz_t())),
-                                        first.length, next.length, comp_->side_radius);
-    Point x = corner_intersection<Kernel>(vertex, first.normal, first.d, first.length, comp_->side_radius, trim);
-    if (!close_open(x, trim, next_block)) return;
-    run_held_back(x);
-    open(next_block, next, x, trim);
+  static std::optional<Point> nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
+                                                   const Point& vertex) {
+    std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
+    if (xs.empty()) return std::nullopt;
+    if (xs.size() == 2 && CGAL::compare_distance_to_point(vertex, xs[1], xs[0]) == CGAL::SMALLER) return xs[1];
+    return xs[0];
   }
 
   // TRC-G450-1: a circle of radius r about the programmed corner from the normal end point of the
   // first equidistant to the normal start point of the second; it belongs to the second block.
-  void transition_circle(const Block& next_block, const ContourLine& next, const Point& vertex) {
-    Point from = equidistant_point<Kernel>(vertex, open_->normal, comp_->side_radius);
-    if (!close_open(from, FT(0), next_block)) return;
+  void transition_circle(const Block& next_block, const ContourElement& next, const FT& next_radius,
+                         const Point& vertex) {
+    Point from = equidistant_point<Kernel>(vertex, open_->end_normal(), comp_->side_radius);
+    if (!close_open(from, next_block, true)) return;
     run_held_back(from);
-    Point to = equidistant_point<Kernel>(vertex, next.normal, comp_->side_radius);
+    Point to = equidistant_point<Kernel>(vertex, next.start_normal(), comp_->side_radius);
     Decimal h = coord(next_block.start, comp_->axes.applicate);
+    Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
+    corner.next_line = next_block.words.line, corner.next_block = next_block.words.number;
+    open(next_block, next, to, next_radius, true);
     if (comp_->radius.sign() != 0) {  // TRC-G450-2: no circle for a zero radius
-      ExactPoint a = at({from, h}), e = at({to, h});
-      PathPoint start = path.output(a);
-      run_actions(next_block, start);
-      PathElement el;
-      el.type = ElementType::kArc, el.rapid = next_block.state.motion == Motion::kRapid;
-      el.feed = next_block.state.feed;
-      el.start = start, el.end = path.output(e), el.center = path.output(at({vertex, h}));
-      el.ccw = comp_->s < 0;  // around the outside of the corner
-      el.origin = origin(*open_block_, OriginKind::kTransitionCircle);
-      el.origin.next_line = next_block.words.line, el.origin.next_block = next_block.words.number;
-      path.add_circle(open_block_->words.line, a, e, at({vertex, h}), comp_->side_radius, comp_->axes);
-      sink_.element(el);
+      // Around the outside of the corner: clockwise on the left, counter-clockwise on the right.
+      emit_arc(next_block, at({from, h}), at({to, h}), at({vertex, h}), comp_->side_radius, comp_->s < 0, corner,
+               comp_->axes);
     }
-    open(next_block, next, to, FT(0));
   }
 
-  void open(const Block& b, const ContourLine& line, const Point& start, const FT& trim) {
-    open_ = line;
+  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius rho - s sigma r; if it
+  // collapses, alarm 10751 (look-ahead past the block: planned). Decided when the block comes.
+  bool equidistant_exists(const Block& b, const ContourElement& e, FT& radius) {
+    if (!e.is_arc()) return true;
+    radius = equidistant_radius<Kernel>(e.radius, e.sense, comp_->side_radius);
+    CGAL::Sign sign = CGAL::sign(radius);
+    decide("TRC-ARC-EQ-1", e.line, sign == CGAL::POSITIVE ? "concentric" : "collapses", exact_mm(radius));
+    if (sign != CGAL::POSITIVE) raise(10751, b);
+    return sign == CGAL::POSITIVE;
+  }
+
+  // `at_normal_start`: the start point was built as the normal start point (see close_open).
+  void open(const Block& b, const ContourElement& e, const Point& start, const FT& radius,
+            bool at_normal_start = false) {
+    open_at_normal_start_ = at_normal_start;
+    open_ = e;
     open_block_ = &b;
     open_start_ = start;
-    open_trim_ = trim;
+    open_radius_ = radius;
   }
 
   // TRC-DESEL-1, TRC-RETR-NORM-1: the last equidistant ends at its normal end point; a straight
   // line leads to the programmed end point of the deselection block.
   void deselect_norm(const Block& b) {
-    Point end = equidistant_point<Kernel>(open_->b, open_->normal, comp_->side_radius);
+    Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
     decide("TRC-DESEL-1", b.words.line, "deselected");
-    if (!close_open(end, FT(0), b)) return;
+    if (!close_open(end, b, true)) return;
     run_held_back(end);
     ExactPoint from = at({end, coord(b.start, comp_->axes.applicate)});
     ExactPoint to = at(b.end);
@@ -385,8 +486,8 @@ class Reference {
       decide("TRC-END-1", open_->line, "active-at-end");
       sink_.notice(
           {open_->line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
-      Point end = equidistant_point<Kernel>(open_->b, open_->normal, comp_->side_radius);
-      if (!close_open(end, FT(0), *open_block_)) return;
+      Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
+      if (!close_open(end, *open_block_, true)) return;
       run_held_back(end);
     }
   }
@@ -401,10 +502,11 @@ class Reference {
   std::optional<Compensation> comp_;
   const Block* selection_ = nullptr;
   std::vector<const Block*> dummies_;
-  std::optional<ContourLine> open_;
+  std::optional<ContourElement> open_;
   const Block* open_block_ = nullptr;
   Point open_start_;
-  FT open_trim_;
+  FT open_radius_;  // arcs: radius of the open element's equidistant
+  bool open_at_normal_start_ = false;
 };
 
 }  // namespace

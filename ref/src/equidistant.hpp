@@ -1,34 +1,106 @@
-// The equidistant rules of the straight-line slice, literally, with the number model as a
-// template parameter (instantiated with the exact sqrt kernel in engine.cpp).
+// The equidistant constructions, literally, with the number model as a template parameter
+// (instantiated with the exact sqrt kernel in engine.cpp).
 #pragma once
+
+#include <optional>
+#include <vector>
 
 namespace cutcom::ref {
 
-// TRC-EQ-1: the equidistant of a straight block is the block moved by r along its unit normal,
-// to the left for side s = +1 (G41), to the right for s = -1 (G42): p + s r n.
+// TRC-EQ-1: the point of the equidistant at distance r on side s (+1 left, -1 right) of the
+// programmed point p, whose unit left normal is n: p + s r n.
 template <class K>
 typename K::Point_2 equidistant_point(const typename K::Point_2& p, const typename K::Vector_2& unit_normal,
                                       const typename K::FT& side_radius) {
   return p + unit_normal * side_radius;
 }
 
-// TRC-G451-1 / TRC-INNER-1: how much both equidistants are shortened at the corner where they
-// intersect: s r tan(phi/2) signed with the turn, phi the deflection angle,
-//   tan(phi/2) = |cross| / (|d1||d2| + dot).
-// Positive at inner corners (shortening), negative at outer ones (extension, G451).
-// Undefined for a reversal (|d1||d2| + dot = 0); callers never ask for it.
+// TRC-ARC-EQ-1: the equidistant of a circle with radius rho and sense sigma is the concentric
+// circle of radius rho - s sigma r (the left side of a ccw circle is its inside).
+template <class K>
+typename K::FT equidistant_radius(const typename K::FT& radius, int sense, const typename K::FT& side_radius) {
+  return radius - side_radius * typename K::FT(sense);
+}
+
+// TRC-G451-1 / TRC-INNER-1 for two straight blocks: both equidistants are shortened at the corner
+// by the signed trim s r cross / (|d1||d2| + dot) (= +- r tan(phi/2)); positive at inner corners,
+// negative at outer ones (extension). Undefined for a reversal; callers never ask for it.
 template <class K>
 typename K::FT corner_trim(const typename K::FT& cross, const typename K::FT& dot, const typename K::FT& length1,
                            const typename K::FT& length2, const typename K::FT& side_radius) {
   return side_radius * cross / (length1 * length2 + dot);
 }
 
-// The intersection of the two equidistants: the first one's normal end point moved back by the trim.
+// The intersection of two straight equidistants: the first one's normal end point moved back by the trim.
 template <class K>
 typename K::Point_2 corner_intersection(const typename K::Point_2& corner, const typename K::Vector_2& normal1,
                                         const typename K::Vector_2& direction1, const typename K::FT& length1,
                                         const typename K::FT& side_radius, const typename K::FT& trim) {
   return corner + normal1 * side_radius - direction1 * (trim / length1);
+}
+
+// An equidistant extended to its whole carrier: a line (point, direction) or a circle.
+template <class K>
+struct Carrier {
+  bool circle = false;
+  typename K::Point_2 point;       // line: a point on it; circle: the centre
+  typename K::Vector_2 direction;  // line only
+  typename K::FT radius;           // circle only (> 0)
+};
+
+// Points common to two carriers (0, 1 or 2; tangency gives one).
+template <class K>
+std::vector<typename K::Point_2> carrier_intersections(const Carrier<K>& u, const Carrier<K>& v) {
+  using KFT = typename K::FT;
+  using KPoint = typename K::Point_2;
+  using KVector = typename K::Vector_2;
+  std::vector<KPoint> out;
+  if (!u.circle && !v.circle) {
+    KFT den = u.direction.x() * v.direction.y() - u.direction.y() * v.direction.x();
+    if (CGAL::sign(den) == CGAL::ZERO) return out;  // parallel
+    KVector w = v.point - u.point;
+    KFT t = (w.x() * v.direction.y() - w.y() * v.direction.x()) / den;
+    out.push_back(u.point + u.direction * t);
+    return out;
+  }
+  if (u.circle != v.circle) {
+    const Carrier<K>& l = u.circle ? v : u;
+    const Carrier<K>& c = u.circle ? u : v;
+    // |p + t d - c|^2 = R^2:  a t^2 + 2 b t + k = 0
+    KVector pc = l.point - c.point;
+    KFT a = l.direction.squared_length();
+    KFT b = l.direction * pc;
+    KFT k = pc.squared_length() - c.radius * c.radius;
+    KFT disc = b * b - a * k;
+    CGAL::Sign s = CGAL::sign(disc);
+    if (s == CGAL::NEGATIVE) return out;
+    if (s == CGAL::ZERO) {
+      out.push_back(l.point + l.direction * (-b / a));
+      return out;
+    }
+    KFT root = CGAL::sqrt(disc);
+    out.push_back(l.point + l.direction * ((-b - root) / a));
+    out.push_back(l.point + l.direction * ((-b + root) / a));
+    return out;
+  }
+  // Two circles: along the line of centres at m, across by +- h.
+  KVector d = v.point - u.point;
+  KFT dd = d.squared_length();
+  if (CGAL::sign(dd) == CGAL::ZERO) return out;  // concentric
+  KFT along = (u.radius * u.radius - v.radius * v.radius + dd) / (KFT(2) * dd);
+  KFT across2 = u.radius * u.radius / dd - along * along;
+  CGAL::Sign s = CGAL::sign(across2);
+  if (s == CGAL::NEGATIVE) return out;
+  KPoint m = u.point + d * along;
+  KVector perp(-d.y(), d.x());
+  if (s == CGAL::ZERO) {
+    out.push_back(m);
+    return out;
+  }
+  KFT h = CGAL::sqrt(across2);
+  out.push_back(m + perp * h);
+  out.push_back(m - perp * h);
+  return out;
 }
 
 }  // namespace cutcom::ref

@@ -30,7 +30,7 @@ FT ExactPath::distance(const ExactPoint& a, const ExactPoint& b) const {
   return CGAL::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-void ExactPath::add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of,
+void ExactPath::add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourElement* offset_of,
                          const FT& side_radius, PlaneAxes axes) {
   Element e{line, from, to, axes, std::nullopt, std::nullopt, side_radius};
   if (offset_of) e.offset_of = *offset_of;
@@ -47,7 +47,7 @@ void ExactPath::check(ExactCheckReport& report) const {
     const Element& e = elements_[i];
     if (e.offset_of) {
       // PROP-EXACT-1 (TRC-EQ-1): cross(d, P - A) = s r |d| for both end points.
-      const ContourLine& l = *e.offset_of;
+      const ContourElement& l = *e.offset_of;
       for (const ExactPoint* p : {&e.start, &e.end}) {
         ++report.offset_endpoints_checked;
         if (CGAL::determinant(l.d, p->plane(e.axes) - l.a) != e.side_radius * l.length)
@@ -56,7 +56,8 @@ void ExactPath::check(ExactCheckReport& report) const {
       }
     }
     if (e.centre) {
-      // PROP-EXACT-2 (TRC-G450-1): both ends at distance r from the programmed corner.
+      // PROP-EXACT-2 (TRC-G450-1, TRC-ARC-EQ-1): both ends at the element's radius from its centre
+      // (the programmed corner for a transition circle, the programmed centre for an equidistant).
       ++report.circles_checked;
       FT r2 = e.side_radius * e.side_radius;
       Point c = e.centre->plane(e.axes);

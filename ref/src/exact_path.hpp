@@ -26,7 +26,7 @@ class ExactPath {
   FT distance(const ExactPoint& a, const ExactPoint& b) const;
 
   // Records an output line; `offset_of` names the programmed block for an equidistant.
-  void add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourLine* offset_of,
+  void add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourElement* offset_of,
                 const FT& side_radius, PlaneAxes axes);
   void add_circle(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
                   const FT& side_radius, PlaneAxes axes);
@@ -36,8 +36,8 @@ class ExactPath {
     int line = 0;  // source line of the block the element belongs to
     ExactPoint start, end;
     PlaneAxes axes{0, 1, 2};
-    std::optional<ContourLine> offset_of;  // equidistant of this programmed line
-    std::optional<ExactPoint> centre;      // transition circle
+    std::optional<ContourElement> offset_of;  // equidistant of this programmed line
+    std::optional<ExactPoint> centre;         // transition circle
     FT side_radius;
   };
   const std::vector<Element>& elements() const { return elements_; }

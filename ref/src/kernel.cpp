@@ -1,5 +1,8 @@
 #include "kernel.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <sstream>
 
 namespace cutcom::ref {
@@ -34,8 +37,11 @@ PathPoint to_output(const Point3& p) { return {p.x.to_double(), p.y.to_double(),
 
 std::string exact_text(const FT& value) {
   if (CGAL::sign(value) == CGAL::ZERO) return "0";
-  // CORE guarantees the sign; the digits come from its default relative precision (~18 digits).
-  return value.toString(18, true);
+  // The sign is exact (CORE); the digits are the nearest double's 17 (output boundary). Not
+  // Expr::toString: after exact zero tests an approximation may hold thousands of bits, and
+  // printing all of them dominated ref's run time.
+  auto magnitude = std::fabs(CGAL::to_double(value));
+  return fmt::format("{}{:.17g}", CGAL::sign(value) == CGAL::NEGATIVE ? "-" : "", magnitude);
 }
 
 std::string exact_mm(const FT& units) { return exact_text(units / FT(1'000'000'000L)); }

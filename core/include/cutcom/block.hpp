@@ -159,6 +159,7 @@ struct Block {
   Point3 end;           // programmed position after the block (modal completion applied)
   Opt<Point3> centre;   // arc centre from I J K (G2/G3); CR= arcs leave this empty
   int index = 0;        // 0-based block index in the program
+  bool circle = false;  // set by the reader: see is_arc()
 
   // Any geometry axis of the active plane written in the block (spec TRC-SEL-3/4).
   bool programs_plane_axis() const {
@@ -166,7 +167,9 @@ struct Block {
     return words.axis[a.abscissa].present || words.axis[a.ordinate].present;
   }
   // In-plane displacement is non-zero (exact comparison of programmed decimals).
+  // A circle always does: with equal start and end it is a full circle.
   bool moves_in_plane() const {
+    if (is_arc()) return true;
     PlaneAxes a = plane_axes(state.plane);
     return coord(start, a.abscissa) != coord(end, a.abscissa) || coord(start, a.ordinate) != coord(end, a.ordinate);
   }
@@ -175,7 +178,9 @@ struct Block {
     return coord(start, h) != coord(end, h);
   }
   bool is_linear() const { return state.motion == Motion::kRapid || state.motion == Motion::kLinear; }
-  bool is_arc() const { return state.motion == Motion::kArcCw || state.motion == Motion::kArcCcw; }
+  // A circle: G2/G3 in force and the block programs an axis or circle data (NC-ARC-2). A block
+  // without them (only M8, say) moves nowhere, whatever the modal motion.
+  bool is_arc() const { return circle; }
   bool has_aux() const { return words.aux_count > 0; }
 };
 

@@ -31,6 +31,8 @@ struct MachineData {
   int cutcom_maxnum_check_blocks = 3;                                 // MD20240
   int cutcom_maxnum_dummy_blocks = 5;                                 // MD20250
   EdgeStrategy group48_reset = EdgeStrategy::kG462;                   // MD20150 $MC_GCODE_RESET_VALUES[47]
+  Decimal circle_error_const = Decimal::from_units(10'000'000);       // MD21000, 0.01 mm
+  Decimal circle_error_factor = Decimal::from_units(1'000'000);       // MD21010, 0.001
 
   // Sets one datum from NAME=VALUE text; NAME is "MD20204" or "$MC_WAB_CLEARANCE_TOLERANCE".
   void set(std::string_view name, std::string_view value);

@@ -1,0 +1,139 @@
+// Worked examples for circles and helices; expected coordinates derived by hand in the comments.
+#include <cmath>
+
+#include "support.hpp"
+
+namespace cutcom::test {
+namespace {
+
+using K = OriginKind;
+const double kSqrt2 = std::sqrt(2.0);
+
+std::string program(const std::string& body, const std::string& radius = "2") {
+  return "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=" + radius + "\nN10 G0 X-10 Y0 T1 D1\n" + body;
+}
+
+Expect offset_arc(PathPoint s, PathPoint e, PathPoint c, bool ccw) { return {K::kOffset, s, e, c, true, ccw}; }
+Expect programmed_arc(PathPoint s, PathPoint e, PathPoint c, bool ccw) { return {K::kProgrammed, s, e, c, true, ccw}; }
+
+// covers: ARC-HELIX-1 NC-ARC-1
+TEST(ArcExamples, UncompensatedHelix) {
+  // A quarter circle ccw about (0,0) from (10,0) to (0,10), Z falling to -5: a helix.
+  Runs r = run_both("N10 G0 X10 Y0\nN20 G3 X0 Y10 I-10 J0 Z-5 F100\n");
+  expect_both(r,
+              {line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}), programmed_arc({10, 0, 0}, {0, 10, -5}, {0, 0, 0}, true)});
+}
+
+// covers: ARC-CENTRE-1 ARC-CENTRE-2 MD-21000-1 MD-21010-1
+TEST(ArcExamples, CentreIsCorrectedWithinTheToleranceElseAlarm14040) {
+  // Centre (-0.004, 0.002): radii 10.0040002 and 9.9980008 differ by 0.006 <= 0.01. Projected on
+  // the chord's bisector x = y through m = (5,5) with p = (-10,-10): k = ((c-m).p)/|p|^2
+  // = (50.04 + 49.98)/200 = 0.5001, c' = (5,5) - 5.001 (1,1) = (-0.001, -0.001).
+  Runs ok = run_both("N10 G0 X10 Y0\nN20 G3 X0 Y10 I-10.004 J0.002\n");
+  expect_both(ok, {line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}),
+                   programmed_arc({10, 0, 0}, {0, 10, 0}, {-0.001, -0.001, 0}, true)});
+  EXPECT_TRUE(has_decision(ok.ref, "ARC-CENTRE-2", "within"));
+  // Centre (-0.02, 0): radii 10.02 and 10.00002 differ by 0.01998 > max(0.01, 0.001 * 10.02).
+  Runs bad = run_both("N10 G0 X10 Y0\nN20 G3 X0 Y10 I-10.02 J0\n");
+  for (const RunResult* x : {&bad.fast, &bad.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 14040);
+    EXPECT_EQ(x->alarms[0].line, 2);
+  }
+  // With MD21000 = 0.05 the same circle is accepted.
+  MachineData md;
+  md.set("MD21000", "0.05");
+  Runs loose = run_both("N10 G0 X10 Y0\nN20 G3 X0 Y10 I-10.02 J0\n", md);
+  EXPECT_TRUE(loose.fast.alarms.empty());
+  EXPECT_TRUE(loose.ref.alarms.empty());
+  MachineData md2;
+  md2.set("MD21010", "0.002");  // tolerance 0.02004 >= 0.01998
+  EXPECT_TRUE(run_both("N10 G0 X10 Y0\nN20 G3 X0 Y10 I-10.02 J0\n", md2).ref.alarms.empty());
+}
+
+// covers: TRC-ARC-EQ-1 TRC-CORNER-1 TRC-ARC-ELEMENT-1
+TEST(ArcExamples, TangentLineArcLineInsideTheCircle) {
+  // N30 +X, then a ccw quarter circle about (10,10), radius 10, tangent to it, then +Y, tangent.
+  // G41 is the inside of a ccw circle: equidistant radius 10 - 2 = 8, from (10,2) to (18,10).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X20 Y10 I0 J10\nN50 G1 Y20\nN60 G40 X30 Y30\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), offset_arc({10, 2, 0}, {18, 10, 0}, {10, 10, 0}, true),
+                  line(K::kOffset, {18, 10, 0}, {18, 20, 0}), line(K::kRetraction, {18, 20, 0}, {30, 30, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "concentric"));
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-ELEMENT-1", "fits"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-ARC-ELEMENT-1", "fits"));
+}
+
+// covers: TRC-ARC-EQ-1
+TEST(ArcExamples, TangentLineArcLineOutsideTheCircle) {
+  // G42: the outside, radius 12: from (10,-2) to (22,10).
+  Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 G3 X20 Y10 I0 J10\nN50 G1 Y20\nN60 G40 X30 Y30\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}), offset_arc({10, -2, 0}, {22, 10, 0}, {10, 10, 0}, true),
+                  line(K::kOffset, {22, 10, 0}, {22, 20, 0}), line(K::kRetraction, {22, 20, 0}, {30, 30, 0})});
+}
+
+// covers: TRC-ARC-CORNER-1 TRC-INNER-1
+TEST(ArcExamples, InnerCornerLineToCircle) {
+  // N40: ccw about (5,5) from (10,0) to (10,10), radius sqrt50, starting in direction (1,1): a 45
+  // deg left turn, inside for G41. Equidistants: y = 2 and the circle of radius sqrt50 - 2 about
+  // (5,5): (x-5)^2 + 9 = (sqrt50 - 2)^2 = 54 - 20 sqrt2, x = 5 + sqrt(45 - 20 sqrt2) (the one
+  // nearer (10,0)). The circle's normal end at (10,10), tangent (-1,1): (10 - sqrt2, 10 - sqrt2).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X10 Y10 I-5 J5\nN50 G1 G40 X0 Y20\n"));
+  PathPoint x{5 + std::sqrt(45 - 20 * kSqrt2), 2, 0};
+  PathPoint end{10 - kSqrt2, 10 - kSqrt2, 0};
+  expect_both(
+      r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+          line(K::kOffset, {0, 2, 0}, x), offset_arc(x, end, {5, 5, 0}, true), line(K::kRetraction, end, {0, 20, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-CORNER-1", "intersection"));
+}
+
+// covers: TRC-G450-1 TRC-CORNER-4
+TEST(ArcExamples, OuterCornerLineToCircleWithTransitionCircle) {
+  // The same contour with G42: outside; 45 deg >= MD20230, so G450. The circle about (10,0)
+  // runs ccw from (10,-2) to (10,0) + 2 (1,-1)/sqrt2 = (10 + sqrt2, -sqrt2); the equidistant
+  // (radius sqrt50 + 2) ends at (10,10) + 2 (1,1)/sqrt2.
+  Runs r = run_both(program("N20 G1 G42 X0 Y0 F100\nN30 X10\nN40 G3 X10 Y10 I-5 J5\nN50 G1 G40 X20 Y20\n"));
+  PathPoint from{10 + kSqrt2, -kSqrt2, 0};
+  PathPoint end{10 + kSqrt2, 10 + kSqrt2, 0};
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, -2, 0}),
+                  line(K::kOffset, {0, -2, 0}, {10, -2, 0}), arc({10, -2, 0}, from, {10, 0, 0}, true),
+                  offset_arc(from, end, {5, 5, 0}, true), line(K::kRetraction, end, {20, 20, 0})});
+}
+
+// covers: TRC-ARC-EQ-1 ALARM-1
+TEST(ArcExamples, CircleSmallerThanTheToolOnTheInsideRaises10751) {
+  // ccw about (1,0) with radius 1 < r = 2 on the inside: the equidistant collapses.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X12 Y0 I1 J0\nN50 G1 G40 X20 Y0\n"));
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10751);
+    EXPECT_EQ(x->alarms[0].line, 6);
+  }
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "collapses"));
+}
+
+// covers: TRC-ARC-CORNER-2
+TEST(ArcExamples, InnerCornerWithoutIntersectionRaises10751) {
+  // N40: ccw about (5,-5), radius sqrt50, from (10,0) in direction (-1,1): a 135 deg left turn,
+  // inside for G41. The circle of radius sqrt50 - 2 = 5.07 about (5,-5) is 7 away from y = 2.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X0 Y0 I-5 J-5\nN50 G1 G40 X-10 Y0\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0})});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10751);
+  }
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-CORNER-1", "none"));
+}
+
+// covers: TRC-ARC-ELEMENT-1 TRC-APPR-NORM-1
+TEST(ArcExamples, FullCircleInside) {
+  // A full ccw circle about (5,0) from (0,0): start tangent -Y, left normal +X: approach to (2,0);
+  // the equidistant (radius 3) runs once round back to (2,0); G40 retracts to (-10,0).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 G3 X0 Y0 I5 J0\nN40 G1 G40 X-10 Y0\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {2, 0, 0}),
+                  offset_arc({2, 0, 0}, {2, 0, 0}, {5, 0, 0}, true), line(K::kRetraction, {2, 0, 0}, {-10, 0, 0})});
+}
+
+}  // namespace
+}  // namespace cutcom::test
