@@ -32,7 +32,10 @@ std::string to_program(const ContourCase& c) {
     }
     x += s.dx, y += s.dy;
     n += 10;
-    if (s.arc) {
+    if (s.arc && s.cr != 0) {
+      p += fmt::format("N{} {} {}{} {}{} CR={} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
+                       fixed(y, c.decimals), fixed(s.cr, c.decimals), s.g451 ? "G451" : "G450");
+    } else if (s.arc) {
       // Centre words of the plane: I/J (G17), K/I (G18), J/K (G19).
       const char* ci = c.plane == 17 ? "I" : c.plane == 18 ? "K" : "J";
       const char* cj = c.plane == 17 ? "J" : c.plane == 18 ? "I" : "K";

@@ -16,6 +16,7 @@ struct Step {
   bool arc = false;             // G2/G3 instead of G1
   bool ccw = false;             // G3
   std::int64_t ci = 0, cj = 0;  // centre relative to the block's start (I, J in the plane)
+  std::int64_t cr = 0;          // != 0: the circle is written with CR= instead
 };
 
 struct ContourCase {

@@ -1,6 +1,7 @@
 #include "generators.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace cutcom::props {
@@ -141,7 +142,18 @@ rc::Gen<ContourCase> with_circles() {
     c.steps.resize(n);
     std::int64_t px = 1000, py = 0;  // direction of travel at the end of the previous step
     for (Step& s : c.steps) {
-      int kind = *inRange(0, 5);
+      int kind = *inRange(0, 6);
+      if (kind == 5) {  // a CR= circle: its centre has a square root
+        s.arc = true;
+        s.ccw = *rc::gen::arbitrary<bool>();
+        s.dx = signed_um(30000), s.dy = signed_um(30000);
+        nonzero(s);
+        double half = std::hypot(static_cast<double>(s.dx), static_cast<double>(s.dy)) / 2;
+        std::int64_t radius = static_cast<std::int64_t>(std::ceil(half)) + *inRange<std::int64_t>(0, 20000);
+        s.cr = *rc::gen::arbitrary<bool>() ? radius : -radius;
+        px = s.dx, py = s.dy;  // roughly; the next tangent circle is then only nearly tangent
+        continue;
+      }
       if (kind == 0) {  // a line
         s.dx = signed_um(40000), s.dy = signed_um(40000);
         nonzero(s);
@@ -182,8 +194,12 @@ rc::Gen<ContourCase> with_circles() {
 }
 
 rc::Gen<ContourCase> any_contour() {
-  return rc::gen::weightedOneOf<ContourCase>(
-      {{4, random_walk()}, {3, grid_walk()}, {2, near_tangent()}, {2, near_reversal()}, {1, notch()}});
+  return rc::gen::weightedOneOf<ContourCase>({{4, random_walk()},
+                                              {3, grid_walk()},
+                                              {2, near_tangent()},
+                                              {2, near_reversal()},
+                                              {1, notch()},
+                                              {4, with_circles()}});
 }
 
 }  // namespace cutcom::props

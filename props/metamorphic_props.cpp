@@ -46,7 +46,12 @@ ContourCase apply(const ContourCase& c, const PlaneMap& f) {
   point(c.start_x, c.start_y, o.start_x, o.start_y);
   point(c.first_x, c.first_y, o.first_x, o.first_y);
   point(c.end_x, c.end_y, o.end_x, o.end_y);
-  for (std::size_t i = 0; i < c.steps.size(); ++i) lin(c.steps[i].dx, c.steps[i].dy, o.steps[i].dx, o.steps[i].dy);
+  for (std::size_t i = 0; i < c.steps.size(); ++i) {
+    lin(c.steps[i].dx, c.steps[i].dy, o.steps[i].dx, o.steps[i].dy);
+    lin(c.steps[i].ci, c.steps[i].cj, o.steps[i].ci, o.steps[i].cj);  // centre offsets are vectors
+    o.steps[i].cr = c.steps[i].cr * f.radius_factor * pow10(extra);   // a length, turned or not
+    if (f.mirror) o.steps[i].ccw = !c.steps[i].ccw;                   // a reflection swaps G2 and G3
+  }
   o.radius_um = c.radius_um * f.radius_factor * pow10(extra);
   o.decimals = c.decimals + extra;
   if (f.mirror) o.right = !c.right;

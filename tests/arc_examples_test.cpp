@@ -137,3 +137,34 @@ TEST(ArcExamples, FullCircleInside) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: ARC-CR-1
+TEST(ArcExamples, CircleByRadius) {
+  // From (10,0) to (0,10): chord sqrt200, CR = 10 gives h = sqrt(100 - 50) = sqrt50 along the
+  // chord's normal. G3 CR=10 (short, ccw): centre (0,0). G2 CR=-10 back (long, cw): the other
+  // side, (10,10). CR=5 cannot reach (2 * 5 < sqrt200): alarm 14040.
+  Runs r = run_both("N10 G0 X10 Y0\nN20 G3 X0 Y10 CR=10\nN30 G2 X10 Y0 CR=-10\nN40 G3 X0 Y10 CR=5\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}), programmed_arc({10, 0, 0}, {0, 10, 0}, {0, 0, 0}, true),
+                  programmed_arc({0, 10, 0}, {10, 0, 0}, {10, 10, 0}, false)});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 14040);
+    EXPECT_EQ(x->alarms[0].clause, "ARC-CR-1");
+  }
+}
+
+// covers: ARC-CR-1 TRC-ARC-EQ-1 TRC-CORNER-1
+TEST(ArcExamples, CompensatedCircleByRadiusTangentToLines) {
+  // TangentLineArcLineInsideTheCircle written with CR=10: the same path.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X20 Y10 CR=10\nN50 G1 Y20\nN60 G40 X30 Y30\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), offset_arc({10, 2, 0}, {18, 10, 0}, {10, 10, 0}, true),
+                  line(K::kOffset, {18, 10, 0}, {18, 20, 0}), line(K::kRetraction, {18, 20, 0}, {30, 30, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CORNER-1", "tangent"));
+}
+
+}  // namespace
+}  // namespace cutcom::test

@@ -351,7 +351,7 @@ TEST(SliceExamples, ContourAngleExactlyOnTheLimitDoesNotSwitch) {
 // covers: TRC-UNSUP-1
 TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
   const std::pair<std::string, int> cases[] = {
-      {program("N20 G1 G41 X0 Y0 F100\nN30 G3 X10 Y0 CR=20\n"), 5},
+      {program("N20 G1 G41 KONTT X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 KONT X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},

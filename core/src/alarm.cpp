@@ -28,14 +28,14 @@ const AlarmInfo* find_alarm(int number) {
   return nullptr;
 }
 
-Alarm make_alarm(int number, int line, std::optional<std::int64_t> block) {
+Alarm make_alarm(int number, int line, std::optional<std::int64_t> block, std::string_view clause) {
   const AlarmInfo* info = find_alarm(number);
   if (info == nullptr) throw std::logic_error(fmt::format("alarm {} is not in the catalogue", number));
   Alarm a;
   a.number = number;
   a.line = line;
   a.block = block;
-  a.clause = info->clause;
+  a.clause = clause.empty() ? info->clause : clause;
   a.text = block ? fmt::format("block N{} (line {}): {}", *block, line, info->text)
                  : fmt::format("line {}: {}", line, info->text);
   return a;

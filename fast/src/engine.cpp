@@ -21,7 +21,9 @@ struct BlockCopy {
   bool rapid = false;
   bool arc = false;  // G2/G3 with I/J/K
   int sense = 1;     // +1 G3, -1 G2
-  PathPoint centre;  // programmed centre (arcs)
+  PathPoint centre;  // programmed centre (I/J/K arcs)
+  bool has_centre = false;
+  double cr = 0;  // CR= arcs
   Decimal feed;
   std::array<AuxFunction, BlockWords::kMaxAux> aux{};
   int aux_count = 0;
@@ -36,7 +38,9 @@ struct BlockCopy {
     c.rapid = b.state.motion == Motion::kRapid;
     c.arc = b.is_arc();
     c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
+    c.has_centre = b.centre.has_value();
     if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
+    if (b.words.cr) c.cr = b.words.cr->to_double();
     c.feed = b.state.feed;
     c.aux = b.words.aux;
     c.aux_count = b.words.aux_count;
@@ -98,8 +102,8 @@ struct Engine::State {
     d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin = margin;
     sink.decision(d);
   }
-  void raise(int number, int line, std::optional<std::int64_t> block) {
-    sink.alarm(make_alarm(number, line, block));
+  void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
+    sink.alarm(make_alarm(number, line, block, clause));
     stopped = true;
   }
   void actions(BlockCopy& b, const PathPoint& at) {
@@ -131,8 +135,9 @@ struct Engine::State {
   }
 
   Element element_of(const BlockCopy& c) const {
-    return c.arc ? Element::circle(ab(c.start), ab(c.end), ab(c.centre), c.sense)
-                 : Element::line(ab(c.start), ab(c.end));
+    if (!c.arc) return Element::line(ab(c.start), ab(c.end));
+    if (c.has_centre) return Element::circle(ab(c.start), ab(c.end), ab(c.centre), c.sense);
+    return Element::circle_by_radius(ab(c.start), ab(c.end), c.cr, c.sense);
   }
 
   // TRC-DUMMY-1: blocks without motion in the plane run at the corner point P*.
@@ -437,10 +442,17 @@ struct Engine::State {
   // ARC-CENTRE-2: the end point may miss the circle about the programmed centre by at most
   // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
   bool arc_is_consistent(const Block& b) {
-    if (!b.centre)
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "circle programmed with CR=");
     PlaneAxes ax = plane_axes(b.state.plane);
+    if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point
+      double cr = std::fabs(b.words.cr->to_double());
+      Vec2 s0{coord(b.start, ax.abscissa).to_double(), coord(b.start, ax.ordinate).to_double()};
+      Vec2 e0{coord(b.end, ax.abscissa).to_double(), coord(b.end, ax.ordinate).to_double()};
+      double chord = norm(e0 - s0);
+      bool reachable = chord > 0 && chord <= 2 * cr;
+      decide("ARC-CR-1", b.words.line, reachable ? "circle" : "unreachable", 2 * cr - chord);
+      if (!reachable) raise(14040, b.words.line, b.words.number, "ARC-CR-1");
+      return reachable;
+    }
     auto at = [&](const Point3& p) {
       return Vec2{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()};
     };

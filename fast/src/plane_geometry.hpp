@@ -30,6 +30,7 @@ struct Element {
 
   static Element line(Vec2 s, Vec2 e);
   static Element circle(Vec2 s, Vec2 e, Vec2 programmed_centre, int sense);
+  static Element circle_by_radius(Vec2 s, Vec2 e, double cr, int sense);  // ARC-CR-1
 
   Vec2 start_tangent() const { return arc ? tangent_at(start) : unit; }  // unit vectors
   Vec2 end_tangent() const { return arc ? tangent_at(end) : unit; }

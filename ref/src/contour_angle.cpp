@@ -2,6 +2,7 @@
 
 #include <mpfr.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "kernel.hpp"
@@ -18,6 +19,8 @@ struct Mpfr {
   Mpfr(const Mpfr&) = delete;
   Mpfr& operator=(const Mpfr&) = delete;
 };
+
+FT to_ft_q(const mpq_class& q) { return FT(CORE::BigRat(q.get_mpq_t())); }
 
 mpq_class threshold_rational(const Decimal& t) {
   mpq_class q(mpz_class(int128_to_string(t.units())), mpz_class(Decimal::kUnitsPerOne));
@@ -119,7 +122,61 @@ std::string margin_degrees(const mpz_class& cross, const mpz_class& dot, const m
   return (exact_sign < 0 ? "-" : "") + std::string(buf);
 }
 
+int sign_cos_difference_exact(const FT& dot, const FT& l2, const mpq_class& t) {
+  mpq_class c2;
+  int cs = 0;
+  int qs = static_cast<int>(CGAL::sign(dot));
+  if (special_cosine(t, c2, cs)) {
+    if (cs != qs) return cs > qs ? 1 : -1;
+    if (cs == 0) return 0;
+    int magnitude = static_cast<int>(CGAL::compare(to_ft_q(c2), dot * dot / l2));
+    return cs > 0 ? magnitude : -magnitude;
+  }
+  FT q = dot / CGAL::sqrt(l2);
+  for (mpfr_prec_t bits = 128; bits <= 4096; bits *= 2) {
+    Mpfr arg(bits), cos_t(bits), bound(bits), lo(bits), hi(bits);
+    mpfr_const_pi(arg.v, MPFR_RNDN);
+    mpfr_mul_q(arg.v, arg.v, t.get_mpq_t(), MPFR_RNDN);
+    mpfr_div_ui(arg.v, arg.v, 180, MPFR_RNDN);
+    mpfr_cos(cos_t.v, arg.v, MPFR_RNDN);
+    mpfr_set_ui_2exp(bound.v, 64, -bits, MPFR_RNDN);  // |cos_t - cos T| < 16 * 2^-bits, with room
+    mpfr_sub(lo.v, cos_t.v, bound.v, MPFR_RNDD);
+    mpfr_add(hi.v, cos_t.v, bound.v, MPFR_RNDU);
+    mpq_class lq, hq;
+    mpfr_get_q(lq.get_mpq_t(), lo.v);
+    mpfr_get_q(hq.get_mpq_t(), hi.v);
+    if (CGAL::compare(q, to_ft_q(lq)) == CGAL::SMALLER) return 1;  // cos theta < cos T
+    if (CGAL::compare(q, to_ft_q(hq)) == CGAL::LARGER) return -1;
+  }
+  return 0;
+}
+
 }  // namespace
+
+AngleComparison compare_contour_angle_exact(const FT& cross, const FT& dot, const FT& squared_lengths_product,
+                                            const Decimal& threshold_degrees) {
+  mpq_class t = threshold_rational(threshold_degrees);
+  AngleComparison r;
+  r.sign = sign_cos_difference_exact(dot, squared_lengths_product, t);
+  if (r.sign == 0) {
+    r.margin_text = "0";
+    return r;
+  }
+  // Digits only (the sign is decided above): the angle from the nearest doubles.
+  Mpfr theta(128), s(128), c(128), pi(128);
+  mpfr_set_d(s.v, std::fabs(CGAL::to_double(cross)), MPFR_RNDN);
+  mpfr_set_d(c.v, CGAL::to_double(dot), MPFR_RNDN);
+  mpfr_atan2(theta.v, s.v, c.v, MPFR_RNDN);
+  mpfr_const_pi(pi.v, MPFR_RNDN);
+  mpfr_mul_ui(theta.v, theta.v, 180, MPFR_RNDN);
+  mpfr_div(theta.v, theta.v, pi.v, MPFR_RNDN);
+  mpfr_sub_q(theta.v, theta.v, t.get_mpq_t(), MPFR_RNDN);
+  mpfr_abs(theta.v, theta.v, MPFR_RNDN);
+  char buf[64];
+  mpfr_snprintf(buf, sizeof buf, "%.17Re", theta.v);
+  r.margin_text = (r.sign < 0 ? "-" : "") + std::string(buf);
+  return r;
+}
 
 AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& dot,
                                       const mpz_class& squared_lengths_product, const Decimal& threshold_degrees) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cutcom/decimal.hpp"
+#include "kernel.hpp"
 
 namespace cutcom::ref {
 
@@ -25,5 +26,12 @@ struct AngleComparison {
 // increasing precision always reaches a decision.
 AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& dot,
                                       const mpz_class& squared_lengths_product, const Decimal& threshold_degrees);
+
+// The same for directions with square roots (CR= circles), given as exact numbers. cos T is
+// bracketed by rationals (MPFR, growing precision) and compared exactly with cos(theta); the
+// special thresholds are compared exactly as above. Equal to 2^-4096 counts as equal: possible
+// only when cos T is itself a nest of square roots (a constructible T such as 36 or 22.5).
+AngleComparison compare_contour_angle_exact(const FT& cross, const FT& dot, const FT& squared_lengths_product,
+                                            const Decimal& threshold_degrees);
 
 }  // namespace cutcom::ref

@@ -27,6 +27,7 @@ ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
   mpz_class dx = units_of(coord(block.end, axes.abscissa)) - units_of(coord(block.start, axes.abscissa));
   mpz_class dy = units_of(coord(block.end, axes.ordinate)) - units_of(coord(block.start, axes.ordinate));
   e.start_tangent = e.end_tangent = {mpq_class(dx), mpq_class(dy)};
+  e.start_dir = e.end_dir = Vector(to_ft(dx), to_ft(dy));
   e.a = plane_point(block.start, axes);
   e.b = plane_point(block.end, axes);
   e.d = e.b - e.a;
@@ -36,7 +37,49 @@ ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
   return e;
 }
 
+namespace {
+// ARC-CR-1: the centre of a CR= circle, on the side of the chord that makes it the short arc for
+// CR > 0 and the long one for CR < 0: m + k perp(d) sqrt(CR^2/|d|^2 - 1/4), k = +1 for G3 with
+// CR > 0 or G2 with CR < 0.
+ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
+  ContourElement e;
+  e.kind = ContourElement::Kind::kArc;
+  e.rational = false;
+  e.line = block.words.line;
+  e.number = block.words.number;
+  e.start3 = block.start;
+  e.end3 = block.end;
+  e.sense = block.state.motion == Motion::kArcCcw ? 1 : -1;
+  mpq_class sa = units_q(coord(block.start, axes.abscissa)), sb = units_q(coord(block.start, axes.ordinate));
+  mpq_class ea = units_q(coord(block.end, axes.abscissa)), eb = units_q(coord(block.end, axes.ordinate));
+  mpq_class cr = units_q(*block.words.cr);
+  mpq_class da = ea - sa, db = eb - sb;
+  mpq_class q = cr * cr / (da * da + db * db) - mpq_class(1, 4);
+  int k = (e.sense > 0) == (sgn(cr) > 0) ? 1 : -1;
+  FT h = sgn(q) == 0 ? FT(0) : CGAL::sqrt(to_ft(q));
+  e.a = plane_point(block.start, axes);
+  e.b = plane_point(block.end, axes);
+  e.centre = Point(to_ft((sa + ea) / 2) + FT(k) * (-to_ft(db)) * h, to_ft((sb + eb) / 2) + FT(k) * to_ft(da) * h);
+  e.radius_squared = cr * cr;
+  e.radius = to_ft(abs(cr));
+  Vector rs = e.a - e.centre, re = e.b - e.centre;
+  e.start_dir = Vector(-rs.y(), rs.x()) * FT(e.sense);
+  e.end_dir = Vector(-re.y(), re.x()) * FT(e.sense);
+  return e;
+}
+}  // namespace
+
+CrReach cr_reach(const Block& block, PlaneAxes axes) {
+  mpq_class da = units_q(coord(block.end, axes.abscissa)) - units_q(coord(block.start, axes.abscissa));
+  mpq_class db = units_q(coord(block.end, axes.ordinate)) - units_q(coord(block.start, axes.ordinate));
+  mpq_class cr = units_q(*block.words.cr);
+  mpq_class chord2 = da * da + db * db;
+  bool reachable = sgn(chord2) > 0 && chord2 <= 4 * cr * cr;
+  return {reachable, FT(2) * to_ft(abs(cr)) - CGAL::sqrt(to_ft(chord2))};
+}
+
 ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
+  if (!block.centre) return of_cr_arc(block, axes);
   ContourElement e;
   e.kind = Kind::kArc;
   e.line = block.words.line;
@@ -64,6 +107,8 @@ ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
   e.radius = CGAL::sqrt(to_ft(e.radius_squared));
   e.start_tangent = arc_tangent(sa, sb, ca, cb, e.sense);
   e.end_tangent = arc_tangent(ea, eb, ca, cb, e.sense);
+  e.start_dir = Vector(to_ft(e.start_tangent.a), to_ft(e.start_tangent.b));
+  e.end_dir = Vector(to_ft(e.end_tangent.a), to_ft(e.end_tangent.b));
   e.a = plane_point(block.start, axes);
   e.b = plane_point(block.end, axes);
   return e;
@@ -95,6 +140,12 @@ ArcTolerance arc_end_point_check(const Block& block, PlaneAxes axes, const Decim
   FT tolerance = CGAL::compare(by_factor, constant) == CGAL::LARGER ? by_factor : constant;
   FT excess = deviation - tolerance;
   return {CGAL::sign(excess) != CGAL::POSITIVE, excess};
+}
+
+CornerKind classify_corner(const Vector& t1, const Vector& t2, int side) {
+  CGAL::Sign cross = CGAL::sign(t1.x() * t2.y() - t1.y() * t2.x());
+  if (cross == CGAL::ZERO) return CGAL::sign(t1 * t2) == CGAL::POSITIVE ? CornerKind::kTangent : CornerKind::kReversal;
+  return static_cast<int>(cross) * side > 0 ? CornerKind::kInner : CornerKind::kOuter;
 }
 
 CornerClass classify_corner(const RationalVector& t1, const RationalVector& t2, int side) {

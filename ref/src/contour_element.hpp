@@ -16,11 +16,13 @@ struct RationalVector {
 
 struct ContourElement {
   enum class Kind { kLine, kArc } kind = Kind::kLine;
-  int line = 0;                        // source line
-  std::optional<std::int64_t> number;  // N number
-  Point3 start3, end3;                 // programmed positions (exact decimals)
-  Point a, b;                          // start and end in the plane (units of 10^-9 mm)
-  RationalVector start_tangent, end_tangent;
+  int line = 0;                               // source line
+  std::optional<std::int64_t> number;         // N number
+  Point3 start3, end3;                        // programmed positions (exact decimals)
+  Point a, b;                                 // start and end in the plane (units of 10^-9 mm)
+  RationalVector start_tangent, end_tangent;  // valid when `rational`
+  bool rational = true;                       // false for CR= circles (centre with a square root)
+  Vector start_dir, end_dir;                  // tangent directions, always (exact)
 
   // Lines.
   Vector d;       // b - a
@@ -35,7 +37,7 @@ struct ContourElement {
   bool full_circle = false;
 
   static ContourElement of_line(const Block& block, PlaneAxes axes);
-  static ContourElement of_arc(const Block& block, PlaneAxes axes);
+  static ContourElement of_arc(const Block& block, PlaneAxes axes);  // I/J/K or CR=
   bool is_arc() const { return kind == Kind::kArc; }
 
   // Unit left normal of the tangent at the start / end (exact, with one square root).
@@ -61,6 +63,15 @@ struct CornerClass {
   mpz_class a1, b1, a2, b2;
 };
 CornerClass classify_corner(const RationalVector& end_tangent, const RationalVector& start_tangent, int side);
+// The same from exact (possibly irrational) directions.
+CornerKind classify_corner(const Vector& end_tangent, const Vector& start_tangent, int side);
+
+// ARC-CR-1: a CR= circle reaches its end point if 0 < chord <= 2 |CR|. Margin 2|CR| - chord.
+struct CrReach {
+  bool reachable;
+  FT margin;
+};
+CrReach cr_reach(const Block& block, PlaneAxes axes);
 
 FT to_ft(const mpq_class& q);
 

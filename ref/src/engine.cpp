@@ -68,8 +68,8 @@ class Reference {
     d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin_exact = std::move(margin);
     sink_.decision(d);
   }
-  void raise(int number, const Block& at) {
-    sink_.alarm(make_alarm(number, at.words.line, at.words.number));
+  void raise(int number, const Block& at, std::string_view clause = {}) {
+    sink_.alarm(make_alarm(number, at.words.line, at.words.number, clause));
     stopped_ = true;
   }
 
@@ -134,10 +134,14 @@ class Reference {
   // ARC-CENTRE-2: a circle's end point may miss the circle about its programmed centre by at most
   // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
   bool arc_is_consistent(const Block& b) {
-    if (!b.centre)
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "circle programmed with CR=");
-    ArcTolerance t = arc_end_point_check(b, plane_axes(b.state.plane), md_.circle_error_const, md_.circle_error_factor);
+    PlaneAxes axes = plane_axes(b.state.plane);
+    if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point
+      CrReach reach = cr_reach(b, axes);
+      decide("ARC-CR-1", b.words.line, reach.reachable ? "circle" : "unreachable", exact_mm(reach.margin));
+      if (!reach.reachable) raise(14040, b, "ARC-CR-1");
+      return reach.reachable;
+    }
+    ArcTolerance t = arc_end_point_check(b, axes, md_.circle_error_const, md_.circle_error_factor);
     decide("ARC-CENTRE-2", b.words.line, t.within ? "within" : "beyond", exact_mm(t.excess));
     if (!t.within) raise(14040, b);
     return t.within;
@@ -359,31 +363,49 @@ class Reference {
     FT next_radius;
     if (!equidistant_exists(next_block, next, next_radius)) return;
     const ContourElement& first = *open_;
-    CornerClass c = classify_corner(first.end_tangent, next.start_tangent, comp_->s);  // TRC-CORNER-1
+    // TRC-CORNER-1 on the tangents: rational predicates where both are rational, exact Expr signs
+    // otherwise (CR= circles).
+    bool rational = first.rational && next.rational;
+    std::optional<CornerClass> rc;
+    CornerKind kind;
+    FT cross, dot;
+    if (rational) {
+      rc = classify_corner(first.end_tangent, next.start_tangent, comp_->s);
+      kind = rc->kind, cross = to_ft(rc->cross), dot = to_ft(rc->dot);
+    } else {
+      kind = classify_corner(first.end_dir, next.start_dir, comp_->s);
+      cross = first.end_dir.x() * next.start_dir.y() - first.end_dir.y() * next.start_dir.x();
+      dot = first.end_dir * next.start_dir;
+    }
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
-    FT sine = FT(comp_->s) * to_ft(c.cross) /
-              CGAL::sqrt(to_ft(c.dot * c.dot + c.cross * c.cross));  // s * sin(phi), |t1||t2| = sqrt(dot^2 + cross^2)
-    decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(c.kind)], exact_text(sine));
+    FT sine = FT(comp_->s) * cross / CGAL::sqrt(dot * dot + cross * cross);  // |t1||t2| = sqrt(dot^2 + cross^2)
+    decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(kind)], exact_text(sine));
 
-    bool circle = c.kind == CornerKind::kReversal;  // TRC-G450-3
-    if (c.kind == CornerKind::kOuter) {
-      mpz_class cross = c.a1 * c.b2 - c.b1 * c.a2, dot = c.a1 * c.a2 + c.b1 * c.b2;
-      mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
-      if (next_block.state.corner == CornerMode::kG451) {
-        // TRC-CORNER-3: G451 becomes G450 when the contour angle exceeds MD20210.
-        AngleComparison a = compare_contour_angle(cross, dot, l2, md_.cutcom_corner_limit);
+    bool circle = kind == CornerKind::kReversal;  // TRC-G450-3
+    if (kind == CornerKind::kOuter) {
+      bool g451 = next_block.state.corner == CornerMode::kG451;
+      // TRC-CORNER-3: G451 becomes G450 above MD20210; TRC-CORNER-4: G450 becomes G451 below MD20230.
+      const Decimal& limit = g451 ? md_.cutcom_corner_limit : md_.cutcom_curve_insert_limit;
+      AngleComparison a;
+      if (rational) {
+        const CornerClass& c = *rc;
+        mpz_class ic = c.a1 * c.b2 - c.b1 * c.a2, id = c.a1 * c.a2 + c.b1 * c.b2;
+        mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
+        a = compare_contour_angle(ic, id, l2, limit);
+      } else {
+        a = compare_contour_angle_exact(cross, dot, dot * dot + cross * cross, limit);
+      }
+      if (g451) {
         circle = a.sign > 0;
         decide("TRC-CORNER-3", next_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
       } else {
-        // TRC-CORNER-4: G450 becomes G451 when the contour angle is below MD20230.
-        AngleComparison a = compare_contour_angle(cross, dot, l2, md_.cutcom_curve_insert_limit);
         circle = !(a.sign < 0);
         decide("TRC-CORNER-4", next_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
       }
     }
     const Point vertex = first.b;  // a copy: open() replaces the element it comes from
     if (circle) return transition_circle(next_block, next, next_radius, vertex);
-    if (c.kind == CornerKind::kTangent) {
+    if (kind == CornerKind::kTangent) {
       // Both equidistants pass through the common normal point.
       Point x = equidistant_point<Kernel>(vertex, first.end_normal(), comp_->side_radius);
       if (!close_open(x, next_block, true)) return;
@@ -393,13 +415,13 @@ class Reference {
     std::optional<Point> x;
     if (!first.is_arc() && !next.is_arc()) {
       // TRC-G451-1 / TRC-INNER-1 for two straight blocks.
-      FT trim = corner_trim<Kernel>(to_ft(c.cross), to_ft(c.dot), first.length, next.length, comp_->side_radius);
+      FT trim = corner_trim<Kernel>(cross, dot, first.length, next.length, comp_->side_radius);
       x = corner_intersection<Kernel>(vertex, first.normal, first.d, first.length, comp_->side_radius, trim);
     } else {
       // TRC-ARC-CORNER-1: the intersection of the equidistants' carriers nearest to the corner.
       x = nearest_intersection(carrier_of(first, open_radius_), carrier_of(next, next_radius), vertex);
       decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none");
-      if (!x && c.kind == CornerKind::kOuter)
+      if (!x && kind == CornerKind::kOuter)
         return transition_circle(next_block, next, next_radius, vertex);  // TRC-ARC-CORNER-2
       if (!x) return raise(10751, next_block);
     }

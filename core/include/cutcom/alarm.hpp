@@ -27,7 +27,8 @@ struct Alarm {
   std::string text;  // catalogue text, completed with the block
 };
 
-Alarm make_alarm(int number, int line, std::optional<std::int64_t> block);
+// `clause` names the raising clause where the catalogue's (the usual one) is not it.
+Alarm make_alarm(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {});
 
 // Something a user should know that does not stop the program.
 struct Notice {
