@@ -11,6 +11,15 @@ std::string fixed(std::int64_t units, int decimals) {
   return fmt::format("{}{}.{:0{}}", units < 0 ? "-" : "", a / one, a % one, decimals);
 }
 
+namespace {
+// The corner mode of a contour block, and the new side where it changes.
+std::string side_word(const Step& s, bool right) {
+  std::string w = s.g451 ? "G451" : "G450";
+  if (s.flip) w += right ? " G42" : " G41";
+  return w;
+}
+}  // namespace
+
 std::string to_program(const ContourCase& c) {
   // Plane axes: abscissa / ordinate / applicate letters for G17, G18, G19.
   const char* a = c.plane == 17 ? "X" : c.plane == 18 ? "Z" : "Y";
@@ -24,6 +33,7 @@ std::string to_program(const ContourCase& c) {
   p += fmt::format("N{} G1 {} {}{} {}{} F500\n", n, c.right ? "G42" : "G41", a, fixed(c.first_x, c.decimals), b,
                    fixed(c.first_y, c.decimals));
   std::int64_t x = c.first_x, y = c.first_y;
+  bool right = c.right;
   int depth = 0;
   for (const Step& s : c.steps) {
     for (int k = 0; k < s.dummies; ++k) {
@@ -31,20 +41,21 @@ std::string to_program(const ContourCase& c) {
       p += k % 2 == 0 ? fmt::format("N{} G1 {}-{}\n", n, h, ++depth) : fmt::format("N{} M8\n", n);
     }
     x += s.dx, y += s.dy;
+    if (s.flip) right = !right;
     n += 10;
     if (s.arc && s.cr != 0) {
       p += fmt::format("N{} {} {}{} {}{} CR={} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
-                       fixed(y, c.decimals), fixed(s.cr, c.decimals), s.g451 ? "G451" : "G450");
+                       fixed(y, c.decimals), fixed(s.cr, c.decimals), side_word(s, right));
     } else if (s.arc) {
       // Centre words of the plane: I/J (G17), K/I (G18), J/K (G19).
       const char* ci = c.plane == 17 ? "I" : c.plane == 18 ? "K" : "J";
       const char* cj = c.plane == 17 ? "J" : c.plane == 18 ? "I" : "K";
       p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
                        fixed(y, c.decimals), ci, fixed(s.ci, c.decimals), cj, fixed(s.cj, c.decimals),
-                       s.g451 ? "G451" : "G450");
+                       side_word(s, right));
     } else {
       p += fmt::format("N{} G1 {}{} {}{} {}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
-                       s.g451 ? "G451" : "G450");
+                       side_word(s, right));
     }
   }
   n += 10;

@@ -17,6 +17,7 @@ struct Step {
   bool ccw = false;             // G3
   std::int64_t ci = 0, cj = 0;  // centre relative to the block's start (I, J in the plane)
   std::int64_t cr = 0;          // != 0: the circle is written with CR= instead
+  bool flip = false;            // the block changes G41 <-> G42 (TRC-SIDE-1)
 };
 
 struct ContourCase {

@@ -35,7 +35,11 @@ void common(ContourCase& c) {
     c.md20210 = *element(0, 45, 90, 135, 180);
     c.md20230 = *element(0, 45, 90);
   }
-  for (Step& s : c.steps) {
+  for (std::size_t i = 0; i < c.steps.size(); ++i) {
+    Step& s = c.steps[i];
+    // Never in the first contour block after a selection (not supported there): not in the first
+    // step, nor right after another flip (that block is a selection block).
+    s.flip = i > 0 && !c.steps[i - 1].flip && *inRange(0, 12) == 0;
     s.g451 = *inRange(0, 3) == 0;
     s.dummies = *inRange(0, 8) == 0 ? *inRange(1, 3) : 0;
   }

@@ -381,3 +381,22 @@ TEST(SliceExamples, ReadingErrorAfterAnAlarmStillRejectsTheProgram) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: TRC-SIDE-1
+TEST(SliceExamples, SideChangeWithoutG40IsANewSelection) {
+  // N30 (+X, left side) ends at its normal end (10,2). N40 G42 is a selection block: from the tool
+  // at (10,2) to the normal point of N50 (+X, right normal (0,-1)) at (10,10): (10,8). N50's
+  // equidistant y = 8 to (20,8), then G40 to (30,10).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G42 X10 Y10\nN50 X20\nN60 G40 X30 Y10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kApproach, {10, 2, 0}, {10, 8, 0}),
+                  line(K::kOffset, {10, 8, 0}, {20, 8, 0}), line(K::kRetraction, {20, 8, 0}, {30, 10, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-SIDE-1", "side-change"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-SIDE-1", "side-change"));
+}
+
+}  // namespace
+}  // namespace cutcom::test

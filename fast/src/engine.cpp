@@ -224,9 +224,7 @@ struct Engine::State {
       raise(10757, b.words.line, b.words.number);
       return false;
     }
-    if (b.state.side != side)
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "change of compensation side G41/G42 without G40");
+    if (b.state.side != side) return true;  // TRC-SIDE-1, handled by the caller
     if (b.words.side)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "re-selection of G41/G42 while compensation is active");
@@ -265,6 +263,23 @@ struct Engine::State {
     arc(c, c.start, c.end, xyz(e.centre, h(c.start)), c.sense > 0, origin(c, OriginKind::kProgrammed));
   }
 
+  // TRC-SIDE-1 (ruling 30): G41 <-> G42 without G40: the old side's last element ends at its normal
+  // end point; the first new-side block with a plane axis is a selection block from the tool.
+  void change_side(const Block& b) {
+    if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
+    if (!b.programs_plane_axis()) {
+      decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
+      return queue_dummy(b);
+    }
+    decide("TRC-SIDE-1", b.words.line, "side-change");
+    Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+    if (!close_open(end, b.words.line, b.words.number)) return;
+    run_dummies(end);
+    PathPoint tool = xyz(end, h(BlockCopy::of(b).start));
+    select(b);
+    selection.start = tool;  // the approach starts where the tool is
+  }
+
   void select(const Block& b) {
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
       throw UnsupportedError(  // TRC-UNSUP-1
@@ -300,6 +315,9 @@ struct Engine::State {
       return off(b);
     }
     if (!check_active_block(b)) return;
+    if (b.state.side != side)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "change of compensation side G41/G42 before the first contour block");
     if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
     // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
     BlockCopy first = BlockCopy::of(b);
@@ -321,6 +339,7 @@ struct Engine::State {
   // --- phase: compensation active --------------------------------------------------------------
   void active(const Block& b) {
     if (!check_active_block(b)) return;
+    if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
     if (b.state.side == Side::kOff) {
       if (!b.programs_plane_axis()) {
         decide("TRC-DESEL-3", b.words.line, "no-plane-axis");

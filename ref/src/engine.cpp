@@ -180,8 +180,32 @@ class Reference {
     select(b);
   }
 
+  // TRC-SIDE-1 (ruling 30): G41 <-> G42 without G40. The last element of the old side ends at its
+  // normal end point (blocks held back run there); the first block with the new side that
+  // programs a plane axis is a selection block (NORM) starting where the tool is.
+  void change_side(const Block& b) {
+    if (b.is_arc()) return raise(10753, b);  // TRC-SEL-2: the new selection needs a linear block
+    if (!b.programs_plane_axis()) {
+      decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
+      return hold_back(b);
+    }
+    decide("TRC-SIDE-1", b.words.line, "side-change");
+    Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
+    if (!close_open(end, b, true)) return;
+    run_held_back(end);
+    ExactPoint tool = at({end, coord(b.start, comp_->axes.applicate)});
+    open_.reset();
+    comp_.reset();
+    select(b);
+    selection_from_ = tool;
+  }
+
+  // Where the selection block starts: its programmed start, or the tool after a side change.
+  ExactPoint selection_start() const { return selection_from_ ? *selection_from_ : at(selection_->start); }
+
   // TRC-SEL-1: the selection block; TRC-RADIUS-1/2: effective radius and side.
   void select(const Block& b) {
+    selection_from_.reset();
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "KONTC/KONTT approach (needs polynomial output)");
@@ -218,9 +242,7 @@ class Reference {
       raise(10757, b);
       return false;
     }
-    if (b.state.side != comp_->side)
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "change of compensation side G41/G42 without G40");
+    if (b.state.side != comp_->side) return true;  // TRC-SIDE-1, handled by the caller
     if (b.words.side)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "re-selection of G41/G42 while compensation is active");
@@ -256,13 +278,16 @@ class Reference {
     if (b.state.side == Side::kOff) {
       // TRC-SEL-8: deselected before any block moved in the plane: no selection took place.
       decide("TRC-SEL-8", selection_->words.line, "deselected-before-contour");
-      emit_line(*selection_, at(selection_->start), at(selection_->end), OriginKind::kProgrammed);
+      emit_line(*selection_, selection_start(), at(selection_->end), OriginKind::kProgrammed);
       run_held_back_uncompensated();
       phase_ = Phase::kOff;
       comp_.reset();
       return compensation_off(b);
     }
     if (!still_compensable(b)) return;
+    if (b.state.side != comp_->side)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "change of compensation side G41/G42 before the first contour block");
     if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
     approach_norm(b);
   }
@@ -274,7 +299,7 @@ class Reference {
     FT radius;
     if (!equidistant_exists(first_block, first, radius)) return;
     Point onto = equidistant_point<Kernel>(first.a, first.start_normal(), comp_->side_radius);
-    ExactPoint from = at(selection_->start);
+    ExactPoint from = selection_start();
     ExactPoint to = at({onto, coord(selection_->end, comp_->axes.applicate)});
     FT length = path.distance(from, to);
     decide("TRC-APPR-NORM-1", selection_->words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line",
@@ -288,6 +313,7 @@ class Reference {
   // --- compensation active -----------------------------------------------------------------------
   void compensation_active(const Block& b) {
     if (!still_compensable(b)) return;
+    if (b.state.side != Side::kOff && b.state.side != comp_->side) return change_side(b);
     if (b.state.side == Side::kOff) {
       if (!b.programs_plane_axis()) {  // TRC-DESEL-3
         decide("TRC-DESEL-3", b.words.line, "no-plane-axis");
@@ -502,7 +528,7 @@ class Reference {
       decide("TRC-END-1", selection_->words.line, "no-contour");
       sink_.notice(
           {selection_->words.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
-      emit_line(*selection_, at(selection_->start), at(selection_->end), OriginKind::kProgrammed);
+      emit_line(*selection_, selection_start(), at(selection_->end), OriginKind::kProgrammed);
       run_held_back_uncompensated();
     } else if (phase_ == Phase::kActive) {
       decide("TRC-END-1", open_->line, "active-at-end");
@@ -523,6 +549,7 @@ class Reference {
   bool d0_noticed_ = false;
   std::optional<Compensation> comp_;
   const Block* selection_ = nullptr;
+  std::optional<ExactPoint> selection_from_;  // set after a side change (TRC-SIDE-1)
   std::vector<const Block*> dummies_;
   std::optional<ContourElement> open_;
   const Block* open_block_ = nullptr;
