@@ -400,3 +400,35 @@ TEST(SliceExamples, SideChangeWithoutG40IsANewSelection) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: TRC-G450-1 TRC-CORNER-4 TRC-DESEL-1 TRC-RETR-NORM-1
+TEST(SliceExamples, ProgrammingManualOuterCornerExampleWithNorm) {
+  // Digest §7 (PGA19 p.269, PGA04 p.8-39): N10-N60 and N80-N100, with NORM for KONT (KONT is
+  // issue #4; from X35 Y0 the start lies behind the contour) and a tool radius of 5 assumed (the
+  // manual gives none). N40 runs +Y: left normal (-1,0), equidistant x = 5, approach to (5,10).
+  // At (10,60) the contour turns right into (0.8,-0.6): outer for G41, 126.87 deg, circle
+  // about (10,60) from (5,60) to (10,60) + 5 (0.6,0.8) = (13,64), clockwise. At (50,30) it turns
+  // right into (-2,-1)/sqrt5: outer, 116.57 deg, circle from (53,34) to
+  // (50,30) + 5 (1,-2)/sqrt5 = (50 + sqrt5, 30 - 2 sqrt5). N60 ends at its normal point
+  // (10 + sqrt5, 10 - 2 sqrt5); G40 retracts to (-20,50); then G0 Y100 and X200.
+  const double s5 = std::sqrt(5.0);
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\n"
+      "N10 G17 T1 D1 G0 X35 Y0 Z0 F500\nN20 G1 Z-5\nN30 G41 NORM G450 X10 Y10\nN40 Y60\nN50 X50 Y30\nN60 X10 Y10\n"
+      "N80 G40 X-20 Y50\nN90 G0 Y100\nN100 X200 M30\n";
+  Runs r = run_both(text);
+  expect_both(
+      r, {line(K::kProgrammed, {0, 0, 0}, {35, 0, 0}), line(K::kProgrammed, {35, 0, 0}, {35, 0, -5}),
+          line(K::kApproach, {35, 0, -5}, {5, 10, -5}), line(K::kOffset, {5, 10, -5}, {5, 60, -5}),
+          arc({5, 60, -5}, {13, 64, -5}, {10, 60, -5}, false), line(K::kOffset, {13, 64, -5}, {53, 34, -5}),
+          arc({53, 34, -5}, {50 + s5, 30 - 2 * s5, -5}, {50, 30, -5}, false),
+          line(K::kOffset, {50 + s5, 30 - 2 * s5, -5}, {10 + s5, 10 - 2 * s5, -5}),
+          line(K::kRetraction, {10 + s5, 10 - 2 * s5, -5}, {-20, 50, -5}),
+          line(K::kProgrammed, {-20, 50, -5}, {-20, 100, -5}), line(K::kProgrammed, {-20, 100, -5}, {200, 100, -5})});
+}
+
+}  // namespace
+}  // namespace cutcom::test
