@@ -65,8 +65,9 @@ class ZigZagProgram : public std::streambuf {
   std::string line_;
 };
 
-std::string example_text() {
-  std::ifstream in(CUTCOM_EXAMPLE);
+// 0: examples/pocket.mpf (lines), 1: examples/contour.mpf (lines and circles).
+std::string example_text(long which = 0) {
+  std::ifstream in(std::string(CUTCOM_EXAMPLES) + (which == 0 ? "/pocket.mpf" : "/contour.mpf"));
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
@@ -84,7 +85,7 @@ int example_blocks(const std::string& text) {
 // Both engines on the bundled example; the counter gives the time per block.
 template <bool kRef>
 void BM_Example(benchmark::State& state) {
-  std::string text = example_text();
+  std::string text = example_text(state.range(0));
   MachineData md;
   for (auto _ : state) {
     std::istringstream in(text);
@@ -101,8 +102,8 @@ void BM_Example(benchmark::State& state) {
   state.counters["us/block"] = benchmark::Counter(
       static_cast<double>(blocks), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
-BENCHMARK(BM_Example<false>)->Name("BM_ExampleFast")->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Example<true>)->Name("BM_ExampleRef")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Example<false>)->Name("BM_ExampleFast")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Example<true>)->Name("BM_ExampleRef")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // fast on long programs: blocks per second, and allocations per block (0 in the steady state:
 // the count does not grow with the program length).
