@@ -105,12 +105,12 @@ int sign_cos_difference(const mpz_class& dot, const mpz_class& l2, const mpq_cla
   throw std::logic_error("contour angle comparison did not separate (impossible by Niven's theorem)");
 }
 
-std::string margin_degrees(const mpz_class& cross, const mpz_class& dot, const mpq_class& t, int exact_sign) {
+// theta - T in degrees as margin text, theta = atan2(|sine|, cosine) from MPFR values already set
+// in `s` and `c`; the sign printed is the exact one decided by the caller.
+std::string margin_degrees(Mpfr& s, Mpfr& c, const mpq_class& t, int exact_sign) {
   if (exact_sign == 0) return "0";
-  Mpfr theta(192), c(192), s(192), pi(192);
-  mpfr_set_z(s.v, cross.get_mpz_t(), MPFR_RNDN);
+  Mpfr theta(192), pi(192);
   mpfr_abs(s.v, s.v, MPFR_RNDN);
-  mpfr_set_z(c.v, dot.get_mpz_t(), MPFR_RNDN);
   mpfr_atan2(theta.v, s.v, c.v, MPFR_RNDN);
   mpfr_const_pi(pi.v, MPFR_RNDN);
   mpfr_mul_ui(theta.v, theta.v, 180, MPFR_RNDN);
@@ -158,23 +158,11 @@ AngleComparison compare_contour_angle_exact(const FT& cross, const FT& dot, cons
   mpq_class t = threshold_rational(threshold_degrees);
   AngleComparison r;
   r.sign = sign_cos_difference_exact(dot, squared_lengths_product, t);
-  if (r.sign == 0) {
-    r.margin_text = "0";
-    return r;
-  }
   // Digits only (the sign is decided above): the angle from the nearest doubles.
-  Mpfr theta(128), s(128), c(128), pi(128);
-  mpfr_set_d(s.v, std::fabs(CGAL::to_double(cross)), MPFR_RNDN);
-  mpfr_set_d(c.v, CGAL::to_double(dot), MPFR_RNDN);
-  mpfr_atan2(theta.v, s.v, c.v, MPFR_RNDN);
-  mpfr_const_pi(pi.v, MPFR_RNDN);
-  mpfr_mul_ui(theta.v, theta.v, 180, MPFR_RNDN);
-  mpfr_div(theta.v, theta.v, pi.v, MPFR_RNDN);
-  mpfr_sub_q(theta.v, theta.v, t.get_mpq_t(), MPFR_RNDN);
-  mpfr_abs(theta.v, theta.v, MPFR_RNDN);
-  char buf[64];
-  mpfr_snprintf(buf, sizeof buf, "%.17Re", theta.v);
-  r.margin_text = (r.sign < 0 ? "-" : "") + std::string(buf);
+  Mpfr sine(192), cosine(192);
+  mpfr_set_d(sine.v, CGAL::to_double(cross), MPFR_RNDN);
+  mpfr_set_d(cosine.v, CGAL::to_double(dot), MPFR_RNDN);
+  r.margin_text = margin_degrees(sine, cosine, t, r.sign);
   return r;
 }
 
@@ -184,7 +172,10 @@ AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& d
   AngleComparison r;
   // theta > T  <=>  cos theta < cos T  (both angles in [0, 180] degrees).
   r.sign = sign_cos_difference(dot, squared_lengths_product, t);
-  r.margin_text = margin_degrees(cross, dot, t, r.sign);
+  Mpfr sine(192), cosine(192);
+  mpfr_set_z(sine.v, cross.get_mpz_t(), MPFR_RNDN);
+  mpfr_set_z(cosine.v, dot.get_mpz_t(), MPFR_RNDN);
+  r.margin_text = margin_degrees(sine, cosine, t, r.sign);
   return r;
 }
 

@@ -38,18 +38,24 @@ ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
 }
 
 namespace {
-// ARC-CR-1: the centre of a CR= circle, on the side of the chord that makes it the short arc for
-// CR > 0 and the long one for CR < 0: m + k perp(d) sqrt(CR^2/|d|^2 - 1/4), k = +1 for G3 with
-// CR > 0 or G2 with CR < 0.
-ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
+// What both kinds of circle take from their block.
+ContourElement arc_of(const Block& block) {
   ContourElement e;
   e.kind = ContourElement::Kind::kArc;
-  e.rational = false;
   e.line = block.words.line;
   e.number = block.words.number;
   e.start3 = block.start;
   e.end3 = block.end;
   e.sense = block.state.motion == Motion::kArcCcw ? 1 : -1;
+  return e;
+}
+
+// ARC-CR-1: the centre of a CR= circle, on the side of the chord that makes it the short arc for
+// CR > 0 and the long one for CR < 0: m + k perp(d) sqrt(CR^2/|d|^2 - 1/4), k = +1 for G3 with
+// CR > 0 or G2 with CR < 0.
+ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
+  ContourElement e = arc_of(block);
+  e.rational = false;
   mpq_class sa = units_q(coord(block.start, axes.abscissa)), sb = units_q(coord(block.start, axes.ordinate));
   mpq_class ea = units_q(coord(block.end, axes.abscissa)), eb = units_q(coord(block.end, axes.ordinate));
   mpq_class cr = units_q(*block.words.cr);
@@ -80,13 +86,7 @@ CrReach cr_reach(const Block& block, PlaneAxes axes) {
 
 ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
   if (!block.centre) return of_cr_arc(block, axes);
-  ContourElement e;
-  e.kind = Kind::kArc;
-  e.line = block.words.line;
-  e.number = block.words.number;
-  e.start3 = block.start;
-  e.end3 = block.end;
-  e.sense = block.state.motion == Motion::kArcCcw ? 1 : -1;
+  ContourElement e = arc_of(block);
   mpq_class sa = units_q(coord(block.start, axes.abscissa)), sb = units_q(coord(block.start, axes.ordinate));
   mpq_class ea = units_q(coord(block.end, axes.abscissa)), eb = units_q(coord(block.end, axes.ordinate));
   mpq_class ca = units_q(coord(*block.centre, axes.abscissa)), cb = units_q(coord(*block.centre, axes.ordinate));
