@@ -120,23 +120,51 @@ TEST(SliceExamples, ReversalIsAlwaysACircle) {
   EXPECT_TRUE(has_decision(r.fast, "TRC-CORNER-1", "reversal"));
 }
 
-// covers: TRC-ELEMENT-1 ALARM-1
+// covers: TRC-LOOK-1 TRC-LOOK-2 ALARM-1
 TEST(SliceExamples, EquidistantsWithoutIntersectionRaise10751) {
-  // N40 is 1 mm long; the inner corner before it shortens it by r tan(45) = 2 and the inner corner
-  // after it by another 2: its equidistant would run backwards. The path stops after N30's
-  // equidistant (0,2)->(8,2); the alarm names N50, the block whose preparation found it.
+  // N40 is 1 mm long; the inner corner before it would shorten it by r tan(45) = 2: its
+  // equidistant x = 8 cannot reach y = 2 (too short). The look-ahead tries N50: its equidistant
+  // y = 1 - 2 = -1 is parallel to N30's y = 2, no intersection; the G40 block ends the search:
+  // alarm 10751 names N60. N30's equidistant was never fixed, so the path stops at the approach.
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y1\nN50 X0\nN60 G40 X-10 Y0\n"));
   EXPECT_FALSE(r.fast_ok);
   EXPECT_FALSE(r.ref_ok);
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {8, 2, 0})});
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0})});
   for (const RunResult* x : {&r.fast, &r.ref}) {
     ASSERT_EQ(x->alarms.size(), 1u);
     EXPECT_EQ(x->alarms[0].number, 10751);
-    EXPECT_EQ(x->alarms[0].line, 7);
-    EXPECT_EQ(x->alarms[0].block, 50);
+    EXPECT_EQ(x->alarms[0].line, 8);
+    EXPECT_EQ(x->alarms[0].block, 60);
   }
-  EXPECT_TRUE(has_decision(r.ref, "TRC-ELEMENT-1", "reverses"));
+  EXPECT_TRUE(has_decision(r.ref, "TRC-LOOK-1", "too-short"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-LOOK-2", "none"));
+}
+
+// covers: TRC-LOOK-1 TRC-LOOK-2 TRC-LOOK-3 MD-20240-1
+TEST(SliceExamples, ShortBlockAtAnInnerCornerIsSkipped) {
+  // A 0.707 mm chamfer N40 inside a corner: the corner N30/N40 (45 deg, inside) would shorten N40
+  // by 2 tan(22.5) = 0.828 > 0.707: too short. The look-ahead intersects N30's equidistant y = 2
+  // with N50's x = 10.5 - 2 = 8.5: (8.5,2), 1.5 after N50's normal start (8.5,0.5) and 8 before
+  // its end: N40 is skipped, its M8 runs at (8.5,2).
+  std::string body = "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 X10.5 Y0.5 M8\nN50 Y10\nN60 G40 X20 Y20\n";
+  Runs r = run_both(program(body));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {8.5, 2, 0}), line(K::kOffset, {8.5, 2, 0}, {8.5, 10, 0}),
+                  line(K::kRetraction, {8.5, 10, 0}, {20, 20, 0})});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-LOOK-3", "skipped"));
+    ASSERT_EQ(x->actions.size(), 1u);
+    expect_point(x->actions[0].at, {8.5, 2, 0}, "M8 of the skipped block");
+  }
+  // With MD20240 = 1 nothing after the adjacent block is examined: alarm 10751 at N40.
+  MachineData md;
+  md.set("MD20240", "1");
+  Runs one = run_both(program(body), md);
+  for (const RunResult* x : {&one.fast, &one.ref}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10751);
+    EXPECT_EQ(x->alarms[0].block, 40);
+  }
 }
 
 // covers: TRC-ELEMENT-1

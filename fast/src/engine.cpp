@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "plane_geometry.hpp"
@@ -80,6 +81,11 @@ struct Engine::State {
   // Blocks without motion in the plane since the last traversing block (fixed capacity).
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
   int dummy_count = 0;
+  // Look-ahead (TRC-LOOK-*): blocks passed over while trying later blocks (fixed capacity: at most
+  // MD20240 traversing blocks, each after at most MD20250 blocks without plane motion).
+  bool looking = false;
+  std::array<BlockCopy, MachineData::kMaxCheckBlocks*(MachineData::kMaxDummyBlocks + 1)> skipped;
+  int skipped_count = 0, examined = 0, dummy_run = 0;
 
   // --- plane <-> workpiece coordinates -------------------------------------------------------
   Vec2 ab(const PathPoint& p) const { return {pick(p, axes.abscissa), pick(p, axes.ordinate)}; }
@@ -339,6 +345,7 @@ struct Engine::State {
   // --- phase: compensation active --------------------------------------------------------------
   void active(const Block& b) {
     if (!check_active_block(b)) return;
+    if (looking) return look_ahead(b);
     if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
     if (b.state.side == Side::kOff) {
       if (!b.programs_plane_axis()) {
@@ -401,9 +408,85 @@ struct Engine::State {
         return transition_circle(b, next, next_radius, v);  // TRC-ARC-CORNER-2
       if (!found) return raise(10751, b.words.line, b.words.number);
     }
+    if (c.kind != Corner::Kind::kTangent) {
+      // TRC-LOOK-1: the next equidistant must reach the intersection before its own end (at a
+      // tangent corner the point is its normal start).
+      Extent reach = extent_of(next, next_radius, x);
+      bool too_short = reach.left < 0;
+      decide("TRC-LOOK-1", b.words.line, too_short ? "too-short" : "reaches", reach.left);
+      if (too_short) return start_look_ahead(b);
+    }
     if (!close_open(x, b.words.line, b.words.number)) return;
     run_dummies(x);
     open_element(b, next, x, next_radius);
+  }
+
+  // Where a point lies on an element's equidistant: length from its normal start, left to its end.
+  struct Extent {
+    double along, left;
+  };
+  Extent extent_of(const Element& e, double radius, Vec2 p) const {
+    if (!e.arc) {
+      double along = dot(p - Element::offset(e.start, e.unit, s * r), e.unit);
+      return {along, e.length - along};
+    }
+    double along = signed_rotation(e.start - e.centre, p - e.centre, e.sense);
+    return {along * radius, (sweep(e) - along) * radius};
+  }
+
+  void skip(const BlockCopy& c) { skipped[static_cast<std::size_t>(skipped_count++)] = c; }
+
+  // TRC-LOOK-2: the blocks after a too-short one are tried in turn, up to MD20240 examined.
+  void start_look_ahead(const Block& too_short) {
+    for (int i = 0; i < dummy_count; ++i) skip(dummies[static_cast<std::size_t>(i)]);
+    dummy_count = 0;
+    skip(BlockCopy::of(too_short));
+    examined = 1, dummy_run = 0;
+    looking = true;
+    if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, too_short.words.line, too_short.words.number);
+  }
+
+  void look_ahead(const Block& b) {
+    if (b.state.side != side) {  // the contour ends before an intersection was found
+      decide("TRC-LOOK-2", b.words.line, "none");
+      return raise(10751, b.words.line, b.words.number);
+    }
+    if (!b.moves_in_plane()) {
+      if (++dummy_run > md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
+      return skip(BlockCopy::of(b));
+    }
+    dummy_run = 0;
+    ++examined;
+    BlockCopy c = BlockCopy::of(b);
+    Element cand = element_of(c);
+    double radius = 0;
+    if (!equidistant_exists(b, cand, radius)) return;
+    Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
+    Vec2 y;
+    bool found = nearest_intersection(carrier_of(open_el, open_radius), carrier_of(cand, radius), start, y);
+    bool valid = false;
+    double margin = -std::numeric_limits<double>::infinity();
+    if (found) {
+      Extent on = extent_of(cand, radius, y);
+      valid = on.along >= 0 && on.left >= 0;
+      margin = on.along < 0 ? on.along : on.left;
+    }
+    decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
+    if (!valid) {
+      skip(c);
+      if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, b.words.line, b.words.number);
+      return;
+    }
+    looking = false;
+    if (!close_open(y, b.words.line, b.words.number)) return;
+    // TRC-LOOK-3: skipped blocks lose their plane motion; the rest runs at the intersection.
+    for (int i = 0; i < skipped_count; ++i) {
+      BlockCopy& d = skipped[static_cast<std::size_t>(i)];
+      decide("TRC-LOOK-3", d.line, "skipped");
+      line(d, xyz(y, h(d.start)), xyz(y, h(d.end)), OriginKind::kInfeed, d.rapid);
+    }
+    skipped_count = 0;
+    open_element(b, cand, y, radius);
   }
 
   // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points; it
@@ -442,6 +525,11 @@ struct Engine::State {
 
   // TRC-END-1: the program ends with compensation in force.
   void end_of_program() {
+    if (looking) {  // the program ends before an intersection was found
+      const BlockCopy& last = skipped[static_cast<std::size_t>(skipped_count - 1)];
+      decide("TRC-LOOK-2", last.line, "none");
+      return raise(10751, last.line, last.number);
+    }
     if (phase == Phase::kApproach) {
       decide("TRC-END-1", selection.line, "no-contour");
       sink.notice({selection.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});

@@ -313,6 +313,7 @@ class Reference {
   // --- compensation active -----------------------------------------------------------------------
   void compensation_active(const Block& b) {
     if (!still_compensable(b)) return;
+    if (looking_) return look_ahead(b);
     if (b.state.side != Side::kOff && b.state.side != comp_->side) return change_side(b);
     if (b.state.side == Side::kOff) {
       if (!b.programs_plane_axis()) {  // TRC-DESEL-3
@@ -451,9 +452,98 @@ class Reference {
         return transition_circle(next_block, next, next_radius, vertex);  // TRC-ARC-CORNER-2
       if (!x) return raise(10751, next_block);
     }
+    // TRC-LOOK-1: the next equidistant must reach the intersection before its own end.
+    Extent reach = extent_of(next, next_radius, *x);
+    bool too_short = reach.after_end == CGAL::NEGATIVE;
+    decide("TRC-LOOK-1", next_block.words.line, too_short ? "too-short" : "reaches", reach.left_text);
+    if (too_short) return start_look_ahead(next_block);
     if (!close_open(*x, next_block)) return;
     run_held_back(*x);
     open(next_block, next, *x, next_radius);
+  }
+
+  // Where a point lies on an element's equidistant (normal start to normal end): the signed length
+  // from the normal start, and what is left to the normal end; exact. Empty if it lies within.
+  // TRC-LOOK-1 asks for the second only; TRC-LOOK-2 for both.
+  struct Extent {
+    CGAL::Sign before_start, after_end;  // NEGATIVE: before the start / beyond the end
+    std::string along_text, left_text;   // lengths from the normal start and to the normal end (mm)
+  };
+  Extent extent_of(const ContourElement& e, const FT& radius, const Point& p) const {
+    Extent x;
+    if (!e.is_arc()) {
+      Point start = equidistant_point<Kernel>(e.a, e.normal, comp_->side_radius);
+      FT along = (p - start) * e.d / e.length;
+      FT left = e.length - along;
+      x.before_start = CGAL::sign(along), x.after_end = CGAL::sign(left);
+      x.along_text = exact_mm(along), x.left_text = exact_mm(left);
+    } else {
+      ExactAngle sweep =
+          e.full_circle ? ExactAngle::full_turn() : ExactAngle::rotation(e.a - e.centre, e.b - e.centre, e.sense);
+      ExactAngle along = ExactAngle::signed_rotation(e.a - e.centre, p - e.centre, e.sense);
+      ExactAngle left = sweep + -along;
+      x.before_start = along.sign(), x.after_end = left.sign();
+      x.along_text = arc_length_text(along, radius), x.left_text = arc_length_text(left, radius);
+    }
+    return x;
+  }
+
+  // TRC-LOOK-2: the blocks after a too-short one are tried in turn, up to MD20240 examined after the
+  // open element; the held-back and passed-over blocks are skipped.
+  void start_look_ahead(const Block& too_short) {
+    for (const Block* d : dummies_) skipped_.push_back(d);
+    dummies_.clear();
+    skipped_.push_back(&too_short);
+    examined_ = 1;
+    looking_ = true;
+    if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, too_short);
+  }
+
+  void look_ahead(const Block& b) {
+    if (b.state.side != comp_->side) {  // the contour ends before an intersection was found
+      decide("TRC-LOOK-2", b.words.line, "none");
+      return raise(10751, b);
+    }
+    if (!b.moves_in_plane()) {
+      if (++dummy_run_ > md_.cutcom_maxnum_dummy_blocks) return raise(10762, b);  // TRC-DUMMY-2
+      skipped_.push_back(&b);
+      return;
+    }
+    dummy_run_ = 0;
+    ++examined_;
+    ContourElement cand = element_of(b);
+    FT radius;
+    if (!equidistant_exists(b, cand, radius)) return;
+    Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
+    std::optional<Point> y = nearest_intersection(carrier_of(*open_, open_radius_), carrier_of(cand, radius), start);
+    bool valid = false;
+    std::string margin = "-inf";  // no intersection at all
+    if (y) {
+      Extent on = extent_of(cand, radius, *y);
+      valid = on.before_start != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;
+      margin = on.before_start == CGAL::NEGATIVE ? on.along_text : on.left_text;
+    }
+    decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
+    if (!valid) {
+      skipped_.push_back(&b);
+      if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, b);
+      return;
+    }
+    looking_ = false;
+    if (!close_open(*y, b)) return;
+    run_skipped(*y);
+    open(b, cand, *y, radius);
+  }
+
+  // TRC-LOOK-3: skipped blocks lose their motion in the plane; their applicate motion and actions
+  // run at the intersection point, in programmed order.
+  void run_skipped(const Point& at_point) {
+    for (const Block* d : skipped_) {
+      decide("TRC-LOOK-3", d->words.line, "skipped");
+      emit_line(*d, at({at_point, coord(d->start, comp_->axes.applicate)}),
+                at({at_point, coord(d->end, comp_->axes.applicate)}), OriginKind::kInfeed);
+    }
+    skipped_.clear();
   }
 
   static std::optional<Point> nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
@@ -524,6 +614,10 @@ class Reference {
 
   // TRC-END-1: the program ends while compensation is selected.
   void end_of_program() {
+    if (looking_) {  // the program ends before an intersection was found
+      decide("TRC-LOOK-2", skipped_.back()->words.line, "none");
+      return raise(10751, *skipped_.back());
+    }
     if (phase_ == Phase::kApproach) {
       decide("TRC-END-1", selection_->words.line, "no-contour");
       sink_.notice(
@@ -556,6 +650,11 @@ class Reference {
   Point open_start_;
   FT open_radius_;  // arcs: radius of the open element's equidistant
   bool open_at_normal_start_ = false;
+  // Look-ahead (TRC-LOOK-*): blocks passed over, traversing blocks examined after the open element.
+  bool looking_ = false;
+  std::vector<const Block*> skipped_;
+  int examined_ = 0;
+  int dummy_run_ = 0;
 };
 
 }  // namespace
