@@ -73,7 +73,7 @@ double Tolerance::band(std::string_view clause) const {
   if (clause == "TRC-CORNER-3" || clause == "TRC-CORNER-4") return degrees;
   if (clause == "TRC-ELEMENT-1" || clause == "TRC-ARC-ELEMENT-1" || clause == "TRC-APPR-NORM-1" ||
       clause == "TRC-RETR-NORM-1" || clause == "TRC-LOOK-1" || clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" ||
-      clause == "ARC-CENTRE-2" || clause == "ARC-CR-1")
+      clause == "ARC-CENTRE-2" || clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1")
     return coordinate;
   return 0;  // decisions on exact decimals (block kinds, alarms) never diverge
 }
@@ -92,8 +92,10 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     if (r.clause == f.clause && r.line == f.line && r.branch == f.branch) continue;
     std::string where = fmt::format("decision {}: ref {} line {} {} (margin {}), fast {} line {} {} (margin {})", i,
                                     r.clause, r.line, r.branch, r.margin_exact, f.clause, f.line, f.branch, f.margin);
-    if (r.clause == f.clause && r.line == f.line && std::fabs(margin_value(r)) <= tol.band(r.clause)) {
+    // A decision without a margin never parts the runs legitimately.
+    if (r.clause == f.clause && r.line == f.line && r.has_margin && std::fabs(margin_value(r)) <= tol.band(r.clause)) {
       v.kind = Verdict::Kind::kKnifeEdge;  // legitimate: ref's margin lies inside the band
+      v.clause = std::string(r.clause);
       v.explanation = where + fmt::format(", band {:.3g}", tol.band(r.clause));
       return v;
     }

@@ -31,6 +31,7 @@ struct Tolerance {
 struct Verdict {
   enum class Kind { kAgree, kKnifeEdge, kDiverge } kind = Kind::kAgree;
   std::string explanation;  // what differs, where, and by how much
+  std::string clause;       // knife edge: the clause whose decision parted the runs
   double max_coordinate_error = 0;
 };
 

@@ -15,7 +15,7 @@ void check_agreement(const ContourCase& c) {
   RC_TAG(c.style);
   CaseRuns r = run_case(c, false);
   Verdict v = compare(r.ref, r.fast, r.tolerance);
-  RC_TAG(v.kind == Verdict::Kind::kKnifeEdge ? "knife-edge" : "agreeing");
+  RC_TAG(v.kind == Verdict::Kind::kKnifeEdge ? "knife-edge " + v.clause : "agreeing");
   RC_TAG(r.ref.alarms.empty() ? "no alarm" : "alarm " + std::to_string(r.ref.alarms[0].number));
   if (v.kind == Verdict::Kind::kDiverge) RC_FAIL(v.explanation);
 }
@@ -34,6 +34,14 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefOnVanishingElements, ()) { check_ag
 
 // covers: PROP-DIFF-1 TRC-ARC-EQ-1 TRC-ARC-CORNER-1 TRC-ARC-CORNER-2 TRC-ARC-ELEMENT-1 ARC-CENTRE-1
 RC_GTEST_PROP(Differential, FastAgreesWithRefWithCircles, ()) { check_agreement(*with_circles()); }
+
+// covers: PROP-DIFF-1 TRC-LOOK-1 TRC-LOOK-2 TRC-LOOK-3 MD-20240-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefOnTinyBlocks, ()) { check_agreement(*tiny_blocks()); }
+
+// covers: PROP-DIFF-1 TRC-ARC-EQ-1 TRC-ARC-ELEMENT-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefOnCirclesNearTheToolRadius, ()) {
+  check_agreement(*circles_near_radius());
+}
 
 // covers: PROP-CONT-1 PATH-CONT-1
 RC_GTEST_PROP(Fast, PathIsContinuousAndFinite, ()) {

@@ -197,13 +197,60 @@ rc::Gen<ContourCase> with_circles() {
   });
 }
 
+rc::Gen<ContourCase> tiny_blocks() {
+  return rc::gen::exec([] {
+    ContourCase c;
+    c.style = "tiny-blocks";
+    c.radius_um = *inRange<std::int64_t>(500, 5001);
+    std::size_t n = static_cast<std::size_t>(*inRange(3, 12));
+    c.steps.resize(n);
+    for (Step& s : c.steps) {
+      bool tiny = *inRange(0, 3) != 0;
+      std::int64_t m = tiny ? c.radius_um / 2 : 4 * c.radius_um;
+      s.dx = signed_um(m), s.dy = signed_um(m);
+      nonzero(s);
+    }
+    common(c);
+    if (*inRange(0, 3) == 0) c.md20210 = *element(100, 180);
+    return c;
+  });
+}
+
+rc::Gen<ContourCase> circles_near_radius() {
+  return rc::gen::exec([] {
+    ContourCase c;
+    c.style = "circle-near-radius";
+    c.radius_um = *inRange<std::int64_t>(1000, 10001);
+    std::size_t n = static_cast<std::size_t>(*inRange(1, 5));
+    c.steps.resize(n);
+    for (Step& s : c.steps) {
+      if (*rc::gen::arbitrary<bool>()) {
+        s.dx = signed_um(20000), s.dy = signed_um(20000);
+        nonzero(s);
+        continue;
+      }
+      // A half circle of radius r + e, e a few um either side (0 included): its inside equidistant
+      // is tiny, zero or collapsed.
+      std::int64_t radius = c.radius_um + *inRange<std::int64_t>(-3, 4);
+      bool along_x = *rc::gen::arbitrary<bool>();
+      s.arc = true, s.ccw = *rc::gen::arbitrary<bool>();
+      s.ci = along_x ? radius : 0, s.cj = along_x ? 0 : radius;
+      s.dx = 2 * s.ci, s.dy = 2 * s.cj;
+    }
+    common(c);
+    return c;
+  });
+}
+
 rc::Gen<ContourCase> any_contour() {
   return rc::gen::weightedOneOf<ContourCase>({{4, random_walk()},
                                               {3, grid_walk()},
                                               {2, near_tangent()},
                                               {2, near_reversal()},
                                               {1, notch()},
-                                              {4, with_circles()}});
+                                              {4, with_circles()},
+                                              {2, tiny_blocks()},
+                                              {1, circles_near_radius()}});
 }
 
 }  // namespace cutcom::props

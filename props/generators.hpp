@@ -14,6 +14,9 @@ rc::Gen<ContourCase> grid_walk();      // multiples of a grid step: exact 45/90 
 rc::Gen<ContourCase> near_tangent();   // successive directions differ by a few micrometres
 rc::Gen<ContourCase> near_reversal();  // successive directions almost opposite
 rc::Gen<ContourCase> with_circles();   // lines and I/J/K circles: tangent, inner, outer, full
-rc::Gen<ContourCase> notch();          // slots of width exactly 2r: elements of length 0
+rc::Gen<ContourCase> notch();
+rc::Gen<ContourCase> tiny_blocks();          // many blocks shorter than the radius: look-ahead and its window
+rc::Gen<ContourCase> circles_near_radius();  // circles whose radius is the tool radius within a few um          //
+                                             // slots of width exactly 2r: elements of length 0
 
 }  // namespace cutcom::props

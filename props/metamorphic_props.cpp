@@ -78,8 +78,12 @@ void check_image(const ContourCase& c, const PlaneMap& f) {
   RC_TAG(c.style);
   ContourCase image = apply(c, f);
   // Line 4 is the selection block: the first move (line 3) starts at the implicit X0 Y0 Z0.
-  std::string why = ref::exact_image_mismatch(to_program(c), to_program(image), machine_data_of(c),
-                                              workpiece_map(f, c.plane, c.decimals), 4);
+  // Lengths among the machine data scale with the contour (MD21000, the circle end point tolerance).
+  MachineData image_md = machine_data_of(c);
+  image_md.circle_error_const = *Decimal::parse(fixed(10'000 * f.radius_factor, 6)).value;  // 0.01 mm times the factor
+  MachineData md = machine_data_of(c);
+  std::string why = ref::exact_image_mismatch(to_program(c), to_program(image), md,
+                                              workpiece_map(f, c.plane, c.decimals), 4, &image_md);
   if (!why.empty()) RC_FAIL(why + "\nimage program:\n" + to_program(image));
 }
 

@@ -72,7 +72,7 @@ TEST(Cli, AlarmGivesExitOneWithThePathBeforeIt) {
   ASSERT_EQ(j["alarms"].size(), 1u);
   EXPECT_EQ(j["alarms"][0]["number"], 10751);
   EXPECT_EQ(j["alarms"][0]["line"], 7);  // the look-ahead found nothing up to the G40 block
-  EXPECT_EQ(j["path"].size(), 1u);        // the approach; N30's end was never fixed
+  EXPECT_EQ(j["path"].size(), 1u);       // the approach; N30's end was never fixed
 }
 
 // covers: CLI-1 NC-ERR-1

@@ -402,8 +402,9 @@ struct Engine::State {
       x = Element::offset(v, open_el.unit, s * r) - corner_trim(c, s, r) * open_el.unit;
     } else {
       // TRC-ARC-CORNER-1: the intersection of the carriers nearest to the corner.
-      bool found = nearest_intersection(carrier_of(open_el, open_radius), carrier_of(next, next_radius), v, x);
-      decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none");
+      Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(next, next_radius);
+      bool found = nearest_intersection(cu, cv, v, x);
+      decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", carrier_gap(cu, cv));
       if (!found && c.kind == Corner::Kind::kOuter)
         return transition_circle(b, next, next_radius, v);  // TRC-ARC-CORNER-2
       if (!found) return raise(10751, b.words.line, b.words.number);
@@ -463,9 +464,10 @@ struct Engine::State {
     if (!equidistant_exists(b, cand, radius)) return;
     Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
     Vec2 y;
-    bool found = nearest_intersection(carrier_of(open_el, open_radius), carrier_of(cand, radius), start, y);
+    Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(cand, radius);
+    bool found = nearest_intersection(cu, cv, start, y);
     bool valid = false;
-    double margin = -std::numeric_limits<double>::infinity();
+    double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
     if (found) {
       Extent on = extent_of(cand, radius, y);
       valid = on.along >= 0 && on.left >= 0;

@@ -1,5 +1,6 @@
 #include "plane_geometry.hpp"
 
+#include <algorithm>
 #include <numbers>
 
 namespace cutcom::fast {
@@ -98,6 +99,16 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& o
   Vec2 m = u.point + along * d;
   double h = std::sqrt(across2);
   return pick(m + h * left_normal(d), m - h * left_normal(d), h > 0, near, out);
+}
+
+double carrier_gap(const Carrier& u, const Carrier& v) {
+  if (u.circle != v.circle) {
+    const Carrier& l = u.circle ? v : u;
+    const Carrier& c = u.circle ? u : v;
+    return std::fabs(cross(l.direction, c.point - l.point)) / norm(l.direction) - c.radius;
+  }
+  double d = norm(v.point - u.point);
+  return std::max(d - (u.radius + v.radius), std::fabs(u.radius - v.radius) - d);
 }
 
 double signed_rotation(Vec2 from, Vec2 to, int sense) { return sense * std::atan2(cross(from, to), dot(from, to)); }

@@ -61,6 +61,8 @@ struct Carrier {
   double radius = 0;      // circle about `point`
 };
 bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& out);
+// <= 0 when two carriers (at least one a circle) meet: see ref's carrier_gap.
+double carrier_gap(const Carrier& u, const Carrier& v);
 
 // The signed rotation in (-pi, pi] from `from` to `to` in the sense `sense`, and the sweep in
 // (0, 2 pi] of a circle element.

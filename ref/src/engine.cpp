@@ -446,8 +446,10 @@ class Reference {
       x = corner_intersection<Kernel>(vertex, first.normal, first.d, first.length, comp_->side_radius, trim);
     } else {
       // TRC-ARC-CORNER-1: the intersection of the equidistants' carriers nearest to the corner.
-      x = nearest_intersection(carrier_of(first, open_radius_), carrier_of(next, next_radius), vertex);
-      decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none");
+      Carrier<Kernel> u = carrier_of(first, open_radius_), v = carrier_of(next, next_radius);
+      x = nearest_intersection(u, v, vertex);
+      decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none",
+             exact_mm(carrier_gap<Kernel>(u, v)));
       if (!x && kind == CornerKind::kOuter)
         return transition_circle(next_block, next, next_radius, vertex);  // TRC-ARC-CORNER-2
       if (!x) return raise(10751, next_block);
@@ -515,9 +517,11 @@ class Reference {
     FT radius;
     if (!equidistant_exists(b, cand, radius)) return;
     Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
-    std::optional<Point> y = nearest_intersection(carrier_of(*open_, open_radius_), carrier_of(cand, radius), start);
+    Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
+    std::optional<Point> y = nearest_intersection(u, v, start);
     bool valid = false;
-    std::string margin = "-inf";  // no intersection at all
+    // No intersection at all: the gap between the carriers (lines: parallel, "inf").
+    std::string margin = u.circle || v.circle ? exact_mm(carrier_gap<Kernel>(u, v)) : std::string("inf");
     if (y) {
       Extent on = extent_of(cand, radius, *y);
       valid = on.before_start != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;

@@ -48,6 +48,23 @@ struct Carrier {
   typename K::FT radius;           // circle only (> 0)
 };
 
+// How far apart two carriers are, at least one a circle: <= 0 exactly when they meet (the
+// margin of TRC-ARC-CORNER-1 and TRC-LOOK-2). Line and circle: distance of the centre from the
+// line less the radius; two circles: the larger of |C1C2| - (R1 + R2) and |R1 - R2| - |C1C2|.
+template <class K>
+typename K::FT carrier_gap(const Carrier<K>& u, const Carrier<K>& v) {
+  using KFT = typename K::FT;
+  if (u.circle != v.circle) {
+    const Carrier<K>& l = u.circle ? v : u;
+    const Carrier<K>& c = u.circle ? u : v;
+    KFT cross = l.direction.x() * (c.point.y() - l.point.y()) - l.direction.y() * (c.point.x() - l.point.x());
+    return CGAL::abs(cross) / CGAL::sqrt(l.direction.squared_length()) - c.radius;
+  }
+  KFT d = CGAL::sqrt((v.point - u.point).squared_length());
+  KFT outside = d - (u.radius + v.radius), inside = CGAL::abs(u.radius - v.radius) - d;
+  return CGAL::compare(outside, inside) == CGAL::LARGER ? outside : inside;
+}
+
 // Points common to two carriers (0, 1 or 2; tangency gives one).
 template <class K>
 std::vector<typename K::Point_2> carrier_intersections(const Carrier<K>& u, const Carrier<K>& v) {

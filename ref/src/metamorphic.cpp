@@ -42,8 +42,8 @@ bool equal(const ExactPoint& a, const ExactPoint& b) { return a.x == b.x && a.y 
 }  // namespace
 
 std::string exact_image_mismatch(const std::string& original, const std::string& mapped, const MachineData& md,
-                                 const AffineMap& map, int first_line) {
-  ExactRun a = run_text(original, md), b = run_text(mapped, md);
+                                 const AffineMap& map, int first_line, const MachineData* mapped_md) {
+  ExactRun a = run_text(original, md), b = run_text(mapped, mapped_md ? *mapped_md : md);
   if (a.result.decisions.size() != b.result.decisions.size())
     return fmt::format("{} decisions against {}", a.result.decisions.size(), b.result.decisions.size());
   for (std::size_t i = 0; i < a.result.decisions.size(); ++i) {

@@ -33,8 +33,10 @@ struct AffineMap {
 // Elements of source lines before `first_line` are not compared (the first move starts at the
 // implicit position X0 Y0 Z0, which is no part of the program and is not mapped).
 // Returns what differs, or an empty string.
+// `mapped_md`: machine data for the image where lengths among them must be mapped too (MD21000
+// under scaling); the original's by default.
 std::string exact_image_mismatch(const std::string& original, const std::string& mapped, const MachineData& md,
-                                 const AffineMap& map, int first_line = 1);
+                                 const AffineMap& map, int first_line = 1, const MachineData* mapped_md = nullptr);
 
 // Reads the program block by block and runs it. Returns false if an alarm stopped it.
 // With `checks`, also verifies the exact path (costs exact zero tests: milliseconds each).
