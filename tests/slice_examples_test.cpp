@@ -376,9 +376,10 @@ TEST(SliceExamples, ContourAngleExactlyOnTheLimitDoesNotSwitch) {
   EXPECT_EQ(below.ref.decisions[4].margin_exact.substr(0, 7), "-3.6551");
 }
 
-// covers: TRC-UNSUP-1
+// covers: TRC-UNSUP-1 TRC-DISC-1
 TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
   const std::pair<std::string, int> cases[] = {
+      {program("N20 G1 G41 X0 Y0 F100\nN30 X10 DISC=10\n"), 5},
       {program("N20 G1 G41 KONTT X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 KONT X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},

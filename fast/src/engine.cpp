@@ -583,6 +583,8 @@ bool Engine::stopped() const { return state_->stopped; }
 void Engine::push(const Block& b) {
   State& st = *state_;
   if (st.stopped) return;
+  if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
+    throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
   if (b.is_arc() && !st.arc_is_consistent(b)) return;
   switch (st.phase) {
     case State::Phase::kOff:

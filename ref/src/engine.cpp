@@ -120,6 +120,8 @@ class Reference {
 
   // --- one block ---------------------------------------------------------------------------------
   void step(const Block& b) {
+    if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
+      throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
     if (b.is_arc() && !arc_is_consistent(b)) return;
     switch (phase_) {
       case Phase::kOff:
