@@ -101,16 +101,25 @@ TEST(ArcExamples, OuterCornerLineToCircleWithTransitionCircle) {
                   offset_arc(from, end, {5, 5, 0}, true), line(K::kRetraction, end, {20, 20, 0})});
 }
 
-// covers: TRC-ARC-EQ-1 ALARM-1
-TEST(ArcExamples, CircleSmallerThanTheToolOnTheInsideRaises10751) {
-  // ccw about (1,0) with radius 1 < r = 2 on the inside: the equidistant collapses.
-  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X12 Y0 I1 J0\nN50 G1 G40 X20 Y0\n"));
-  for (const RunResult* x : {&r.fast, &r.ref}) {
+// covers: TRC-ARC-EQ-1 TRC-LOOK-1 TRC-LOOK-2 TRC-LOOK-3 ALARM-1
+TEST(ArcExamples, CircleSmallerThanTheToolOnTheInsideIsSkipped) {
+  // An inner fillet N40 of radius 1 < r = 2 (ccw about (10,1)): its equidistant collapses, the
+  // look-ahead intersects N30's y = 2 with N50's x = 11 - 2 = 9: (9,2), 1 after N50's normal
+  // start (9,1). The fillet is skipped.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X11 Y1 I0 J1\nN50 G1 Y10\nN60 G40 X20 Y20\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {9, 2, 0}), line(K::kOffset, {9, 2, 0}, {9, 10, 0}),
+                  line(K::kRetraction, {9, 10, 0}, {20, 20, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "collapses"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-LOOK-3", "skipped"));
+  // A half circle of radius 1 ending the contour: nothing after it meets N30's equidistant before
+  // the G40 block, which the alarm names.
+  Runs end = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X12 Y0 I1 J0\nN50 G1 G40 X20 Y0\n"));
+  for (const RunResult* x : {&end.fast, &end.ref}) {
     ASSERT_EQ(x->alarms.size(), 1u);
     EXPECT_EQ(x->alarms[0].number, 10751);
-    EXPECT_EQ(x->alarms[0].line, 6);
+    EXPECT_EQ(x->alarms[0].line, 7);
   }
-  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "collapses"));
 }
 
 // covers: TRC-ARC-CORNER-2

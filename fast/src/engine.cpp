@@ -200,12 +200,12 @@ struct Engine::State {
     return true;
   }
 
-  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; else alarm 10751.
+  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; a collapsed one is passed
+  // over by the look-ahead.
   bool equidistant_exists(const Block& b, const Element& e, double& radius) {
     if (!e.arc) return true;
     radius = e.equidistant_radius(s * r);
     decide("TRC-ARC-EQ-1", b.words.line, radius > 0 ? "concentric" : "collapses", radius);
-    if (!(radius > 0)) raise(10751, b.words.line, b.words.number);
     return radius > 0;
   }
 
@@ -329,7 +329,7 @@ struct Engine::State {
     BlockCopy first = BlockCopy::of(b);
     Element e = element_of(first);
     double radius = 0;
-    if (!equidistant_exists(b, e, radius)) return;
+    if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
     Vec2 q = Element::offset(e.start, e.start_tangent(), s * r);
     PathPoint to = xyz(q, h(selection.end));
     double length = std::sqrt((to.x - selection.start.x) * (to.x - selection.start.x) +
@@ -371,7 +371,7 @@ struct Engine::State {
   void corner(const Block& b) {
     Element next = element_of(BlockCopy::of(b));
     double next_radius = 0;
-    if (!equidistant_exists(b, next, next_radius)) return;
+    if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
     Vec2 v = open_el.end;
     Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
@@ -436,6 +436,11 @@ struct Engine::State {
   }
 
   void skip(const BlockCopy& c) { skipped[static_cast<std::size_t>(skipped_count++)] = c; }
+  // A candidate that does not do: passed over; alarm 10751 once MD20240 blocks were examined.
+  void pass_over(const BlockCopy& c) {
+    skip(c);
+    if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, c.line, c.number);
+  }
 
   // TRC-LOOK-2: the blocks after a too-short one are tried in turn, up to MD20240 examined.
   void start_look_ahead(const Block& too_short) {
@@ -461,7 +466,7 @@ struct Engine::State {
     BlockCopy c = BlockCopy::of(b);
     Element cand = element_of(c);
     double radius = 0;
-    if (!equidistant_exists(b, cand, radius)) return;
+    if (!equidistant_exists(b, cand, radius)) return pass_over(c);
     Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
     Vec2 y;
     Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(cand, radius);
@@ -474,11 +479,7 @@ struct Engine::State {
       margin = on.along < 0 ? on.along : on.left;
     }
     decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
-    if (!valid) {
-      skip(c);
-      if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, b.words.line, b.words.number);
-      return;
-    }
+    if (!valid) return pass_over(c);
     looking = false;
     if (!close_open(y, b.words.line, b.words.number)) return;
     // TRC-LOOK-3: skipped blocks lose their plane motion; the rest runs at the intersection.

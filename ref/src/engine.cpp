@@ -299,7 +299,7 @@ class Reference {
   void approach_norm(const Block& first_block) {
     ContourElement first = element_of(first_block);
     FT radius;
-    if (!equidistant_exists(first_block, first, radius)) return;
+    if (!equidistant_exists(first, radius)) return raise(10751, first_block);  // nothing before it to meet
     Point onto = equidistant_point<Kernel>(first.a, first.start_normal(), comp_->side_radius);
     ExactPoint from = selection_start();
     ExactPoint to = at({onto, coord(selection_->end, comp_->axes.applicate)});
@@ -390,7 +390,7 @@ class Reference {
   void corner(const Block& next_block) {
     ContourElement next = element_of(next_block);
     FT next_radius;
-    if (!equidistant_exists(next_block, next, next_radius)) return;
+    if (!equidistant_exists(next, next_radius)) return start_look_ahead(next_block);
     const ContourElement& first = *open_;
     // TRC-CORNER-1 on the tangents: rational predicates where both are rational, exact Expr signs
     // otherwise (CR= circles).
@@ -517,7 +517,7 @@ class Reference {
     ++examined_;
     ContourElement cand = element_of(b);
     FT radius;
-    if (!equidistant_exists(b, cand, radius)) return;
+    if (!equidistant_exists(cand, radius)) return pass_over(b);
     Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
     Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
     std::optional<Point> y = nearest_intersection(u, v, start);
@@ -530,15 +530,17 @@ class Reference {
       margin = on.before_start == CGAL::NEGATIVE ? on.along_text : on.left_text;
     }
     decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
-    if (!valid) {
-      skipped_.push_back(&b);
-      if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, b);
-      return;
-    }
+    if (!valid) return pass_over(b);
     looking_ = false;
     if (!close_open(*y, b)) return;
     run_skipped(*y);
     open(b, cand, *y, radius);
+  }
+
+  // A candidate that does not do: passed over; alarm 10751 once MD20240 blocks were examined.
+  void pass_over(const Block& b) {
+    skipped_.push_back(&b);
+    if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, b);
   }
 
   // TRC-LOOK-3: skipped blocks lose their motion in the plane; their applicate motion and actions
@@ -579,14 +581,13 @@ class Reference {
     }
   }
 
-  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius rho - s sigma r; if it
-  // collapses, alarm 10751 (look-ahead past the block: planned). Decided when the block comes.
-  bool equidistant_exists(const Block& b, const ContourElement& e, FT& radius) {
+  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius rho - s sigma r. Decided when
+  // the block comes; a collapsed one is passed over by the look-ahead (TRC-LOOK-1/2).
+  bool equidistant_exists(const ContourElement& e, FT& radius) {
     if (!e.is_arc()) return true;
     radius = equidistant_radius<Kernel>(e.radius, e.sense, comp_->side_radius);
     CGAL::Sign sign = CGAL::sign(radius);
     decide("TRC-ARC-EQ-1", e.line, sign == CGAL::POSITIVE ? "concentric" : "collapses", exact_mm(radius));
-    if (sign != CGAL::POSITIVE) raise(10751, b);
     return sign == CGAL::POSITIVE;
   }
 
