@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include "plane_geometry.hpp"
 
@@ -84,8 +85,10 @@ struct Engine::State {
   // Look-ahead (TRC-LOOK-*): blocks passed over while trying later blocks (fixed capacity: at most
   // MD20240 traversing blocks, each after at most MD20250 blocks without plane motion).
   bool looking = false;
-  std::array<BlockCopy, MachineData::kMaxCheckBlocks*(MachineData::kMaxDummyBlocks + 1)> skipped;
-  int skipped_count = 0, examined = 0, dummy_run = 0;
+  // Reserved once, at the first look-ahead: never reallocated, nothing allocated per block.
+  static constexpr std::size_t kSkippedCapacity = MachineData::kMaxCheckBlocks * (MachineData::kMaxDummyBlocks + 1);
+  std::vector<BlockCopy> skipped;
+  int examined = 0, dummy_run = 0;
 
   // --- plane <-> workpiece coordinates -------------------------------------------------------
   Vec2 ab(const PathPoint& p) const { return {pick(p, axes.abscissa), pick(p, axes.ordinate)}; }
@@ -435,7 +438,10 @@ struct Engine::State {
     return {along * radius, (sweep(e) - along) * radius};
   }
 
-  void skip(const BlockCopy& c) { skipped[static_cast<std::size_t>(skipped_count++)] = c; }
+  void skip(const BlockCopy& c) {
+    if (skipped.capacity() == 0) skipped.reserve(kSkippedCapacity);
+    skipped.push_back(c);
+  }
   // A candidate that does not do: passed over; alarm 10751 once MD20240 blocks were examined.
   void pass_over(const BlockCopy& c) {
     skip(c);
@@ -483,12 +489,11 @@ struct Engine::State {
     looking = false;
     if (!close_open(y, b.words.line, b.words.number)) return;
     // TRC-LOOK-3: skipped blocks lose their plane motion; the rest runs at the intersection.
-    for (int i = 0; i < skipped_count; ++i) {
-      BlockCopy& d = skipped[static_cast<std::size_t>(i)];
+    for (BlockCopy& d : skipped) {
       decide("TRC-LOOK-3", d.line, "skipped");
       line(d, xyz(y, h(d.start)), xyz(y, h(d.end)), OriginKind::kInfeed, d.rapid);
     }
-    skipped_count = 0;
+    skipped.clear();
     open_element(b, cand, y, radius);
   }
 
@@ -529,7 +534,7 @@ struct Engine::State {
   // TRC-END-1: the program ends with compensation in force.
   void end_of_program() {
     if (looking) {  // the program ends before an intersection was found
-      const BlockCopy& last = skipped[static_cast<std::size_t>(skipped_count - 1)];
+      const BlockCopy& last = skipped.back();
       decide("TRC-LOOK-2", last.line, "none");
       return raise(10751, last.line, last.number);
     }
