@@ -25,7 +25,8 @@ struct BlockCopy {
   int sense = 1;     // +1 G3, -1 G2
   PathPoint centre;  // programmed centre (I/J/K arcs)
   bool has_centre = false;
-  double cr = 0;  // CR= arcs
+  double cr = 0;                  // CR= arcs
+  std::array<Int128, 3> delta{};  // exact programmed displacement X Y Z, units of 1e-9 mm
   Decimal feed;
   std::array<AuxFunction, BlockWords::kMaxAux> aux{};
   int aux_count = 0;
@@ -43,6 +44,7 @@ struct BlockCopy {
     c.has_centre = b.centre.has_value();
     if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
     if (b.words.cr) c.cr = b.words.cr->to_double();
+    c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
     c.feed = b.state.feed;
     c.aux = b.words.aux;
     c.aux_count = b.words.aux_count;
@@ -201,6 +203,26 @@ struct Engine::State {
       arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
     }
     return true;
+  }
+
+  // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
+  // 1e-9 mm, and while each component stays below 2^62 the cross and dot products fit in 128 bits.
+  // Tangency and reversal are then seen as ref sees them, not as a 1e-17 remainder.
+  void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
+    const Int128 limit = Int128(1) << 62;
+    Int128 a1 = first.delta[static_cast<std::size_t>(axes.abscissa)],
+           b1 = first.delta[static_cast<std::size_t>(axes.ordinate)];
+    Int128 a2 = second.delta[static_cast<std::size_t>(axes.abscissa)],
+           b2 = second.delta[static_cast<std::size_t>(axes.ordinate)];
+    for (Int128 v : {a1, b1, a2, b2})
+      if (v >= limit || v <= -limit) return;  // beyond the range: the double decision stands
+    Int128 cr = a1 * b2 - b1 * a2, dt = a1 * a2 + b1 * b2;
+    if (cr == 0) {
+      c.kind = dt > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
+      c.sine = 0;
+    } else {
+      c.kind = (cr > 0) == (s > 0) ? Corner::Kind::kInner : Corner::Kind::kOuter;
+    }
   }
 
   // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; a collapsed one is passed
@@ -377,6 +399,7 @@ struct Engine::State {
     if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
     Vec2 v = open_el.end;
     Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
+    if (!open_el.arc && !next.arc) decide_kind_exactly(open, BlockCopy::of(b), c);
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
     decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
 
