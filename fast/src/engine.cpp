@@ -540,6 +540,9 @@ struct Engine::State {
   // TRC-DESEL-1, TRC-RETR-NORM-1: the last element ends at its normal point, then a straight
   // line to the programmed end point of the deselection block.
   void deselect(const Block& b) {
+    if (b.state.approach != ApproachMode::kNorm)
+      throw UnsupportedError(  // TRC-UNSUP-1: KONT retraction is issue #4, never run as NORM
+          b.words.line, "KONT retraction");
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
     decide("TRC-DESEL-1", b.words.line, "deselected");
     if (!close_open(end, b.words.line, b.words.number)) return;

@@ -604,6 +604,9 @@ class Reference {
   // TRC-DESEL-1, TRC-RETR-NORM-1: the last equidistant ends at its normal end point; a straight
   // line leads to the programmed end point of the deselection block.
   void deselect_norm(const Block& b) {
+    if (b.state.approach != ApproachMode::kNorm)
+      throw UnsupportedError(  // TRC-UNSUP-1: KONT retraction is issue #4, never run as NORM
+          b.words.line, "KONT retraction");
     Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
     decide("TRC-DESEL-1", b.words.line, "deselected");
     if (!close_open(end, b, true)) return;
