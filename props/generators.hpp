@@ -1,4 +1,4 @@
-// RapidCheck generators of contours on which the straight-line slice applies: random walks and
+// RapidCheck generators of contours (lines and circles): random walks and
 // adversarial shapes (near-tangent, near-reversal, exact threshold angles, vanishing elements).
 #pragma once
 

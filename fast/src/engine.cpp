@@ -1,4 +1,4 @@
-// fast's TRC state machine for the straight-line slice. Clause IDs name the spec rule each step
+// fast's TRC state machine (lines, circles, corners, look-ahead). Clause IDs name the spec rule each step
 // implements; ref implements the same clauses independently in exact arithmetic.
 #include "cutcom/fast/engine.hpp"
 
