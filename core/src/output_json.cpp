@@ -21,8 +21,6 @@ void append(std::string& list, const json& item) {
 }
 }  // namespace
 
-std::string json_point(const PathPoint& p) { return point(p).dump(); }
-
 JsonWriter::JsonWriter(std::ostream& out, std::string engine, bool with_trace) : out_(out), with_trace_(with_trace) {
   out_ << "{\n  \"format\": \"cutcom-path/1\",\n  \"engine\": " << json(engine).dump() << ",\n  \"path\": [";
 }

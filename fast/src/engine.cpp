@@ -234,8 +234,8 @@ struct Engine::State {
     return radius > 0;
   }
 
-  void open_element(const Block& b, const Element& e, Vec2 start, double radius) {
-    open = BlockCopy::of(b);
+  void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius) {
+    open = b;
     open_el = e;
     open_start = start;
     open_radius = radius;
@@ -363,7 +363,7 @@ struct Engine::State {
     decide("TRC-APPR-NORM-1", selection.line, length == 0 ? "zero-length" : "line", length);
     line(selection, selection.start, to, OriginKind::kApproach, selection.rapid);
     run_dummies(q);
-    open_element(b, e, q, radius);
+    open_element(first, e, q, radius);
     phase = Phase::kActive;
   }
 
@@ -394,12 +394,13 @@ struct Engine::State {
   }
 
   void corner(const Block& b) {
-    Element next = element_of(BlockCopy::of(b));
+    const BlockCopy copy = BlockCopy::of(b);  // converted once per block
+    Element next = element_of(copy);
     double next_radius = 0;
     if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
     Vec2 v = open_el.end;
     Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
-    if (!open_el.arc && !next.arc) decide_kind_exactly(open, BlockCopy::of(b), c);
+    if (!open_el.arc && !next.arc) decide_kind_exactly(open, copy, c);
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
     decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
 
@@ -419,7 +420,7 @@ struct Engine::State {
         decide("TRC-CORNER-4", b.words.line, circle ? "keep-G450" : "switch-to-G451", angle - limit);
       }
     }
-    if (circle) return transition_circle(b, next, next_radius, v);
+    if (circle) return transition_circle(copy, next, next_radius, v);
     Vec2 x;
     if (c.kind == Corner::Kind::kTangent) {
       x = Element::offset(v, open_el.end_tangent(), s * r);  // both equidistants pass through it
@@ -432,7 +433,7 @@ struct Engine::State {
       bool found = nearest_intersection(cu, cv, v, x);
       decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", carrier_gap(cu, cv));
       if (!found && c.kind == Corner::Kind::kOuter)
-        return transition_circle(b, next, next_radius, v);  // TRC-ARC-CORNER-2
+        return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
       if (!found) return raise(10751, b.words.line, b.words.number);
     }
     if (c.kind != Corner::Kind::kTangent) {
@@ -445,7 +446,7 @@ struct Engine::State {
     }
     if (!close_open(x, b.words.line, b.words.number)) return;
     run_dummies(x);
-    open_element(b, next, x, next_radius);
+    open_element(copy, next, x, next_radius);
   }
 
   // Where a point lies on an element's equidistant: length from its normal start, left to its end.
@@ -517,14 +518,14 @@ struct Engine::State {
       line(d, xyz(y, h(d.start)), xyz(y, h(d.end)), OriginKind::kInfeed, d.rapid);
     }
     skipped.clear();
-    open_element(b, cand, y, radius);
+    open_element(c, cand, y, radius);
   }
 
   // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points; it
   // belongs to the second block.
-  void transition_circle(const Block& b, const Element& next, double next_radius, Vec2 v) {
+  void transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
     Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
-    if (!close_open(from, b.words.line, b.words.number)) return;
+    if (!close_open(from, b.line, b.number)) return;
     run_dummies(from);
     Vec2 to = Element::offset(v, next.start_tangent(), s * r);
     Origin corner = origin(open, OriginKind::kTransitionCircle);

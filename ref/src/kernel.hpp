@@ -26,13 +26,8 @@ FT leaf(const Decimal& d);
 // The in-plane point (abscissa, ordinate) of a programmed position, in units.
 Point plane_point(const Point3& p, PlaneAxes axes);
 
-// Output boundary: exact plane point + programmed applicate -> workpiece coordinates in mm.
-PathPoint to_output(const Point& p, const Decimal& applicate, PlaneAxes axes);
-PathPoint to_output(const Point3& p);
-
 // A margin for the decision trace: the sign is exact, the digits are a 20-digit rendering.
 std::string exact_text(const FT& value);
-std::string exact_text(const mpq_class& value);
 // A length margin: units (10^-9 mm) rendered in mm.
 std::string exact_mm(const FT& units);
 

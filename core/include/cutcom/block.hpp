@@ -173,15 +173,10 @@ struct Block {
     PlaneAxes a = plane_axes(state.plane);
     return coord(start, a.abscissa) != coord(end, a.abscissa) || coord(start, a.ordinate) != coord(end, a.ordinate);
   }
-  bool moves_applicate() const {
-    int h = plane_axes(state.plane).applicate;
-    return coord(start, h) != coord(end, h);
-  }
   bool is_linear() const { return state.motion == Motion::kRapid || state.motion == Motion::kLinear; }
   // A circle: G2/G3 in force and the block programs an axis or circle data (NC-ARC-2). A block
   // without them (only M8, say) moves nowhere, whatever the modal motion.
   bool is_arc() const { return circle; }
-  bool has_aux() const { return words.aux_count > 0; }
 };
 
 }  // namespace cutcom

@@ -56,7 +56,4 @@ void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programm
 
 std::vector<ProgrammedSegment> programmed_contour(const std::vector<Block>& blocks);
 
-// JSON helpers shared by the writers and tests.
-std::string json_point(const PathPoint& p);
-
 }  // namespace cutcom

@@ -50,7 +50,6 @@ class ProgramReader {
   explicit ProgramReader(std::istream& in, ModalState initial = {});
   // Next block, or false at the end of the text or after M2/M30. Throws InputError.
   bool next(Block& out);
-  const ToolTable& tools() const { return tools_; }
 
  private:
   void resolve(Block& b);
