@@ -38,8 +38,25 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
     auto [ea, eb] = at(b.end);
     double ta = ea - sa, tb = eb - sb, ua = ta, ub = tb;  // start and end tangents
     double scale = std::hypot(ta, tb);
-    if (b.is_arc() && b.centre) {
-      auto [ca, cb] = at(*b.centre);
+    if (b.is_arc()) {
+      // The centre the engines use: the programmed one projected onto the chord's bisector
+      // (ARC-CENTRE-1), or the CR= centre (ARC-CR-1). Tangents from the uncorrected centre can
+      // miss a near-tangent corner by the end point's tolerance.
+      double ma = (sa + ea) / 2, mb = (sb + eb) / 2, pa = -(eb - sb), pb = ea - sa;  // midpoint, perp(chord)
+      double chord2 = pa * pa + pb * pb, ca = ma, cb = mb;
+      if (b.centre) {
+        auto [ka, kb] = at(*b.centre);
+        ca = ka, cb = kb;
+        if (chord2 > 0) {
+          double k = ((ka - ma) * pa + (kb - mb) * pb) / chord2;
+          ca = ma + k * pa, cb = mb + k * pb;
+        }
+      } else if (b.words.cr && chord2 > 0) {
+        double cr = b.words.cr->to_double();
+        double k = ((b.state.motion == Motion::kArcCcw) == (cr > 0) ? 1 : -1) *
+                   std::sqrt(std::max(0.0, cr * cr / chord2 - 0.25));
+        ca = ma + k * pa, cb = mb + k * pb;
+      }
       double sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
       ta = -sense * (sb - cb), tb = sense * (sa - ca);
       ua = -sense * (eb - cb), ub = sense * (ea - ca);
@@ -72,8 +89,9 @@ double Tolerance::band(std::string_view clause) const {
   if (clause == "TRC-CORNER-1") return sine;
   if (clause == "TRC-CORNER-3" || clause == "TRC-CORNER-4") return degrees;
   if (clause == "TRC-ELEMENT-1" || clause == "TRC-ARC-ELEMENT-1" || clause == "TRC-APPR-NORM-1" ||
-      clause == "TRC-RETR-NORM-1" || clause == "TRC-LOOK-1" || clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" ||
-      clause == "ARC-CENTRE-2" || clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1")
+      clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-LOOK-1" ||
+      clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" || clause == "ARC-CR-1" ||
+      clause == "TRC-ARC-CORNER-1")
     return coordinate;
   return 0;  // decisions on exact decimals (block kinds, alarms) never diverge
 }

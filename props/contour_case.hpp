@@ -21,16 +21,18 @@ struct Step {
 };
 
 struct ContourCase {
-  std::int64_t radius_um = 2000;          // $TC_DP6 in um (0 and negative values included)
-  bool right = false;                     // G42 instead of G41
-  std::int64_t start_x = 0, start_y = 0;  // tool position before the selection block
-  std::int64_t first_x = 0, first_y = 0;  // end of the selection block = start of the contour
-  std::vector<Step> steps;                // the contour blocks
-  std::int64_t end_x = 0, end_y = 0;      // end point of the G40 block
-  int plane = 17;                         // 17, 18 or 19
-  int decimals = 3;                       // coordinates and radius in units of 10^-decimals mm
-  int md20210 = 100, md20230 = 10;        // degrees
-  std::string style;                      // which generator made it (for RC_TAG)
+  std::int64_t radius_um = 2000;                    // $TC_DP6 in um (0 and negative values included)
+  bool right = false;                               // G42 instead of G41
+  std::int64_t start_x = 0, start_y = 0;            // tool position before the selection block
+  std::int64_t first_x = 0, first_y = 0;            // end of the selection block = start of the contour
+  std::vector<Step> steps;                          // the contour blocks
+  std::int64_t end_x = 0, end_y = 0;                // end point of the G40 block
+  int plane = 17;                                   // 17, 18 or 19
+  int decimals = 3;                                 // coordinates and radius in units of 10^-decimals mm
+  int md20210 = 100, md20230 = 10;                  // degrees
+  bool kont_select = false, kont_deselect = false;  // KONT instead of NORM in the G41/G42 and G40 blocks
+  bool g451_select = false, g451_deselect = false;  // corner mode programmed in those blocks
+  std::string style;                                // which generator made it (for RC_TAG)
 };
 
 std::string to_program(const ContourCase& c);

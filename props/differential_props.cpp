@@ -43,6 +43,9 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefOnCirclesNearTheToolRadius, ()) {
   check_agreement(*circles_near_radius());
 }
 
+// covers: PROP-DIFF-1 TRC-KONT-1 TRC-KONT-2 TRC-KONT-3 TRC-KONT-4 TRC-APPR-NORM-1 TRC-RETR-NORM-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefAtApproachAndRetraction, ()) { check_agreement(*around_ends()); }
+
 // covers: PROP-CONT-1 PATH-CONT-1
 RC_GTEST_PROP(Fast, PathIsContinuousAndFinite, ()) {
   ContourCase c = *any_contour();

@@ -35,6 +35,8 @@ void common(ContourCase& c) {
     c.md20210 = *element(0, 45, 90, 135, 180);
     c.md20230 = *element(0, 45, 90);
   }
+  c.kont_select = *inRange(0, 3) != 0, c.kont_deselect = *inRange(0, 3) != 0;
+  c.g451_select = *inRange(0, 3) == 0, c.g451_deselect = *inRange(0, 3) == 0;
   for (std::size_t i = 0; i < c.steps.size(); ++i) {
     Step& s = c.steps[i];
     // Never in the first contour block after a selection (not supported there): not in the first
@@ -242,6 +244,83 @@ rc::Gen<ContourCase> circles_near_radius() {
   });
 }
 
+namespace {
+// Tangent direction (integers, not normalised) of a step at its start or at its end.
+std::pair<std::int64_t, std::int64_t> tangent(const Step& s, bool at_end) {
+  if (!s.arc || s.cr != 0) return {s.dx, s.dy};  // CR= circles: the chord, roughly
+  int sense = s.ccw ? 1 : -1;
+  // sense * perp(P - C) with C = start + (ci, cj).
+  std::int64_t px = at_end ? s.dx - s.ci : -s.ci, py = at_end ? s.dy - s.cj : -s.cj;
+  return {-sense * py, sense * px};
+}
+
+// A point placed against the tangent line through (vx, vy) with direction t: exactly on it, a
+// micrometre off it, anywhere, near or exactly on the circle of radius r about the vertex.
+std::pair<std::int64_t, std::int64_t> place(std::int64_t vx, std::int64_t vy, std::pair<std::int64_t, std::int64_t> t,
+                                            std::int64_t r) {
+  std::int64_t g = std::gcd(std::abs(t.first), std::abs(t.second));
+  if (g == 0) return {vx + signed_um(80000), vy + signed_um(80000)};
+  std::int64_t tx = t.first / g, ty = t.second / g;
+  double len = std::hypot(static_cast<double>(tx), static_cast<double>(ty));
+  std::int64_t reach = std::max<std::int64_t>(1, static_cast<std::int64_t>(60000 / len));
+  switch (*inRange(0, 6)) {
+    case 0: {  // on the line, ahead or back
+      std::int64_t k = signed_um(reach);
+      return {vx + k * tx, vy + k * ty};
+    }
+    case 1: {  // a micrometre off the line
+      std::int64_t k = signed_um(reach);
+      bool in_x = *rc::gen::arbitrary<bool>();
+      std::int64_t e = *rc::gen::arbitrary<bool>() ? 1 : -1;
+      return {vx + k * tx + (in_x ? e : 0), vy + k * ty + (in_x ? 0 : e)};
+    }
+    case 2: {  // near the circle of radius r, either side by a few um
+      double angle = *inRange(0, 3600) * 3.14159265358979 / 1800;
+      double d = static_cast<double>(r + *inRange<std::int64_t>(-4, 5));
+      return {vx + static_cast<std::int64_t>(std::lround(d * std::cos(angle))),
+              vy + static_cast<std::int64_t>(std::lround(d * std::sin(angle)))};
+    }
+    case 3: {  // exactly on the circle: along an axis or on a 3-4-5 triangle
+      std::int64_t sx = *rc::gen::arbitrary<bool>() ? 1 : -1, sy = *rc::gen::arbitrary<bool>() ? 1 : -1;
+      int k = *inRange(0, 3);
+      if (k == 0) return {vx + sx * r, vy};
+      if (k == 1) return {vx, vy + sy * r};
+      return {vx + sx * (r / 5) * 3, vy + sy * (r / 5) * 4};
+    }
+    default:
+      return {vx + signed_um(80000), vy + signed_um(80000)};
+  }
+}
+
+// The first and last contour blocks shortened below the tool radius now and then (TRC-EDGE-*).
+void shorten(Step& s, std::int64_t r) {
+  if (s.arc || r <= 0) return;
+  double len = std::hypot(static_cast<double>(s.dx), static_cast<double>(s.dy));
+  double want = static_cast<double>(r) * *inRange(1, 10) / 10.0;
+  s.dx = static_cast<std::int64_t>(std::lround(s.dx * want / len));
+  s.dy = static_cast<std::int64_t>(std::lround(s.dy * want / len));
+  nonzero(s);
+}
+}  // namespace
+
+rc::Gen<ContourCase> around_ends() {
+  return rc::gen::exec([] {
+    ContourCase c = *rc::gen::weightedOneOf<ContourCase>(
+        {{3, random_walk()}, {3, grid_walk()}, {2, with_circles()}, {1, tiny_blocks()}});
+    c.style += "+ends";
+    std::int64_t r = std::abs(c.radius_um);
+    if (*inRange(0, 3) == 0) shorten(c.steps.front(), r);
+    if (*inRange(0, 3) == 0) shorten(c.steps.back(), r);
+    std::int64_t ex = c.first_x, ey = c.first_y;
+    for (const Step& s : c.steps) ex += s.dx, ey += s.dy;
+    auto start = place(c.first_x, c.first_y, tangent(c.steps.front(), false), r);
+    auto end = place(ex, ey, tangent(c.steps.back(), true), r);
+    c.start_x = start.first, c.start_y = start.second;
+    c.end_x = end.first, c.end_y = end.second;
+    return c;
+  });
+}
+
 rc::Gen<ContourCase> any_contour() {
   return rc::gen::weightedOneOf<ContourCase>({{4, random_walk()},
                                               {3, grid_walk()},
@@ -250,7 +329,8 @@ rc::Gen<ContourCase> any_contour() {
                                               {1, notch()},
                                               {4, with_circles()},
                                               {2, tiny_blocks()},
-                                              {1, circles_near_radius()}});
+                                              {1, circles_near_radius()},
+                                              {2, around_ends()}});
 }
 
 }  // namespace cutcom::props

@@ -82,7 +82,7 @@ TEST(Cli, BadInputAndUsageGiveExitTwo) {
   EXPECT_EQ(sh(kCli + " run " + kExample + " --md MD20210=500").status, 2);
   EXPECT_EQ(sh(kCli + " run " + kExample + " --format pdf").status, 2);
   EXPECT_EQ(sh(kCli + " frobnicate").status, 2);
-  EXPECT_EQ(sh(kCli + " run " + write_temp("kont.mpf", "$TC_DP6[1,1]=1\nT1 D1 G1 G41 KONT X1 F1\nX2\n")).status,
+  EXPECT_EQ(sh(kCli + " run " + write_temp("kont.mpf", "$TC_DP6[1,1]=1\nT1 D1 G1 G41 KONTT X1 F1\nX2\n")).status,
             2);  // not supported yet
 }
 

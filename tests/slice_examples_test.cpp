@@ -380,9 +380,9 @@ TEST(SliceExamples, ContourAngleExactlyOnTheLimitDoesNotSwitch) {
 TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
   const std::pair<std::string, int> cases[] = {
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 DISC=10\n"), 5},
-      {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 KONT X20 Y10\n"), 6},
+      {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 KONTC X20 Y10\n"), 6},
       {program("N20 G1 G41 KONTT X0 Y0 F100\nN30 X10\n"), 4},
-      {program("N20 G1 G41 KONT X0 Y0 F100\nN30 X10\n"), 4},
+      {program("N20 G1 G41 KONTC X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G41 X20\n"), 6},

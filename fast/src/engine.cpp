@@ -31,6 +31,8 @@ struct BlockCopy {
   std::array<AuxFunction, BlockWords::kMaxAux> aux{};
   int aux_count = 0;
   bool actions_done = false;
+  bool kont = false;  // KONT in force (approach and retraction)
+  bool g451 = false;  // G451 in force
 
   static BlockCopy of(const Block& b) {
     BlockCopy c;
@@ -48,6 +50,8 @@ struct BlockCopy {
     c.feed = b.state.feed;
     c.aux = b.words.aux;
     c.aux_count = b.words.aux_count;
+    c.kont = b.state.approach == ApproachMode::kKont;
+    c.g451 = b.state.corner == CornerMode::kG451;
     return c;
   }
 };
@@ -75,7 +79,8 @@ struct Engine::State {
   double r = 0;  // |effective radius|
   ActiveEdge edge;
 
-  BlockCopy selection;  // kApproach: the selection block
+  BlockCopy selection;               // kApproach: the selection block
+  bool selection_from_tool = false;  // its start is the tool after a side change (TRC-SIDE-1)
   // kActive: the open element, whose end waits for the next traversing block.
   BlockCopy open;
   Element open_el;
@@ -309,15 +314,13 @@ struct Engine::State {
     PathPoint tool = xyz(end, h(BlockCopy::of(b).start));
     select(b);
     selection.start = tool;  // the approach starts where the tool is
+    selection_from_tool = true;
   }
 
   void select(const Block& b) {
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "KONTC/KONTT approach (needs polynomial output)");
-    if (b.state.approach == ApproachMode::kKont)
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "KONT approach");
     // TRC-SEL-1; TRC-SEL-3: a single plane axis was completed by the reader (NC-POS-1).
     decide("TRC-SEL-1", b.words.line, "selected");
     plane = b.state.plane;
@@ -331,6 +334,7 @@ struct Engine::State {
     s = eff.sign() < 0 ? -sign : sign;
     r = std::fabs(eff.to_double());
     selection = BlockCopy::of(b);
+    selection_from_tool = false;
     dummy_count = 0;
     phase = Phase::kApproach;
   }
@@ -350,11 +354,18 @@ struct Engine::State {
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "change of compensation side G41/G42 before the first contour block");
     if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
-    // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
     BlockCopy first = BlockCopy::of(b);
     Element e = element_of(first);
     double radius = 0;
     if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
+    if (selection.kont) {
+      // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
+      Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt};
+      if (!selection_from_tool && !e.arc) k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
+      if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
+      if (stopped) return;
+    }
+    // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
     Vec2 q = Element::offset(e.start, e.start_tangent(), s * r);
     PathPoint to = xyz(q, h(selection.end));
     double length = std::sqrt((to.x - selection.start.x) * (to.x - selection.start.x) +
@@ -364,6 +375,93 @@ struct Engine::State {
     line(selection, selection.start, to, OriginKind::kApproach, selection.rapid);
     run_dummies(q);
     open_element(first, e, q, radius);
+    phase = Phase::kActive;
+  }
+
+  // --- KONT: travelling around the start or end point (TRC-KONT-*) -----------------------------
+  // The corner a KONT move makes with the contour at `vertex`: d1 runs into it, d2 out of it;
+  // `point` is the tool centre off the contour (approach: start, retraction: end).
+  struct Kont {
+    Vec2 vertex, point, d1, d2;
+    std::optional<int> exact_sign;  // sign of cross(contour tangent, point - vertex), if decided in integers
+  };
+
+  // The sign of cross(t, k * u) for exact integer displacements t and u (k = +-1), if they are in range.
+  std::optional<int> exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u, int k) const {
+    const Int128 limit = Int128(1) << 62;
+    Int128 a1 = t[static_cast<std::size_t>(axes.abscissa)], b1 = t[static_cast<std::size_t>(axes.ordinate)];
+    Int128 a2 = u[static_cast<std::size_t>(axes.abscissa)], b2 = u[static_cast<std::size_t>(axes.ordinate)];
+    for (Int128 v : {a1, b1, a2, b2})
+      if (v >= limit || v <= -limit) return std::nullopt;
+    Int128 c = a1 * b2 - b1 * a2;
+    int sign = (c > 0) - (c < 0);
+    return k * sign;
+  }
+
+  // TRC-KONT-1: behind = strictly on the far side of the contour's tangent line from the
+  // compensation side; TRC-KONT-2: then not inside the circle of radius r about the vertex.
+  bool kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm) {
+    Vec2 off = k.point - k.vertex;
+    double cr = cross(tangent, off);
+    int sign = k.exact_sign ? *k.exact_sign : (cr > 0) - (cr < 0);
+    double margin = sign == 0 ? 0.0 : s * cr / norm(tangent);
+    bool behind = s * sign < 0;
+    decide("TRC-KONT-1", at_block.line, behind ? "behind" : "in-front", margin);
+    if (!behind) return false;
+    double distance = norm(off);
+    bool inside = distance < r;
+    decide("TRC-KONT-2", at_block.line, inside ? "inside" : "room", distance - r);
+    if (inside) raise(alarm, at_block.line, at_block.number, "TRC-KONT-2");
+    return !inside;
+  }
+
+  // Where the equidistant of the KONT line (through `on_line`, direction `d`) meets the element's
+  // carrier, nearest the vertex; false if they do not meet (circles only).
+  bool kont_intersection(const BlockCopy& at_block, const Kont& k, const Element& e, double e_radius, Vec2 on_line,
+                         Vec2 d, Vec2& x) {
+    Vec2 u1 = (1.0 / norm(k.d1)) * k.d1;
+    if (!e.arc) {
+      Corner c = classify_corner(u1, (1.0 / norm(k.d2)) * k.d2, s);
+      x = Element::offset(k.vertex, u1, s * r) - corner_trim(c, s, r) * u1;
+      return true;
+    }
+    Carrier line_carrier;
+    line_carrier.point = on_line, line_carrier.direction = (1.0 / norm(d)) * d;
+    Carrier cu = carrier_of(e, e_radius);
+    bool found = nearest_intersection(cu, line_carrier, k.vertex, k.d2, x);
+    decide("TRC-ARC-CORNER-1", at_block.line, found ? "intersection" : "none", carrier_gap(cu, line_carrier));
+    return found;
+  }
+
+  // TRC-KONT-3/4 with TRC-CORNER-3/4: circle or intersection, switched like any outer corner.
+  bool kont_circle(const BlockCopy& at_block, const Kont& k) {
+    Corner c = classify_corner((1.0 / norm(k.d1)) * k.d1, (1.0 / norm(k.d2)) * k.d2, s);
+    return outer_corner_circle(at_block.line, at_block.g451, c);
+  }
+
+  // TRC-KONT-3 / TRC-KONT-4 on approach: the approach line meets the first block at an outer corner.
+  void approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k) {
+    Vec2 a = Element::offset(k.vertex, (1.0 / norm(k.d1)) * k.d1, s * r);
+    bool circle = kont_circle(selection, k);
+    Vec2 x;
+    bool found = !circle && kont_intersection(selection, k, e, radius, a, k.d1, x);
+    double hv = h(selection.end);
+    if (!found) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
+      decide("TRC-KONT-3", selection.line, "circle");
+      line(selection, selection.start, xyz(a, hv), OriginKind::kApproach, selection.rapid);
+      run_dummies(a);
+      Vec2 q = Element::offset(k.vertex, e.start_tangent(), s * r);
+      Origin corner = origin(selection, OriginKind::kTransitionCircle);
+      corner.next_line = first.line, corner.next_block = first.number;
+      open_element(first, e, q, radius);
+      double h1 = h(first.start);                                                      // after the held-back blocks
+      if (r > 0) arc(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
+    } else {                                                                           // TRC-KONT-4
+      decide("TRC-KONT-4", selection.line, "intersection");
+      line(selection, selection.start, xyz(x, hv), OriginKind::kApproach, selection.rapid);
+      run_dummies(x);
+      open_element(first, e, x, radius);
+    }
     phase = Phase::kActive;
   }
 
@@ -405,21 +503,7 @@ struct Engine::State {
     decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
 
     bool circle = c.kind == Corner::Kind::kReversal;  // TRC-G450-3: a reversal is always a circle
-    if (c.kind == Corner::Kind::kOuter) {
-      // TRC-CORNER-2: the contour angle is the deflection angle, in degrees.
-      double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
-      if (b.state.corner == CornerMode::kG451) {
-        // TRC-CORNER-3: G451 switches to G450 above MD20210.
-        double limit = md.cutcom_corner_limit.to_double();
-        circle = angle > limit;
-        decide("TRC-CORNER-3", b.words.line, circle ? "switch-to-G450" : "keep-G451", angle - limit);
-      } else {
-        // TRC-CORNER-4: G450 switches to G451 below MD20230.
-        double limit = md.cutcom_curve_insert_limit.to_double();
-        circle = !(angle < limit);
-        decide("TRC-CORNER-4", b.words.line, circle ? "keep-G450" : "switch-to-G451", angle - limit);
-      }
-    }
+    if (c.kind == Corner::Kind::kOuter) circle = outer_corner_circle(b.words.line, copy.g451, c);
     if (circle) return transition_circle(copy, next, next_radius, v);
     Vec2 x;
     if (c.kind == Corner::Kind::kTangent) {
@@ -430,7 +514,7 @@ struct Engine::State {
     } else {
       // TRC-ARC-CORNER-1: the intersection of the carriers nearest to the corner.
       Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(next, next_radius);
-      bool found = nearest_intersection(cu, cv, v, x);
+      bool found = nearest_intersection(cu, cv, v, next.start_tangent(), x);
       decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", carrier_gap(cu, cv));
       if (!found && c.kind == Corner::Kind::kOuter)
         return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
@@ -447,6 +531,22 @@ struct Engine::State {
     if (!close_open(x, b.words.line, b.words.number)) return;
     run_dummies(x);
     open_element(copy, next, x, next_radius);
+  }
+
+  // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
+  // deciding block's G450/G451, switched by the contour angle (TRC-CORNER-2, degrees).
+  bool outer_corner_circle(int line_no, bool g451, const Corner& c) {
+    double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
+    if (g451) {  // TRC-CORNER-3: G451 switches to G450 above MD20210
+      double limit = md.cutcom_corner_limit.to_double();
+      bool circle = angle > limit;
+      decide("TRC-CORNER-3", line_no, circle ? "switch-to-G450" : "keep-G451", angle - limit);
+      return circle;
+    }
+    double limit = md.cutcom_curve_insert_limit.to_double();  // TRC-CORNER-4: G450 to G451 below MD20230
+    bool circle = !(angle < limit);
+    decide("TRC-CORNER-4", line_no, circle ? "keep-G450" : "switch-to-G451", angle - limit);
+    return circle;
   }
 
   // Where a point lies on an element's equidistant: length from its normal start, left to its end.
@@ -500,7 +600,7 @@ struct Engine::State {
     Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
     Vec2 y;
     Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(cand, radius);
-    bool found = nearest_intersection(cu, cv, start, y);
+    bool found = nearest_intersection(cu, cv, start, cand.start_tangent(), y);
     bool valid = false;
     double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
     if (found) {
@@ -538,24 +638,59 @@ struct Engine::State {
     }
   }
 
-  // TRC-DESEL-1, TRC-RETR-NORM-1: the last element ends at its normal point, then a straight
-  // line to the programmed end point of the deselection block.
+  // TRC-DESEL-1: deselection; with KONT from behind the end point TRC-KONT-* travel around it,
+  // otherwise (NORM, KONT in front) TRC-RETR-NORM-1.
   void deselect(const Block& b) {
-    if (b.state.approach != ApproachMode::kNorm)
-      throw UnsupportedError(  // TRC-UNSUP-1: KONT retraction is issue #4, never run as NORM
-          b.words.line, "KONT retraction");
-    Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+    if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
     decide("TRC-DESEL-1", b.words.line, "deselected");
-    if (!close_open(end, b.words.line, b.words.number)) return;
-    run_dummies(end);
     BlockCopy last = BlockCopy::of(b);
-    PathPoint from = xyz(end, h(last.start));
+    if (last.kont) {
+      Vec2 p = ab(last.end);
+      Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt};
+      if (!open_el.arc) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
+      if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
+      if (stopped) return;
+    }
+    Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+    if (!close_open(end, last.line, last.number)) return;
+    run_dummies(end);
+    retraction_line(last, end);
+  }
+
+  // TRC-RETR-NORM-1: the straight line to the programmed end point, a tool-centre position.
+  void retraction_line(BlockCopy& last, Vec2 from_point) {
+    PathPoint from = xyz(from_point, h(last.start));
     double length =
         std::sqrt((last.end.x - from.x) * (last.end.x - from.x) + (last.end.y - from.y) * (last.end.y - from.y) +
                   (last.end.z - from.z) * (last.end.z - from.z));
-    decide("TRC-RETR-NORM-1", b.words.line, length == 0 ? "zero-length" : "line", length);
+    decide("TRC-RETR-NORM-1", last.line, length == 0 ? "zero-length" : "line", length);
     line(last, from, last.end, OriginKind::kRetraction, last.rapid);
     phase = Phase::kOff;
+  }
+
+  // TRC-KONT-3 / TRC-KONT-4 on retraction: the retraction line meets the last block at an outer corner.
+  void retract_around(BlockCopy& last, const Kont& k) {
+    Vec2 rp = Element::offset(k.vertex, (1.0 / norm(k.d2)) * k.d2, s * r);
+    bool circle = kont_circle(last, k);
+    Vec2 x;
+    bool found = !circle && kont_intersection(last, k, open_el, open_radius, rp, k.d2, x);
+    if (!found) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
+      decide("TRC-KONT-3", last.line, "circle");
+      Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
+      Origin corner = origin(open, OriginKind::kTransitionCircle);
+      corner.next_line = last.line, corner.next_block = last.number;
+      if (!close_open(from, last.line, last.number)) return;
+      run_dummies(from);
+      double hv = h(last.start);
+      if (r > 0) arc(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
+      return retraction_line(last, rp);
+    }
+    decide("TRC-KONT-4", last.line, "intersection");
+    if (!close_open(x, last.line, last.number)) return;
+    run_dummies(x);
+    retraction_line(last, x);
   }
 
   // TRC-END-1: the program ends with compensation in force.

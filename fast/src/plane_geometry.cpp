@@ -64,13 +64,15 @@ double corner_trim(const Corner& c, int side, double radius) {
 }
 
 namespace {
-bool pick(Vec2 p, Vec2 q, bool two, Vec2 near, Vec2& out) {
-  out = two && norm(q - near) < norm(p - near) ? q : p;
+// Of two intersections the nearer; of two equally near the one further along `ahead`.
+bool pick(Vec2 p, Vec2 q, bool two, Vec2 near, Vec2 ahead, Vec2& out) {
+  double dp = norm(p - near), dq = norm(q - near);
+  out = two && (dq < dp || (dq == dp && dot(q - near, ahead) > dot(p - near, ahead))) ? q : p;
   return true;
 }
 }  // namespace
 
-bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& out) {
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out) {
   if (!u.circle && !v.circle) {
     double den = cross(u.direction, v.direction);
     if (den == 0) return false;
@@ -88,7 +90,7 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& o
     double half2 = c.radius * c.radius - dist2;
     if (half2 < 0) return false;
     double h = std::sqrt(half2);
-    return pick(foot - h * d, foot + h * d, h > 0, near, out);
+    return pick(foot - h * d, foot + h * d, h > 0, near, ahead, out);
   }
   Vec2 d = v.point - u.point;
   double dd = dot(d, d);
@@ -98,7 +100,7 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& o
   if (across2 < 0) return false;
   Vec2 m = u.point + along * d;
   double h = std::sqrt(across2);
-  return pick(m + h * left_normal(d), m - h * left_normal(d), h > 0, near, out);
+  return pick(m + h * left_normal(d), m - h * left_normal(d), h > 0, near, ahead, out);
 }
 
 double carrier_gap(const Carrier& u, const Carrier& v) {

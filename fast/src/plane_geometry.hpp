@@ -54,13 +54,14 @@ Corner classify_corner(Vec2 end_tangent, Vec2 start_tangent, int side);
 // Signed shortening s r tan(phi/2) of two straight equidistants at their intersection.
 double corner_trim(const Corner& c, int side, double radius);
 
-// An equidistant extended to its carrier, and the carriers' intersection nearest to a point.
+// An equidistant extended to its carrier, and the carriers' intersection nearest to a point (of
+// two equally near, the one further along `ahead`).
 struct Carrier {
   bool circle = false;
   Vec2 point, direction;  // line
   double radius = 0;      // circle about `point`
 };
-bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2& out);
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out);
 // <= 0 when two carriers (at least one a circle) meet: see ref's carrier_gap.
 double carrier_gap(const Carrier& u, const Carrier& v);
 

@@ -211,9 +211,6 @@ class Reference {
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "KONTC/KONTT approach (needs polynomial output)");
-    if (b.state.approach == ApproachMode::kKont)
-      throw UnsupportedError(  // TRC-UNSUP-1
-          b.words.line, "KONT approach");
     // TRC-SEL-3: a single programmed plane axis was completed by the reader (NC-POS-1).
     decide("TRC-SEL-1", b.words.line, "selected");
     Decimal effective = b.state.effective_radius();
@@ -291,24 +288,126 @@ class Reference {
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "change of compensation side G41/G42 before the first contour block");
     if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
-    approach_norm(b);
+    approach(b);
   }
 
-  // TRC-APPR-NORM-1: a straight line from the start position to the point normal to the start of
-  // the first contour element, at distance r on the compensation side.
-  void approach_norm(const Block& first_block) {
+  // TRC-APPR-NORM-1 / TRC-KONT-*: the move onto the contour from the start position.
+  void approach(const Block& first_block) {
     ContourElement first = element_of(first_block);
     FT radius;
     if (!equidistant_exists(first, radius)) return raise(10751, first_block);  // nothing before it to meet
-    Point onto = equidistant_point<Kernel>(first.a, first.start_normal(), comp_->side_radius);
     ExactPoint from = selection_start();
-    ExactPoint to = at({onto, coord(selection_->end, comp_->axes.applicate)});
+    Decimal h = coord(selection_->end, comp_->axes.applicate);
+    if (selection_->state.approach == ApproachMode::kKont) {
+      KontCorner k;
+      k.vertex = first.a, k.point = from.plane(comp_->axes);
+      k.d1 = k.vertex - k.point, k.d2 = first.start_dir;
+      if (!selection_from_ && first.rational)
+        k.r1 = RationalVector{mpq_class(units_of(coord(selection_->end, comp_->axes.abscissa)) -
+                                        units_of(coord(selection_->start, comp_->axes.abscissa))),
+                              mpq_class(units_of(coord(selection_->end, comp_->axes.ordinate)) -
+                                        units_of(coord(selection_->start, comp_->axes.ordinate)))},
+        k.r2 = first.start_tangent;
+      if (kont_behind(*selection_, k, k.d2, 10755)) return approach_around(first_block, first, radius, from, h, k);
+      if (stopped_) return;
+    }
+    Point onto = equidistant_point<Kernel>(first.a, first.start_normal(), comp_->side_radius);
+    ExactPoint to = at({onto, h});
     FT length = path.distance(from, to);
     decide("TRC-APPR-NORM-1", selection_->words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line",
            exact_mm(length));
     emit_line(*selection_, from, to, OriginKind::kApproach);
     run_held_back(onto);
     open(first_block, first, onto, radius, true);
+    phase_ = Phase::kActive;
+  }
+
+  // --- KONT: travelling around the start or end point (TRC-KONT-*) -----------------------------
+  // The corner a KONT move makes with the contour at `vertex`: d1 runs into it, d2 out of it;
+  // `point` is the tool-centre position off the contour (approach: start, retraction: end).
+  struct KontCorner {
+    Point vertex, point;
+    Vector d1, d2;
+    std::optional<RationalVector> r1, r2;  // the same directions, rational when all data are
+  };
+
+  // TRC-KONT-1: behind the contour = strictly on the far side of the contour's tangent line
+  // (`tangent` at the vertex) from the compensation side; TRC-KONT-2: then the point must not lie
+  // inside the circle of radius r about the vertex (alarm `alarm`). True: travel around.
+  bool kont_behind(const Block& at_block, const KontCorner& k, const Vector& tangent, int alarm) {
+    Vector off = k.point - k.vertex;
+    FT cross = tangent.x() * off.y() - tangent.y() * off.x();
+    bool behind = comp_->s * static_cast<int>(CGAL::sign(cross)) < 0;
+    decide("TRC-KONT-1", at_block.words.line, behind ? "behind" : "in-front",
+           exact_mm(FT(comp_->s) * cross / CGAL::sqrt(tangent.squared_length())));
+    if (!behind) return false;
+    FT distance2 = off.squared_length();
+    bool inside = CGAL::compare(distance2, comp_->side_radius * comp_->side_radius) == CGAL::SMALLER;
+    decide("TRC-KONT-2", at_block.words.line, inside ? "inside" : "room",
+           exact_mm(CGAL::sqrt(distance2) - leaf(comp_->radius)));
+    if (inside) raise(alarm, at_block, "TRC-KONT-2");
+    return !inside;
+  }
+
+  // TRC-KONT-3/4 with TRC-CORNER-3/4: circle (G450) or intersection (G451), switched by the
+  // contour angle of the corner like any outer corner; `mode` is the deciding block's G450/G451.
+  bool kont_circle(const Block& at_block, const KontCorner& k) {
+    if (k.r1 && k.r2) return outer_corner_circle(at_block, classify_corner(*k.r1, *k.r2, comp_->s), {}, {});
+    FT cross = k.d1.x() * k.d2.y() - k.d1.y() * k.d2.x(), dot = k.d1 * k.d2;
+    return outer_corner_circle(at_block, std::nullopt, cross, dot);
+  }
+
+  // Where the equidistant of the KONT line (through `on_line` with direction `d`) meets the
+  // contour element's carrier, nearest the vertex; empty if they do not meet (circles only).
+  std::optional<Point> kont_intersection(const Block& at_block, const KontCorner& k, const ContourElement& e,
+                                         const FT& e_radius, const Point& on_line, const Vector& d) {
+    if (!e.is_arc()) {
+      FT cross = k.d1.x() * k.d2.y() - k.d1.y() * k.d2.x(), dot = k.d1 * k.d2;
+      FT l1 = CGAL::sqrt(k.d1.squared_length()), l2 = CGAL::sqrt(k.d2.squared_length());
+      FT trim = corner_trim<Kernel>(cross, dot, l1, l2, comp_->side_radius);
+      Vector n1(-k.d1.y() / l1, k.d1.x() / l1);
+      return corner_intersection<Kernel>(k.vertex, n1, k.d1, l1, comp_->side_radius, trim);
+    }
+    Carrier<Kernel> line;
+    line.point = on_line, line.direction = d;
+    Carrier<Kernel> u = carrier_of(e, e_radius);
+    std::optional<Point> x = nearest_intersection(u, line, k.vertex, k.d2);
+    decide("TRC-ARC-CORNER-1", at_block.words.line, x ? "intersection" : "none",
+           exact_mm(carrier_gap<Kernel>(u, line)));
+    return x;
+  }
+
+  static Vector unit_left_normal(const Vector& d) {
+    FT l = CGAL::sqrt(d.squared_length());
+    return Vector(-d.y() / l, d.x() / l);
+  }
+
+  // TRC-KONT-3 / TRC-KONT-4 on approach: the approach line is a contour element ending at the
+  // start point S and meeting the first block at an outer corner.
+  void approach_around(const Block& first_block, const ContourElement& first, const FT& radius, const ExactPoint& from,
+                       const Decimal& h, const KontCorner& k) {
+    Point a = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d1), comp_->side_radius);
+    bool circle = kont_circle(*selection_, k);
+    std::optional<Point> x;
+    if (!circle) x = kont_intersection(*selection_, k, first, radius, a, k.d1);
+    if (!x) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2: no intersection at an outer corner)
+      decide("TRC-KONT-3", selection_->words.line, "circle");
+      emit_line(*selection_, from, at({a, h}), OriginKind::kApproach);
+      run_held_back(a);
+      Point q = equidistant_point<Kernel>(k.vertex, first.start_normal(), comp_->side_radius);
+      Origin corner = origin(*selection_, OriginKind::kTransitionCircle);
+      corner.next_line = first_block.words.line, corner.next_block = first_block.words.number;
+      Decimal h1 = coord(first_block.start, comp_->axes.applicate);  // after the held-back blocks
+      if (comp_->radius.sign() != 0)                                 // TRC-G450-2
+        emit_arc(first_block, at({a, h1}), at({q, h1}), at({k.vertex, h1}), comp_->side_radius, comp_->s < 0, corner,
+                 comp_->axes);
+      open(first_block, first, q, radius, true);
+    } else {  // TRC-KONT-4
+      decide("TRC-KONT-4", selection_->words.line, "intersection");
+      emit_line(*selection_, from, at({*x, h}), OriginKind::kApproach);
+      run_held_back(*x);
+      open(first_block, first, *x, radius);
+    }
     phase_ = Phase::kActive;
   }
 
@@ -322,7 +421,7 @@ class Reference {
         decide("TRC-DESEL-3", b.words.line, "no-plane-axis");
         return hold_back(b);
       }
-      return deselect_norm(b);
+      return deselect(b);
     }
     if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
     corner(b);
@@ -411,27 +510,7 @@ class Reference {
     decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(kind)], exact_text(sine));
 
     bool circle = kind == CornerKind::kReversal;  // TRC-G450-3
-    if (kind == CornerKind::kOuter) {
-      bool g451 = next_block.state.corner == CornerMode::kG451;
-      // TRC-CORNER-3: G451 becomes G450 above MD20210; TRC-CORNER-4: G450 becomes G451 below MD20230.
-      const Decimal& limit = g451 ? md_.cutcom_corner_limit : md_.cutcom_curve_insert_limit;
-      AngleComparison a;
-      if (rational) {
-        const CornerClass& c = *rc;
-        mpz_class ic = c.a1 * c.b2 - c.b1 * c.a2, id = c.a1 * c.a2 + c.b1 * c.b2;
-        mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
-        a = compare_contour_angle(ic, id, l2, limit);
-      } else {
-        a = compare_contour_angle_exact(cross, dot, dot * dot + cross * cross, limit);
-      }
-      if (g451) {
-        circle = a.sign > 0;
-        decide("TRC-CORNER-3", next_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
-      } else {
-        circle = !(a.sign < 0);
-        decide("TRC-CORNER-4", next_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
-      }
-    }
+    if (kind == CornerKind::kOuter) circle = outer_corner_circle(next_block, rc, cross, dot);
     const Point vertex = first.b;  // a copy: open() replaces the element it comes from
     if (circle) return transition_circle(next_block, next, next_radius, vertex);
     if (kind == CornerKind::kTangent) {
@@ -449,7 +528,7 @@ class Reference {
     } else {
       // TRC-ARC-CORNER-1: the intersection of the equidistants' carriers nearest to the corner.
       Carrier<Kernel> u = carrier_of(first, open_radius_), v = carrier_of(next, next_radius);
-      x = nearest_intersection(u, v, vertex);
+      x = nearest_intersection(u, v, vertex, next.start_dir);
       decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none",
              exact_mm(carrier_gap<Kernel>(u, v)));
       if (!x && kind == CornerKind::kOuter)
@@ -464,6 +543,31 @@ class Reference {
     if (!close_open(*x, next_block)) return;
     run_held_back(*x);
     open(next_block, next, *x, next_radius);
+  }
+
+  // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
+  // G450/G451 of `at_block`, switched by the contour angle (exactly; rational where `rc` is given).
+  bool outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross,
+                           const FT& dot) {
+    bool g451 = at_block.state.corner == CornerMode::kG451;
+    const Decimal& limit = g451 ? md_.cutcom_corner_limit : md_.cutcom_curve_insert_limit;
+    AngleComparison a;
+    if (rc) {
+      const CornerClass& c = *rc;
+      mpz_class ic = c.a1 * c.b2 - c.b1 * c.a2, id = c.a1 * c.a2 + c.b1 * c.b2;
+      mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
+      a = compare_contour_angle(ic, id, l2, limit);
+    } else {
+      a = compare_contour_angle_exact(cross, dot, dot * dot + cross * cross, limit);
+    }
+    if (g451) {
+      bool circle = a.sign > 0;
+      decide("TRC-CORNER-3", at_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
+      return circle;
+    }
+    bool circle = !(a.sign < 0);
+    decide("TRC-CORNER-4", at_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
+    return circle;
   }
 
   // Where a point lies on an element's equidistant (normal start to normal end): the signed length
@@ -520,7 +624,7 @@ class Reference {
     if (!equidistant_exists(cand, radius)) return pass_over(b);
     Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
     Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
-    std::optional<Point> y = nearest_intersection(u, v, start);
+    std::optional<Point> y = nearest_intersection(u, v, start, cand.start_dir);
     bool valid = false;
     // No intersection at all: the gap between the carriers (lines: parallel, "inf").
     std::string margin = u.circle || v.circle ? exact_mm(carrier_gap<Kernel>(u, v)) : std::string("inf");
@@ -554,12 +658,18 @@ class Reference {
     skipped_.clear();
   }
 
+  // The carriers' intersection nearest to `vertex`; of two equally near, the one further along
+  // `ahead` (the second element's direction of travel), so that the choice does not depend on
+  // the orientation of the plane (TRC-ARC-CORNER-1, TRC-LOOK-2).
   static std::optional<Point> nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
-                                                   const Point& vertex) {
+                                                   const Point& vertex, const Vector& ahead) {
     std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
     if (xs.empty()) return std::nullopt;
-    if (xs.size() == 2 && CGAL::compare_distance_to_point(vertex, xs[1], xs[0]) == CGAL::SMALLER) return xs[1];
-    return xs[0];
+    if (xs.size() == 1) return xs[0];
+    CGAL::Comparison_result c = CGAL::compare_distance_to_point(vertex, xs[1], xs[0]);
+    if (c == CGAL::EQUAL)
+      return CGAL::compare((xs[1] - vertex) * ahead, (xs[0] - vertex) * ahead) == CGAL::LARGER ? xs[1] : xs[0];
+    return c == CGAL::SMALLER ? xs[1] : xs[0];
   }
 
   // TRC-G450-1: a circle of radius r about the programmed corner from the normal end point of the
@@ -601,17 +711,35 @@ class Reference {
     open_radius_ = radius;
   }
 
-  // TRC-DESEL-1, TRC-RETR-NORM-1: the last equidistant ends at its normal end point; a straight
-  // line leads to the programmed end point of the deselection block.
-  void deselect_norm(const Block& b) {
-    if (b.state.approach != ApproachMode::kNorm)
-      throw UnsupportedError(  // TRC-UNSUP-1: KONT retraction is issue #4, never run as NORM
-          b.words.line, "KONT retraction");
-    Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
+  // TRC-DESEL-1: deselection; with KONT from behind the end point TRC-KONT-* travel around it,
+  // otherwise (NORM, KONT in front) TRC-RETR-NORM-1.
+  void deselect(const Block& b) {
+    if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
     decide("TRC-DESEL-1", b.words.line, "deselected");
+    if (b.state.approach == ApproachMode::kKont) {
+      const ContourElement& last = *open_;
+      KontCorner k;
+      k.vertex = last.b, k.point = plane_point(b.end, comp_->axes);
+      k.d1 = last.end_dir, k.d2 = k.point - k.vertex;
+      if (last.rational)
+        k.r1 = last.end_tangent,
+        k.r2 = RationalVector{
+            mpq_class(units_of(coord(b.end, comp_->axes.abscissa)) - units_of(coord(last.end3, comp_->axes.abscissa))),
+            mpq_class(units_of(coord(b.end, comp_->axes.ordinate)) - units_of(coord(last.end3, comp_->axes.ordinate)))};
+      if (kont_behind(b, k, k.d1, 10756)) return retract_around(b, k);
+      if (stopped_) return;
+    }
+    Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
     if (!close_open(end, b, true)) return;
     run_held_back(end);
-    ExactPoint from = at({end, coord(b.start, comp_->axes.applicate)});
+    retraction_line(b, end);
+  }
+
+  // TRC-RETR-NORM-1: the straight line to the programmed end point, a tool-centre position.
+  void retraction_line(const Block& b, const Point& from_point) {
+    ExactPoint from = at({from_point, coord(b.start, comp_->axes.applicate)});
     ExactPoint to = at(b.end);
     FT length = path.distance(from, to);
     decide("TRC-RETR-NORM-1", b.words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line",
@@ -620,6 +748,32 @@ class Reference {
     phase_ = Phase::kOff;
     comp_.reset();
     open_.reset();
+  }
+
+  // TRC-KONT-3 / TRC-KONT-4 on retraction: the retraction line is a contour element starting at
+  // the end point E and meeting the last block at an outer corner.
+  void retract_around(const Block& b, const KontCorner& k) {
+    Point r = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d2), comp_->side_radius);
+    bool circle = kont_circle(b, k);
+    std::optional<Point> x;
+    if (!circle) x = kont_intersection(b, k, *open_, open_radius_, r, k.d2);
+    if (!x) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
+      decide("TRC-KONT-3", b.words.line, "circle");
+      Point from = equidistant_point<Kernel>(k.vertex, open_->end_normal(), comp_->side_radius);
+      Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
+      corner.next_line = b.words.line, corner.next_block = b.words.number;
+      if (!close_open(from, b, true)) return;
+      run_held_back(from);
+      Decimal h = coord(b.start, comp_->axes.applicate);
+      if (comp_->radius.sign() != 0)  // TRC-G450-2
+        emit_arc(b, at({from, h}), at({r, h}), at({k.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
+                 comp_->axes);
+      return retraction_line(b, r);
+    }
+    decide("TRC-KONT-4", b.words.line, "intersection");
+    if (!close_open(*x, b)) return;
+    run_held_back(*x);
+    retraction_line(b, *x);
   }
 
   // TRC-END-1: the program ends while compensation is selected.

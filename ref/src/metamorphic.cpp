@@ -75,3 +75,50 @@ std::string exact_image_mismatch(const std::string& original, const std::string&
 }
 
 }  // namespace cutcom::ref
+
+namespace cutcom::ref {
+
+namespace {
+// The elements of the move onto the contour (approach line, KONT circle) or off it.
+std::vector<const ExactPath::Element*> end_part(const ExactRun& r, bool approach, int selection_line,
+                                                int deselection_line) {
+  std::vector<const ExactPath::Element*> out;
+  for (std::size_t i = 0; i < r.result.path.size(); ++i) {
+    const Origin& o = r.result.path[i].origin;
+    bool take = approach ? o.kind == OriginKind::kApproach ||
+                               (o.kind == OriginKind::kTransitionCircle && o.line == selection_line)
+                         : o.kind == OriginKind::kRetraction ||
+                               (o.kind == OriginKind::kTransitionCircle && o.next_line == deselection_line);
+    if (take) out.push_back(&r.path.elements()[i]);
+  }
+  return out;
+}
+
+std::string mirrored(const std::vector<const ExactPath::Element*>& a, const std::vector<const ExactPath::Element*>& b,
+                     const char* what) {
+  if (a.size() != b.size()) return fmt::format("{}: {} elements against {}", what, a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const ExactPath::Element& x = *a[i];
+    const ExactPath::Element& y = *b[a.size() - 1 - i];
+    if (!equal(x.start, y.end) || !equal(x.end, y.start)) return fmt::format("{}: element {} is not reversed", what, i);
+    if (x.centre.has_value() != y.centre.has_value() || (x.centre && !equal(*x.centre, *y.centre)))
+      return fmt::format("{}: element {} has another centre", what, i);
+  }
+  return "";
+}
+}  // namespace
+
+std::optional<std::string> exact_reversal_mismatch(const std::string& original, const std::string& reversed,
+                                                   const MachineData& md, int selection_line, int deselection_line) {
+  ExactRun a = run_text(original, md), b = run_text(reversed, md);
+  if (a.result.path.size() != a.path.elements().size() || b.result.path.size() != b.path.elements().size())
+    return std::string("output and exact path differ in length");
+  if (!a.result.alarms.empty() || !b.result.alarms.empty()) return std::nullopt;
+  std::string why = mirrored(end_part(a, true, selection_line, deselection_line),
+                             end_part(b, false, selection_line, deselection_line), "approach / reversed retraction");
+  if (!why.empty()) return why;
+  return mirrored(end_part(a, false, selection_line, deselection_line),
+                  end_part(b, true, selection_line, deselection_line), "retraction / reversed approach");
+}
+
+}  // namespace cutcom::ref

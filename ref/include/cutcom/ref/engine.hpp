@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,13 @@ struct AffineMap {
 // under scaling); the original's by default.
 std::string exact_image_mismatch(const std::string& original, const std::string& mapped, const MachineData& md,
                                  const AffineMap& map, int first_line = 1, const MachineData* mapped_md = nullptr);
+
+// The mirror relation of approach and retraction (TRC-KONT-*, PROP-META-6): `reversed` runs the
+// same contour backwards (sides swapped, start and end swapped). Checks exactly that the approach
+// elements of each are the retraction elements of the other, reversed. Empty: they are; nullopt:
+// an alarm in either run (not comparable).
+std::optional<std::string> exact_reversal_mismatch(const std::string& original, const std::string& reversed,
+                                                   const MachineData& md, int selection_line, int deselection_line);
 
 // Reads the program block by block and runs it. Returns false if an alarm stopped it.
 // With `checks`, also verifies the exact path (costs exact zero tests: milliseconds each).

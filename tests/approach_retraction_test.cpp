@@ -1,0 +1,109 @@
+// Worked examples for approach and retraction (spec/approach-retraction.md), derived by hand.
+#include "support.hpp"
+
+namespace cutcom::test {
+namespace {
+
+using K = OriginKind;
+
+std::string tool(const std::string& radius = "2") { return "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=" + radius + "\n"; }
+
+bool alarm_is(const RunResult& r, int number, int line_no) {
+  return r.alarms.size() == 1 && r.alarms[0].number == number && r.alarms[0].line == line_no;
+}
+
+// covers: TRC-KONT-1
+TEST(ApproachRetraction, KontInFrontOrOnTheLineIsNorm) {
+  // The start (-10,0) and the end (20,0) lie on the tangent lines y = 0 of N30: in front, margin 0,
+  // so the path is NORM's: to (0,2), along y = 2, off to (20,0).
+  Runs on = run_both(tool() + "N10 G0 X-10 Y0 T1 D1\nN20 G1 G41 KONT X0 Y0 F100\nN30 X10\nN40 G40 X20 Y0\n");
+  for (const RunResult* x : {&on.ref, &on.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-1", "in-front"));
+    EXPECT_FALSE(has_decision(*x, "TRC-KONT-1", "behind"));
+  }
+  expect_both(on, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                   line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {20, 0, 0})});
+  EXPECT_EQ(on.ref.decisions[2].margin_exact, "0");
+  // Strictly in front: start (5,7) and end (15,9) above y = 0, on the compensation side (G41).
+  Runs front = run_both(tool() + "N10 G0 X5 Y7 T1 D1\nN20 G1 G41 KONT X0 Y0 F100\nN30 X10\nN40 G40 X15 Y9\n");
+  expect_both(front, {line(K::kProgrammed, {0, 0, 0}, {5, 7, 0}), line(K::kApproach, {5, 7, 0}, {0, 2, 0}),
+                      line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {15, 9, 0})});
+  EXPECT_EQ(front.ref.decisions[2].margin_exact, "7");
+}
+
+// covers: TRC-KONT-1 TRC-KONT-3 TRC-CORNER-4
+TEST(ApproachRetraction, ProgrammingManualExampleWithKontAndG450) {
+  // Digest §7 (PGA19 p.269, PGA04 p.8-39) as printed, r = 5 assumed. N40 runs +Y from S = (10,10);
+  // compensation on its left (-X). The start (35,0) lies at x > 10: behind (margin -25). The approach
+  // line d1 = S - P0 = (-25,10), left normal (-2,-5)/sqrt29: A = S + 5 (-2,-5)/sqrt29; deflection
+  // 68.2 deg (above MD20230 = 10: circle) about S from A clockwise to (5,10).
+  // Retraction: N60 ends at E = (10,10) with t2 = (-2,-1)/sqrt5; the end (-20,50) gives
+  // cross(t2, P0 - E) = cross((-2,-1), (-30,40)) = -110 < 0: behind. N60's equidistant ends at
+  // E + 5 (1,-2)/sqrt5; the circle about E, clockwise (79.7 deg), to R = E + 5 n(d2),
+  // d2 = (-30,40)/50, n = (-0.8,-0.6): R = (6,7); then straight to (-20,50).
+  const double s5 = std::sqrt(5.0), s29 = std::sqrt(29.0);
+  std::string text = tool("5") +
+                     "N10 G17 T1 D1 G0 X35 Y0 Z0 F500\nN20 G1 Z-5\nN30 G41 KONT G450 X10 Y10\nN40 Y60\nN50 X50 Y30\n"
+                     "N60 X10 Y10\nN80 G40 X-20 Y50\nN90 G0 Y100\nN100 X200 M30\n";
+  Runs r = run_both(text);
+  PathPoint a{10 - 10 / s29, 10 - 25 / s29, -5};
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {35, 0, 0}), line(K::kProgrammed, {35, 0, 0}, {35, 0, -5}),
+                  line(K::kApproach, {35, 0, -5}, a), arc(a, {5, 10, -5}, {10, 10, -5}, false),
+                  line(K::kOffset, {5, 10, -5}, {5, 60, -5}), arc({5, 60, -5}, {13, 64, -5}, {10, 60, -5}, false),
+                  line(K::kOffset, {13, 64, -5}, {53, 34, -5}),
+                  arc({53, 34, -5}, {50 + s5, 30 - 2 * s5, -5}, {50, 30, -5}, false),
+                  line(K::kOffset, {50 + s5, 30 - 2 * s5, -5}, {10 + s5, 10 - 2 * s5, -5}),
+                  arc({10 + s5, 10 - 2 * s5, -5}, {6, 7, -5}, {10, 10, -5}, false),
+                  line(K::kRetraction, {6, 7, -5}, {-20, 50, -5}), line(K::kProgrammed, {-20, 50, -5}, {-20, 100, -5}),
+                  line(K::kProgrammed, {-20, 100, -5}, {200, 100, -5})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-3", "circle"));
+    EXPECT_FALSE(has_decision(*x, "TRC-KONT-1", "in-front"));
+  }
+  EXPECT_EQ(r.ref.decisions[2].margin_exact, "-25");  // TRC-KONT-1 at N30: (35 - 10) behind x = 10
+}
+
+// covers: TRC-KONT-4 TRC-CORNER-3
+TEST(ApproachRetraction, KontWithG451MeetsTheExtendedEquidistant) {
+  // From (-10,-10) to S = (0,0), N30 along +X, G41 (compensation side +Y): behind. Approach line
+  // (1,1)/sqrt2, deflection 45 deg (G451 kept, MD20210 = 100). Its equidistant passes
+  // A = (-sqrt2, sqrt2) with direction (1,1) and meets y = 2 at X = (2 - 2 sqrt2, 2).
+  // Retraction from E = (20,0) to (30,-10): behind; R = E + 2 (1,1)/sqrt2, the line R + t (1,-1)
+  // meets y = 2 at (18 + 2 sqrt2, 2).
+  const double s2 = std::sqrt(2.0);
+  Runs r = run_both(tool() + "N10 G0 X-10 Y-10 T1 D1\nN20 G1 G41 KONT G451 X0 Y0 F100\nN30 X20\nN40 G40 X30 Y-10\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, -10, 0}), line(K::kApproach, {-10, -10, 0}, {2 - 2 * s2, 2, 0}),
+                  line(K::kOffset, {2 - 2 * s2, 2, 0}, {18 + 2 * s2, 2, 0}),
+                  line(K::kRetraction, {18 + 2 * s2, 2, 0}, {30, -10, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-4", "intersection"));
+    EXPECT_TRUE(has_decision(*x, "TRC-CORNER-3", "keep-G451"));
+  }
+  // At 135 deg (start (10,-10)) G451 switches to the circle: A = 2 (-1,-1)/sqrt2, circle to (0,2);
+  // the retraction to (20,2) (in front) has length 0 and is not output.
+  Runs sharp = run_both(tool() + "N10 G0 X10 Y-10 T1 D1\nN20 G1 G41 KONT G451 X0 Y0 F100\nN30 X20\nN40 G40 Y2\n");
+  expect_both(sharp, {line(K::kProgrammed, {0, 0, 0}, {10, -10, 0}), line(K::kApproach, {10, -10, 0}, {-s2, -s2, 0}),
+                      arc({-s2, -s2, 0}, {0, 2, 0}, {0, 0, 0}, false), line(K::kOffset, {0, 2, 0}, {20, 2, 0})});
+}
+
+// covers: TRC-KONT-2
+TEST(ApproachRetraction, KontNeedsRoomAroundTheStartAndEndPoint) {
+  // Behind and inside the circle of radius 2 about S = (0,0): alarm 10755 at the selection block.
+  Runs in = run_both(tool() + "N10 G0 X1 Y-1 T1 D1\nN20 G1 G41 KONT X0 Y0 F100\nN30 X20\nN40 G40 X30 Y5\n");
+  EXPECT_TRUE(alarm_is(in.ref, 10755, 4));
+  EXPECT_TRUE(alarm_is(in.fast, 10755, 4));
+  EXPECT_EQ(in.ref.path.size(), 1u);  // only N10
+  // On the circle is room: from (0,-2) straight to A = (-2,0), then about S to (0,2).
+  Runs on = run_both(tool() + "N10 G0 X0 Y-2 T1 D1\nN20 G1 G41 KONT X0 Y0 F100\nN30 X20\nN40 G40 X21 Y-1\n");
+  EXPECT_TRUE(alarm_is(on.ref, 10756, 6));  // the end (21,-1) lies behind, inside the circle about (20,0)
+  EXPECT_TRUE(alarm_is(on.fast, 10756, 6));
+  expect_both(on, {line(K::kProgrammed, {0, 0, 0}, {0, -2, 0}), line(K::kApproach, {0, -2, 0}, {-2, 0, 0}),
+                   arc({-2, 0, 0}, {0, 2, 0}, {0, 0, 0}, false)});
+  for (const RunResult* x : {&on.ref, &on.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-2", "room"));
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-2", "inside"));
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::test
