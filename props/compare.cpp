@@ -89,9 +89,9 @@ double Tolerance::band(std::string_view clause) const {
   if (clause == "TRC-CORNER-1") return sine;
   if (clause == "TRC-CORNER-3" || clause == "TRC-CORNER-4") return degrees;
   if (clause == "TRC-ELEMENT-1" || clause == "TRC-ARC-ELEMENT-1" || clause == "TRC-APPR-NORM-1" ||
-      clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-LOOK-1" ||
-      clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" || clause == "ARC-CR-1" ||
-      clause == "TRC-ARC-CORNER-1")
+      clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-EDGE-5" ||
+      clause == "TRC-LOOK-1" || clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" ||
+      clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1")
     return coordinate;
   return 0;  // decisions on exact decimals (block kinds, alarms) never diverge
 }

@@ -30,8 +30,9 @@ std::string to_program(const ContourCase& c) {
   p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}0 T1 D1\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
                    fixed(c.start_y, c.decimals), h);
   n += 10;
-  p += fmt::format("N{} G1 {} {} {} {}{} {}{} F500\n", n, c.right ? "G42" : "G41", c.kont_select ? "KONT" : "NORM",
-                   c.g451_select ? "G451" : "G450", a, fixed(c.first_x, c.decimals), b, fixed(c.first_y, c.decimals));
+  p += fmt::format("N{} G1 {} {} {} G{} {}{} {}{} F500\n", n, c.right ? "G42" : "G41", c.kont_select ? "KONT" : "NORM",
+                   c.g451_select ? "G451" : "G450", c.edge_select, a, fixed(c.first_x, c.decimals), b,
+                   fixed(c.first_y, c.decimals));
   std::int64_t x = c.first_x, y = c.first_y;
   bool right = c.right;
   int depth = 0;
@@ -59,8 +60,9 @@ std::string to_program(const ContourCase& c) {
     }
   }
   n += 10;
-  p += fmt::format("N{} G1 G40 {} {} {}{} {}{}\n", n, c.kont_deselect ? "KONT" : "NORM",
-                   c.g451_deselect ? "G451" : "G450", a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));
+  p += fmt::format("N{} G1 G40 {} {} G{} {}{} {}{}\n", n, c.kont_deselect ? "KONT" : "NORM",
+                   c.g451_deselect ? "G451" : "G450", c.edge_deselect, a, fixed(c.end_x, c.decimals), b,
+                   fixed(c.end_y, c.decimals));
   p += fmt::format("N{} M30\n", n + 10);
   return p;
 }

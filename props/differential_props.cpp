@@ -15,6 +15,14 @@ void check_agreement(const ContourCase& c) {
   RC_TAG(c.style);
   CaseRuns r = run_case(c, false);
   Verdict v = compare(r.ref, r.fast, r.tolerance);
+  if (r.ref_unsupported || r.fast_unsupported) {
+    // TRC-UNSUP-1: both reject naming the same line, or one does after a knife edge.
+    RC_TAG("not supported");
+    if (r.ref_unsupported != r.fast_unsupported && v.kind != Verdict::Kind::kKnifeEdge)
+      RC_FAIL("not supported at line " + std::to_string(r.ref_unsupported) + " (ref) / " +
+              std::to_string(r.fast_unsupported) + " (fast); " + v.explanation);
+    if (r.ref_unsupported == r.fast_unsupported) return;
+  }
   RC_TAG(v.kind == Verdict::Kind::kKnifeEdge ? "knife-edge " + v.clause : "agreeing");
   RC_TAG(r.ref.alarms.empty() ? "no alarm" : "alarm " + std::to_string(r.ref.alarms[0].number));
   if (v.kind == Verdict::Kind::kDiverge) RC_FAIL(v.explanation);

@@ -37,6 +37,7 @@ void common(ContourCase& c) {
   }
   c.kont_select = *inRange(0, 3) != 0, c.kont_deselect = *inRange(0, 3) != 0;
   c.g451_select = *inRange(0, 3) == 0, c.g451_deselect = *inRange(0, 3) == 0;
+  c.edge_select = *element(460, 461, 462, 462), c.edge_deselect = *element(460, 461, 462, 462);
   for (std::size_t i = 0; i < c.steps.size(); ++i) {
     Step& s = c.steps[i];
     // Never in the first contour block after a selection (not supported there): not in the first

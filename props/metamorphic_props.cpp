@@ -82,8 +82,14 @@ void check_image(const ContourCase& c, const PlaneMap& f) {
   MachineData image_md = machine_data_of(c);
   image_md.circle_error_const = *Decimal::parse(fixed(10'000 * f.radius_factor, 6)).value;  // 0.01 mm times the factor
   MachineData md = machine_data_of(c);
-  std::string why = ref::exact_image_mismatch(to_program(c), to_program(image), md,
-                                              workpiece_map(f, c.plane, c.decimals), 4, &image_md);
+  std::string why;
+  try {
+    why = ref::exact_image_mismatch(to_program(c), to_program(image), md, workpiece_map(f, c.plane, c.decimals), 4,
+                                    &image_md);
+  } catch (const UnsupportedError&) {  // TRC-UNSUP-1: not comparable
+    RC_TAG("not supported");
+    return;
+  }
   if (!why.empty()) RC_FAIL(why + "\nimage program:\n" + to_program(image));
 }
 
@@ -132,7 +138,13 @@ RC_GTEST_PROP(Metamorphic, SameContourInAnotherPlaneIsThePermutedPath, ()) {
   ref::AffineMap m;
   m.m = other.plane == 18 ? std::array<std::array<long, 3>, 3>{{{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}}
                           : std::array<std::array<long, 3>, 3>{{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}};
-  std::string why = ref::exact_image_mismatch(to_program(c), to_program(other), machine_data_of(c), m);
+  std::string why;
+  try {
+    why = ref::exact_image_mismatch(to_program(c), to_program(other), machine_data_of(c), m);
+  } catch (const UnsupportedError&) {  // TRC-UNSUP-1: not comparable
+    RC_TAG("not supported");
+    return;
+  }
   if (!why.empty()) RC_FAIL(why + "\nother program:\n" + to_program(other));
 }
 

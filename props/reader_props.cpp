@@ -15,6 +15,7 @@ namespace {
 
 struct Outcome {
   bool rejected = false;
+  int unsupported = 0;  // line of a "not supported" rejection (TRC-UNSUP-1), reached by decisions
   int error_line = 0;
   std::string error;
   RunResult result;
@@ -24,13 +25,16 @@ Outcome run_text(const std::string& text, bool use_ref) {
   Outcome o;
   MachineData md;
   std::istringstream in(text);
+  CollectingSink sink;
   try {
     ProgramReader reader(in, md.initial_state());
-    CollectingSink sink;
     if (use_ref)
       ref::run(reader, md, sink);
     else
       fast::run(reader, md, sink);
+    o.result = std::move(sink.result);
+  } catch (const UnsupportedError& e) {
+    o.unsupported = e.line();
     o.result = std::move(sink.result);
   } catch (const InputError& e) {
     o.rejected = true;
@@ -57,9 +61,17 @@ void check_robust(const std::string& text) {
   ProgramReader reader(in);
   std::vector<Block> blocks;
   Block b;
-  while (reader.next(b)) blocks.push_back(b);
+  try {
+    while (reader.next(b)) blocks.push_back(b);
+  } catch (const InputError&) {  // after a "not supported" block (TRC-UNSUP-1) that ended both runs
+    RC_ASSERT(f.unsupported > 0 || r.unsupported > 0);
+  }
   Verdict v = compare(r.result, f.result, Tolerance::for_program(conditioning_of(blocks)));
   if (v.kind == Verdict::Kind::kDiverge) RC_FAIL(v.explanation);
+  // TRC-UNSUP-1: rejected as not supported by both at the same block, or by one after a knife edge.
+  if (f.unsupported != r.unsupported && v.kind != Verdict::Kind::kKnifeEdge)
+    RC_FAIL("not supported at line " + std::to_string(r.unsupported) + " (ref) / " + std::to_string(f.unsupported) +
+            " (fast)");
 }
 
 rc::Gen<std::string> nc_like_text() {

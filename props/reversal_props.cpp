@@ -18,6 +18,7 @@ ContourCase reversed(const ContourCase& c) {
   r.start_x = c.end_x, r.start_y = c.end_y, r.first_x = ex, r.first_y = ey, r.end_x = c.start_x, r.end_y = c.start_y;
   r.kont_select = c.kont_deselect, r.kont_deselect = c.kont_select;
   r.g451_select = c.g451_deselect, r.g451_deselect = c.g451_select;
+  r.edge_select = c.edge_deselect, r.edge_deselect = c.edge_select;
   r.steps.clear();
   for (std::size_t k = c.steps.size(); k-- > 0;) {
     const Step& s = c.steps[k];
@@ -37,8 +38,13 @@ RC_GTEST_PROP(Metamorphic, ReversingTheContourSwapsApproachAndRetraction, ()) {
   for (Step& s : c.steps) s.dummies = 0, s.flip = false;  // one selection, one deselection
   RC_TAG(c.style);
   int deselection_line = 5 + static_cast<int>(c.steps.size());  // $TC lines, N10, N20, the steps
-  std::optional<std::string> why =
-      ref::exact_reversal_mismatch(to_program(c), to_program(reversed(c)), machine_data_of(c), 4, deselection_line);
+  std::optional<std::string> why;
+  try {
+    why = ref::exact_reversal_mismatch(to_program(c), to_program(reversed(c)), machine_data_of(c), 4, deselection_line);
+  } catch (const UnsupportedError&) {  // TRC-UNSUP-1: not comparable
+    RC_TAG("not supported");
+    return;
+  }
   RC_TAG(why ? "compared" : "alarm");
   if (why && !why->empty()) RC_FAIL(*why + "\nreversed program:\n" + to_program(reversed(c)));
 }

@@ -12,6 +12,7 @@ namespace cutcom::props {
 
 struct CaseRuns {
   RunResult ref, fast;
+  int ref_unsupported = 0, fast_unsupported = 0;  // line of a "not supported" rejection (TRC-UNSUP-1)
   ref::ExactCheckReport exact;
   Tolerance tolerance;
 };
@@ -31,14 +32,22 @@ inline CaseRuns run_case(const ContourCase& c, bool exact_checks) {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
     CollectingSink sink;
-    ref::run(reader, md, sink, exact_checks ? &out.exact : nullptr);
+    try {
+      ref::run(reader, md, sink, exact_checks ? &out.exact : nullptr);
+    } catch (const UnsupportedError& e) {
+      out.ref_unsupported = e.line();
+    }
     out.ref = std::move(sink.result);
   }
   {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
     CollectingSink sink;
-    fast::run(reader, md, sink);
+    try {
+      fast::run(reader, md, sink);
+    } catch (const UnsupportedError& e) {
+      out.fast_unsupported = e.line();
+    }
     out.fast = std::move(sink.result);
   }
   std::istringstream in(text);

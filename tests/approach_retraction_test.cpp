@@ -107,3 +107,89 @@ TEST(ApproachRetraction, KontNeedsRoomAroundTheStartAndEndPoint) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+using K = OriginKind;
+
+std::string retraction_case(const std::string& strategy) {
+  // r = 5. N30 runs +X (equidistant y = 5); N40 goes up 3 < r at an inner corner: its equidistant
+  // x = 35 ends at (35,3) below y = 5, too short; the look-ahead meets the deselection N50.
+  return "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F100\nN30 X40\nN40 Y3\nN50 G40 " +
+         strategy + " X20 Y20\n";
+}
+
+// covers: TRC-EDGE-1 TRC-EDGE-2 TRC-EDGE-3 TRC-EDGE-4 TRC-EDGE-5 MD-20150-1
+TEST(ApproachRetraction, TooShortLastBlockWithG460G461G462) {
+  // G462 (initial setting): N40's equidistant extended beyond (35,3) along +Y meets y = 5 at (35,5).
+  // G461: the circle of radius 5 about N40's end (40,3) meets y = 5 at 40 -+ sqrt21; the first
+  // along N30 is (40 - sqrt21, 5): the tool touches the corner point and N30.
+  // G460: the line from (35,3) to the end (20,20) meets y = 5 at t = 2/17: (35 - 30/17, 5).
+  // In each case N40 is skipped and the retraction runs from the hit to (20,20).
+  const double hits[] = {35, 40 - std::sqrt(21.0), 35 - 30.0 / 17};
+  const char* words[] = {"", "G461", "G460"};
+  const char* names[] = {"G462", "G461", "G460"};
+  for (int i = 0; i < 3; ++i) {
+    Runs r = run_both(retraction_case(words[i]));
+    expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 5, 0}),
+                    line(K::kOffset, {0, 5, 0}, {hits[i], 5, 0}), line(K::kRetraction, {hits[i], 5, 0}, {20, 20, 0})});
+    for (const RunResult* x : {&r.ref, &r.fast}) {
+      EXPECT_TRUE(has_decision(*x, "TRC-EDGE-1", names[i])) << names[i];
+      EXPECT_TRUE(has_decision(*x, "TRC-EDGE-5", "hit")) << names[i];
+      EXPECT_TRUE(has_decision(*x, "TRC-LOOK-3", "skipped")) << names[i];
+    }
+  }
+  // MD20150[47] = 2 makes G461 the initial setting.
+  MachineData md;
+  md.set("MD20150[47]", "2");
+  Runs g461 = run_both(retraction_case(""), md);
+  EXPECT_TRUE(has_decision(g461.ref, "TRC-EDGE-1", "G461"));
+  EXPECT_TRUE(has_decision(g461.fast, "TRC-EDGE-1", "G461"));
+}
+
+std::string manual_g461(const std::string& strategy) {
+  return "N10 $TC_DP1[1,1]=120 ; Tool type mill\nN20 $TC_DP6[1,1]=10 ; Radius\nN30 X0 Y0 F10000 T1 D1\nN40 Y20\n"
+         "N50 G42 X50 Y5 " +
+         strategy + "\nN60 Y0 F600\nN70 X30\nN80 X20 Y-5\nN90 X0 Y0 G40\nN100 M30\n";
+}
+
+// covers: TRC-EDGE-1 TRC-EDGE-3 TRC-EDGE-4 TRC-EDGE-5 TRC-G450-1
+TEST(ApproachRetraction, ManualG461ApproachExample) {
+  // Digest §2.6 (FM06 p.94) verbatim. r = 10, G42. The first block N60 runs -Y from (50,5) to (50,0)
+  // (equidistant x = 40, 5 long); N70 runs -X (equidistant y = 10). The inner corner's intersection
+  // (40,10) lies before N60's normal start (40,5): N60 would run backwards. G461: the circle of
+  // radius 10 about N60's start (50,5) meets y = 10 at 50 -+ 5 sqrt3; on N70's equidistant (x from
+  // 50 to 30) only 50 - 5 sqrt3. The approach goes there, N60 is skipped. N70/N80 is an outer corner
+  // (left turn, G42): circle about (30,0) from (30,10) to (30,0) - 10 (1,-2)/sqrt5; N80's
+  // equidistant ends at (20,-5) - 10 (1,-2)/sqrt5; G40 retracts to (0,0). No G1: all moves are G0.
+  const double s3 = std::sqrt(3.0), s5 = std::sqrt(5.0);
+  PathPoint c{30 - 10 / s5, 20 / s5, 0}, e{20 - 10 / s5, -5 + 20 / s5, 0};
+  Runs r = run_both(manual_g461("G461"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {0, 20, 0}), line(K::kApproach, {0, 20, 0}, {50 - 5 * s3, 10, 0}),
+                  line(K::kOffset, {50 - 5 * s3, 10, 0}, {30, 10, 0}), arc({30, 10, 0}, c, {30, 0, 0}, true),
+                  line(K::kOffset, c, e), line(K::kRetraction, e, {0, 0, 0})});
+  // G462: N60's equidistant extended backwards from (40,5) along +Y meets y = 10 at (40,10).
+  Runs g462 = run_both(manual_g461("G462"));
+  expect_both(g462, {line(K::kProgrammed, {0, 0, 0}, {0, 20, 0}), line(K::kApproach, {0, 20, 0}, {40, 10, 0}),
+                     line(K::kOffset, {40, 10, 0}, {30, 10, 0}), arc({30, 10, 0}, c, {30, 0, 0}, true),
+                     line(K::kOffset, c, e), line(K::kRetraction, e, {0, 0, 0})});
+}
+
+// covers: TRC-EDGE-2 TRC-EDGE-5 ALARM-1
+TEST(ApproachRetraction, G460ApproachFindsNoIntersection) {
+  // G460: the approach line from (0,20) to N60's normal start (40,5) meets y = 10 at x = 26.7,
+  // outside N70's equidistant (30..50): alarm 10751 names N70; the approach line was decided and
+  // is output.
+  Runs r = run_both(manual_g461("G460"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {0, 20, 0}), line(K::kApproach, {0, 20, 0}, {40, 5, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10751);
+    EXPECT_EQ(x->alarms[0].line, 7);
+    EXPECT_TRUE(has_decision(*x, "TRC-EDGE-5", "none"));
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::test

@@ -101,7 +101,7 @@ TEST(ArcExamples, OuterCornerLineToCircleWithTransitionCircle) {
                   offset_arc(from, end, {5, 5, 0}, true), line(K::kRetraction, end, {20, 20, 0})});
 }
 
-// covers: TRC-ARC-EQ-1 TRC-LOOK-1 TRC-LOOK-2 TRC-LOOK-3 ALARM-1
+// covers: TRC-ARC-EQ-1 TRC-LOOK-1 TRC-LOOK-2 TRC-LOOK-3 ALARM-1 TRC-EDGE-4
 TEST(ArcExamples, CircleSmallerThanTheToolOnTheInsideIsSkipped) {
   // An inner fillet N40 of radius 1 < r = 2 (ccw about (10,1)): its equidistant collapses, the
   // look-ahead intersects N30's y = 2 with N50's x = 11 - 2 = 9: (9,2), 1 after N50's normal
@@ -113,13 +113,12 @@ TEST(ArcExamples, CircleSmallerThanTheToolOnTheInsideIsSkipped) {
   EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "collapses"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-LOOK-3", "skipped"));
   // A half circle of radius 1 ending the contour: nothing after it meets N30's equidistant before
-  // the G40 block, which the alarm names.
+  // the G40 block. G462 (initial setting) extends N40 beyond its normal end (10,0) along its end
+  // tangent +Y: it meets y = 2 at (10,2), N30's normal end, where N40 is skipped.
   Runs end = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G3 X12 Y0 I1 J0\nN50 G1 G40 X20 Y0\n"));
-  for (const RunResult* x : {&end.fast, &end.ref}) {
-    ASSERT_EQ(x->alarms.size(), 1u);
-    EXPECT_EQ(x->alarms[0].number, 10751);
-    EXPECT_EQ(x->alarms[0].line, 7);
-  }
+  expect_both(end, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                    line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {20, 0, 0})});
+  EXPECT_TRUE(has_decision(end.ref, "TRC-EDGE-1", "G462"));
 }
 
 // covers: TRC-ARC-CORNER-2

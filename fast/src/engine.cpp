@@ -33,6 +33,8 @@ struct BlockCopy {
   bool actions_done = false;
   bool kont = false;  // KONT in force (approach and retraction)
   bool g451 = false;  // G451 in force
+  bool cdon = false;  // CDON in force
+  EdgeStrategy edge_strategy = EdgeStrategy::kG462;
 
   static BlockCopy of(const Block& b) {
     BlockCopy c;
@@ -52,6 +54,8 @@ struct BlockCopy {
     c.aux_count = b.words.aux_count;
     c.kont = b.state.approach == ApproachMode::kKont;
     c.g451 = b.state.corner == CornerMode::kG451;
+    c.cdon = b.state.collision == CollisionMode::kCdon;
+    c.edge_strategy = b.state.edge_strategy;
     return c;
   }
 };
@@ -81,6 +85,12 @@ struct Engine::State {
 
   BlockCopy selection;               // kApproach: the selection block
   bool selection_from_tool = false;  // its start is the tool after a side change (TRC-SIDE-1)
+  // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
+  // output once the first element's end is known.
+  bool approach_pending = false;
+  PathPoint approach_to;
+  std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> approach_dummies;
+  int approach_dummy_count = 0;
   // kActive: the open element, whose end waits for the next traversing block.
   BlockCopy open;
   Element open_el;
@@ -119,6 +129,7 @@ struct Engine::State {
     sink.decision(d);
   }
   void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
+    flush_approach();  // ALARM-1: what was decided before the alarm is output
     sink.alarm(make_alarm(number, line, block, clause));
     stopped = true;
   }
@@ -180,7 +191,14 @@ struct Engine::State {
   // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
   // not run backwards; it is output unless its length is 0. The alarm names `alarm_line`: the
   // block whose preparation found the problem. False when an alarm stopped the program.
-  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block) {
+  // `candidate`: the block whose equidistant fixed this end (for TRC-EDGE-* on approach).
+  struct Candidate {
+    const BlockCopy* block;
+    const Element* element;
+    double radius;
+  };
+  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block,
+                  const Candidate* candidate = nullptr) {
     const Element& e = open_el;
     double margin;
     if (!e.arc) {
@@ -193,10 +211,13 @@ struct Engine::State {
     std::string_view clause = e.arc ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
     if (margin < 0) {
       decide(clause, open.line, "reverses", margin);
+      // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
+      if (approach_pending && candidate) return approach_edge(*candidate), false;
       raise(10751, alarm_line, alarm_block);
       return false;
     }
     decide(clause, open.line, margin == 0 ? "vanishes" : "fits", margin);
+    flush_approach();
     PathPoint from = xyz(open_start, h(open.start)), to = xyz(end_point, h(open.end));
     if (margin == 0) {
       actions(open, to);
@@ -372,10 +393,26 @@ struct Engine::State {
                               (to.y - selection.start.y) * (to.y - selection.start.y) +
                               (to.z - selection.start.z) * (to.z - selection.start.z));
     decide("TRC-APPR-NORM-1", selection.line, length == 0 ? "zero-length" : "line", length);
-    line(selection, selection.start, to, OriginKind::kApproach, selection.rapid);
-    run_dummies(q);
+    // Output waits until the first element's end is known (TRC-EDGE-* may replace it).
+    approach_pending = true;
+    approach_to = to;
+    for (int i = 0; i < dummy_count; ++i)
+      approach_dummies[static_cast<std::size_t>(i)] = dummies[static_cast<std::size_t>(i)];
+    approach_dummy_count = dummy_count;
+    dummy_count = 0;
     open_element(first, e, q, radius);
     phase = Phase::kActive;
+  }
+
+  void flush_approach() {
+    if (!approach_pending) return;
+    approach_pending = false;
+    line(selection, selection.start, approach_to, OriginKind::kApproach, selection.rapid);
+    for (int i = 0; i < approach_dummy_count; ++i) {
+      BlockCopy& d = approach_dummies[static_cast<std::size_t>(i)];
+      line(d, xyz(ab(approach_to), h(d.start)), xyz(ab(approach_to), h(d.end)), OriginKind::kInfeed, d.rapid);
+    }
+    approach_dummy_count = 0;
   }
 
   // --- KONT: travelling around the start or end point (TRC-KONT-*) -----------------------------
@@ -400,14 +437,17 @@ struct Engine::State {
 
   // TRC-KONT-1: behind = strictly on the far side of the contour's tangent line from the
   // compensation side; TRC-KONT-2: then not inside the circle of radius r about the vertex.
-  bool kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm) {
-    Vec2 off = k.point - k.vertex;
-    double cr = cross(tangent, off);
-    int sign = k.exact_sign ? *k.exact_sign : (cr > 0) - (cr < 0);
+  bool kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent, std::optional<int> exact_sign) {
+    double cr = cross(tangent, point - vertex);
+    int sign = exact_sign ? *exact_sign : (cr > 0) - (cr < 0);
     double margin = sign == 0 ? 0.0 : s * cr / norm(tangent);
     bool behind = s * sign < 0;
     decide("TRC-KONT-1", at_block.line, behind ? "behind" : "in-front", margin);
-    if (!behind) return false;
+    return behind;
+  }
+  bool kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm) {
+    if (!kont_side(at_block, k.vertex, k.point, tangent, k.exact_sign)) return false;
+    Vec2 off = k.point - k.vertex;
     double distance = norm(off);
     bool inside = distance < r;
     decide("TRC-KONT-2", at_block.line, inside ? "inside" : "room", distance - r);
@@ -528,7 +568,8 @@ struct Engine::State {
       decide("TRC-LOOK-1", b.words.line, too_short ? "too-short" : "reaches", reach.left);
       if (too_short) return start_look_ahead(b);
     }
-    if (!close_open(x, b.words.line, b.words.number)) return;
+    Candidate cand{&copy, &next, next_radius};
+    if (!close_open(x, b.words.line, b.words.number, &cand)) return;
     run_dummies(x);
     open_element(copy, next, x, next_radius);
   }
@@ -583,7 +624,8 @@ struct Engine::State {
   }
 
   void look_ahead(const Block& b) {
-    if (b.state.side != side) {  // the contour ends before an intersection was found
+    if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
+    if (b.state.side != side && b.state.side != Side::kOff) {  // the contour ends before an intersection
       decide("TRC-LOOK-2", b.words.line, "none");
       return raise(10751, b.words.line, b.words.number);
     }
@@ -606,12 +648,13 @@ struct Engine::State {
     if (found) {
       Extent on = extent_of(cand, radius, y);
       valid = on.along >= 0 && on.left >= 0;
-      margin = on.along < 0 ? on.along : on.left;
+      margin = on.along < 0 ? on.along : on.left < 0 ? on.left : std::min(on.along, on.left);  // the nearer end
     }
     decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
     if (!valid) return pass_over(c);
     looking = false;
-    if (!close_open(y, b.words.line, b.words.number)) return;
+    Candidate candidate{&c, &cand, radius};
+    if (!close_open(y, b.words.line, b.words.number, &candidate)) return;
     // TRC-LOOK-3: skipped blocks lose their plane motion; the rest runs at the intersection.
     for (BlockCopy& d : skipped) {
       decide("TRC-LOOK-3", d.line, "skipped");
@@ -619,6 +662,189 @@ struct Engine::State {
     }
     skipped.clear();
     open_element(c, cand, y, radius);
+  }
+
+  // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*) --------------------------
+  struct EdgeCurve {
+    Carrier carrier;
+    enum class Bound { kWhole, kRay, kSegment } bound = Bound::kWhole;
+  };
+  static bool on_curve(const EdgeCurve& c, Vec2 p) {
+    if (c.bound == EdgeCurve::Bound::kWhole) return true;
+    double t = dot(p - c.carrier.point, c.carrier.direction);
+    if (t < 0) return false;
+    return c.bound == EdgeCurve::Bound::kRay || t <= dot(c.carrier.direction, c.carrier.direction);
+  }
+
+  // TRC-EDGE-2, TRC-EDGE-3, TRC-EDGE-4: the auxiliary curve of the strategy (see ref for the geometry).
+  EdgeCurve edge_curve(EdgeStrategy strategy, Vec2 vertex, Vec2 normal_point, Vec2 outward, Vec2 off_contour,
+                       bool approach) const {
+    EdgeCurve c;
+    switch (strategy) {
+      case EdgeStrategy::kG460:  // TRC-EDGE-2
+        c.bound = EdgeCurve::Bound::kSegment;
+        c.carrier.point = approach ? off_contour : normal_point;
+        c.carrier.direction = approach ? normal_point - off_contour : off_contour - normal_point;
+        break;
+      case EdgeStrategy::kG461:  // TRC-EDGE-3
+        c.carrier.circle = true, c.carrier.point = vertex, c.carrier.radius = r;
+        break;
+      case EdgeStrategy::kG462:  // TRC-EDGE-4
+        c.bound = EdgeCurve::Bound::kRay;
+        c.carrier.point = normal_point, c.carrier.direction = outward;
+        break;
+    }
+    return c;
+  }
+
+  // Position along an element's equidistant, relative to its normal start (lines: length; arcs:
+  // rotation in (-pi, pi]).
+  double along(const Element& e, Vec2 p) const {
+    if (!e.arc) return dot(p - Element::offset(e.start, e.unit, s * r), e.unit);
+    return signed_rotation(e.start - e.centre, p - e.centre, e.sense);
+  }
+
+  // TRC-EDGE-5: where the curve meets e's equidistant between `from` (or its normal start) and its
+  // normal end; the first (retraction) or last (approach) along it. `margin` as in ref: the hit's
+  // least slack to the bounds (and the carriers' overlap with a circle); without a hit the
+  // largest negative one.
+  bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, const Vec2* from, bool last, Vec2& out,
+                double& margin) const {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    margin = -kInf;
+    if (curve.carrier.circle ? !(curve.carrier.radius > 0) : dot(curve.carrier.direction, curve.carrier.direction) == 0)
+      return false;
+    Carrier ce = carrier_of(e, radius);
+    bool circle = curve.carrier.circle || e.arc;
+    double depth = circle ? -carrier_gap(ce, curve.carrier) : kInf;
+    Vec2 xs[2];
+    int n = carrier_intersections(ce, curve.carrier, xs);
+    if (n == 0 && circle) margin = std::min(depth, -std::numeric_limits<double>::denorm_min());
+    bool found = false;
+    double best = 0, best_margin = 0;
+    for (int i = 0; i < n; ++i) {
+      double m = depth;
+      if (!curve.carrier.circle) {
+        double length = norm(curve.carrier.direction);
+        double t = dot(xs[i] - curve.carrier.point, curve.carrier.direction) / length;
+        m = std::min(m, t);
+        if (curve.bound == EdgeCurve::Bound::kSegment) m = std::min(m, length - t);
+      }
+      // Position on the piece from `from` (or the normal start) to the normal end: lines by
+      // length, circles by the rotation in [0, 2 pi) from `from`.
+      double a, lower_mm, upper_mm;
+      bool on_piece;
+      if (!e.arc) {
+        Extent on = extent_of(e, radius, xs[i]);
+        a = along(e, xs[i]);
+        double lower = from ? along(e, *from) : 0.0;
+        lower_mm = a - lower, upper_mm = on.left;
+        on_piece = lower_mm >= 0 && upper_mm >= 0;
+      } else {
+        constexpr double kTurn = 2 * std::numbers::pi;
+        Vec2 f = (from ? *from : e.start) - e.centre;
+        auto rotation = [&](Vec2 to) {
+          double t = signed_rotation(f, to, e.sense);
+          return t < 0 ? t + kTurn : t;
+        };
+        double room = rotation(e.end - e.centre);
+        if (e.full && room == 0) room = kTurn;
+        a = rotation(xs[i] - e.centre);
+        on_piece = a <= room;
+        lower_mm = a * radius, upper_mm = (room - a) * radius;
+        if (!on_piece) lower_mm = upper_mm = -std::min(-upper_mm, (kTurn - a) * radius);
+      }
+      m = std::min({m, lower_mm, upper_mm});
+      bool valid = on_curve(curve, xs[i]) && on_piece;
+      if (!valid) {
+        margin = std::max(margin, std::min(m, -std::numeric_limits<double>::denorm_min()));
+        continue;
+      }
+      if (!found || (last ? a > best : a < best)) found = true, best = a, out = xs[i], best_margin = std::max(m, 0.0);
+    }
+    if (found) margin = best_margin;
+    return found;
+  }
+
+  static std::string_view strategy_name(EdgeStrategy st) {
+    return st == EdgeStrategy::kG460 ? "G460" : st == EdgeStrategy::kG461 ? "G461" : "G462";
+  }
+
+  // TRC-EDGE-1 on retraction: deselection while the look-ahead found no block to meet the open
+  // element; it ends at the hit, the blocks after it are skipped.
+  void retract_edge(const Block& b) {
+    if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+    BlockCopy d = BlockCopy::of(b);
+    const BlockCopy* last_block = nullptr;
+    for (const BlockCopy& k : skipped)
+      if (k.delta[static_cast<std::size_t>(axes.abscissa)] != 0 ||
+          k.delta[static_cast<std::size_t>(axes.ordinate)] != 0 || k.arc)
+        last_block = &k;
+    Element last = element_of(*last_block);
+    if (d.cdon)
+      throw UnsupportedError(  // TRC-CD-1 (planned)
+          b.words.line, "CDON search of G460/G461/G462 over earlier blocks");
+    decide("TRC-DESEL-1", d.line, "deselected");
+    if (d.kont) {  // TRC-KONT-1
+      std::optional<int> sign;
+      if (!last.arc) sign = exact_cross_sign(last_block->delta, d.delta, 1);
+      if (kont_side(d, last.end, ab(d.end), last.end_tangent(), sign))
+        throw UnsupportedError(  // TRC-EDGE-6 (planned)
+            b.words.line, "KONT retraction from behind the contour after a too-short last block");
+    }
+    decide("TRC-EDGE-1", d.line, strategy_name(d.edge_strategy));
+    Vec2 normal_end = Element::offset(last.end, last.end_tangent(), s * r);
+    EdgeCurve curve = edge_curve(d.edge_strategy, last.end, normal_end, last.end_tangent(), ab(d.end), false);
+    Vec2 hit;
+    double margin = 0;
+    bool found = edge_hit(curve, open_el, open_radius, &open_start, false, hit, margin);
+    decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
+    if (!found) return raise(10751, d.line, d.number);
+    looking = false;
+    if (!close_open(hit, d.line, d.number)) return;
+    for (BlockCopy& k : skipped) {
+      decide("TRC-LOOK-3", k.line, "skipped");
+      line(k, xyz(hit, h(k.start)), xyz(hit, h(k.end)), OriginKind::kInfeed, k.rapid);
+    }
+    skipped.clear();
+    retraction_line(d, hit);
+  }
+
+  void skip_at(BlockCopy& k, Vec2 at) {
+    decide("TRC-LOOK-3", k.line, "skipped");
+    line(k, xyz(at, h(k.start)), xyz(at, h(k.end)), OriginKind::kInfeed, k.rapid);
+  }
+
+  // TRC-EDGE-1 on approach: the first element would run backwards to meet c's equidistant; the
+  // approach line ends at the hit on c's equidistant, the first block and those between are skipped.
+  void approach_edge(const Candidate& c) {
+    if (selection.cdon)
+      throw UnsupportedError(  // TRC-CD-1 (planned)
+          selection.line, "CDON search of G460/G461/G462 over later blocks");
+    decide("TRC-EDGE-1", selection.line, strategy_name(selection.edge_strategy));
+    const Element& first = open_el;
+    EdgeCurve curve = edge_curve(selection.edge_strategy, first.start, open_start, -1.0 * first.start_tangent(),
+                                 ab(selection.start), true);
+    Vec2 hit;
+    double margin = 0;
+    bool found = edge_hit(curve, *c.element, c.radius, nullptr, true, hit, margin);
+    decide("TRC-EDGE-5", selection.line, found ? "hit" : "none", margin);
+    if (!found) return raise(10751, c.block->line, c.block->number);
+    approach_pending = false;
+    line(selection, selection.start, xyz(hit, h(selection.end)), OriginKind::kApproach, selection.rapid);
+    for (int i = 0; i < approach_dummy_count; ++i) skip_at(approach_dummies[static_cast<std::size_t>(i)], hit);
+    approach_dummy_count = 0;
+    skip_at(open, hit);
+    for (int i = 0; i < dummy_count; ++i) skip_at(dummies[static_cast<std::size_t>(i)], hit);
+    dummy_count = 0;
+    for (BlockCopy& k : skipped) skip_at(k, hit);
+    skipped.clear();
+    looking = false;
+    BlockCopy block = *c.block;
+    Element element = *c.element;
+    open_element(block, element, hit, c.radius);
   }
 
   // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points; it

@@ -63,22 +63,13 @@ double corner_trim(const Corner& c, int side, double radius) {
   return side * radius * tan_half;
 }
 
-namespace {
-// Of two intersections the nearer; of two equally near the one further along `ahead`.
-bool pick(Vec2 p, Vec2 q, bool two, Vec2 near, Vec2 ahead, Vec2& out) {
-  double dp = norm(p - near), dq = norm(q - near);
-  out = two && (dq < dp || (dq == dp && dot(q - near, ahead) > dot(p - near, ahead))) ? q : p;
-  return true;
-}
-}  // namespace
-
-bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out) {
+int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]) {
   if (!u.circle && !v.circle) {
     double den = cross(u.direction, v.direction);
-    if (den == 0) return false;
+    if (den == 0) return 0;
     double t = cross(v.point - u.point, v.direction) / den;
-    out = u.point + t * u.direction;
-    return true;
+    out[0] = u.point + t * u.direction;
+    return 1;
   }
   if (u.circle != v.circle) {
     const Carrier& l = u.circle ? v : u;
@@ -88,19 +79,34 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
     Vec2 foot = l.point + dot(c.point - l.point, d) * d;
     double dist2 = dot(foot - c.point, foot - c.point);
     double half2 = c.radius * c.radius - dist2;
-    if (half2 < 0) return false;
+    if (half2 < 0) return 0;
     double h = std::sqrt(half2);
-    return pick(foot - h * d, foot + h * d, h > 0, near, ahead, out);
+    out[0] = foot - h * d, out[1] = foot + h * d;
+    return h > 0 ? 2 : 1;
   }
   Vec2 d = v.point - u.point;
   double dd = dot(d, d);
-  if (dd == 0) return false;
+  if (dd == 0) return 0;
   double along = (u.radius * u.radius - v.radius * v.radius + dd) / (2 * dd);
   double across2 = u.radius * u.radius / dd - along * along;
-  if (across2 < 0) return false;
+  if (across2 < 0) return 0;
   Vec2 m = u.point + along * d;
   double h = std::sqrt(across2);
-  return pick(m + h * left_normal(d), m - h * left_normal(d), h > 0, near, ahead, out);
+  out[0] = m + h * left_normal(d), out[1] = m - h * left_normal(d);
+  return h > 0 ? 2 : 1;
+}
+
+// Of two intersections the nearer; of two equally near the one further along `ahead`.
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out) {
+  Vec2 xs[2];
+  int n = carrier_intersections(u, v, xs);
+  if (n == 0) return false;
+  out = xs[0];
+  if (n == 2) {
+    double d0 = norm(xs[0] - near), d1 = norm(xs[1] - near);
+    if (d1 < d0 || (d1 == d0 && dot(xs[1] - near, ahead) > dot(xs[0] - near, ahead))) out = xs[1];
+  }
+  return true;
 }
 
 double carrier_gap(const Carrier& u, const Carrier& v) {

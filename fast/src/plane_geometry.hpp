@@ -62,6 +62,8 @@ struct Carrier {
   double radius = 0;      // circle about `point`
 };
 bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out);
+// All points common to two carriers (0, 1 or 2; tangency gives one).
+int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]);
 // <= 0 when two carriers (at least one a circle) meet: see ref's carrier_gap.
 double carrier_gap(const Carrier& u, const Carrier& v);
 

@@ -2,7 +2,12 @@
 // from equidistant.hpp (exact constructions) and contour_element / contour_angle (exact predicates).
 #include "cutcom/ref/engine.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <deque>
+#include <limits>
 #include <optional>
 
 #include "contour_angle.hpp"
@@ -69,6 +74,7 @@ class Reference {
     sink_.decision(d);
   }
   void raise(int number, const Block& at, std::string_view clause = {}) {
+    flush_approach();  // ALARM-1: what was decided before the alarm is output
     sink_.alarm(make_alarm(number, at.words.line, at.words.number, clause));
     stopped_ = true;
   }
@@ -316,8 +322,10 @@ class Reference {
     FT length = path.distance(from, to);
     decide("TRC-APPR-NORM-1", selection_->words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line",
            exact_mm(length));
-    emit_line(*selection_, from, to, OriginKind::kApproach);
-    run_held_back(onto);
+    // Output waits until the first element's end is known: if it turns out too short,
+    // TRC-EDGE-* replace this line.
+    approach_ = PendingApproach{from, to, std::move(dummies_)};
+    dummies_.clear();
     open(first_block, first, onto, radius, true);
     phase_ = Phase::kActive;
   }
@@ -334,13 +342,17 @@ class Reference {
   // TRC-KONT-1: behind the contour = strictly on the far side of the contour's tangent line
   // (`tangent` at the vertex) from the compensation side; TRC-KONT-2: then the point must not lie
   // inside the circle of radius r about the vertex (alarm `alarm`). True: travel around.
-  bool kont_behind(const Block& at_block, const KontCorner& k, const Vector& tangent, int alarm) {
-    Vector off = k.point - k.vertex;
+  bool kont_side(const Block& at_block, const Point& vertex, const Point& point, const Vector& tangent) {
+    Vector off = point - vertex;
     FT cross = tangent.x() * off.y() - tangent.y() * off.x();
     bool behind = comp_->s * static_cast<int>(CGAL::sign(cross)) < 0;
     decide("TRC-KONT-1", at_block.words.line, behind ? "behind" : "in-front",
            exact_mm(FT(comp_->s) * cross / CGAL::sqrt(tangent.squared_length())));
-    if (!behind) return false;
+    return behind;
+  }
+  bool kont_behind(const Block& at_block, const KontCorner& k, const Vector& tangent, int alarm) {
+    if (!kont_side(at_block, k.vertex, k.point, tangent)) return false;
+    Vector off = k.point - k.vertex;
     FT distance2 = off.squared_length();
     bool inside = CGAL::compare(distance2, comp_->side_radius * comp_->side_radius) == CGAL::SMALLER;
     decide("TRC-KONT-2", at_block.words.line, inside ? "inside" : "room",
@@ -431,7 +443,14 @@ class Reference {
   // not run backwards; it is output unless it has length exactly 0.
   // `at_normal_end`: the end point was built as the normal end point (no cut at the end), so its
   // rotation from it is 0 by construction and needs no exact zero test.
-  bool close_open(const Point& end_point, const Block& reporting, bool at_normal_end = false) {
+  // `candidate`: the block whose equidistant fixed this end (for TRC-EDGE-* on approach).
+  struct Candidate {
+    const Block* block;
+    const ContourElement* element;
+    FT radius;
+  };
+  bool close_open(const Point& end_point, const Block& reporting, bool at_normal_end = false,
+                  const Candidate* candidate = nullptr) {
     const ContourElement& e = *open_;
     CGAL::Sign sign;
     std::string margin;
@@ -454,10 +473,13 @@ class Reference {
     std::string_view clause = e.is_arc() ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
     if (sign == CGAL::NEGATIVE) {
       decide(clause, e.line, "reverses", margin);
+      // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
+      if (approach_ && candidate) return approach_edge(*candidate), false;
       raise(10751, reporting);
       return false;
     }
     decide(clause, e.line, sign == CGAL::ZERO ? "vanishes" : "fits", margin);
+    flush_approach();
     ExactPoint from = at({open_start_, coord(e.start3, comp_->axes.applicate)});
     ExactPoint to = at({end_point, coord(e.end3, comp_->axes.applicate)});
     if (sign == CGAL::ZERO) {
@@ -540,7 +562,8 @@ class Reference {
     bool too_short = reach.after_end == CGAL::NEGATIVE;
     decide("TRC-LOOK-1", next_block.words.line, too_short ? "too-short" : "reaches", reach.left_text);
     if (too_short) return start_look_ahead(next_block);
-    if (!close_open(*x, next_block)) return;
+    Candidate cand{&next_block, &next, next_radius};
+    if (!close_open(*x, next_block, false, &cand)) return;
     run_held_back(*x);
     open(next_block, next, *x, next_radius);
   }
@@ -608,7 +631,8 @@ class Reference {
   }
 
   void look_ahead(const Block& b) {
-    if (b.state.side != comp_->side) {  // the contour ends before an intersection was found
+    if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
+    if (b.state.side != comp_->side && b.state.side != Side::kOff) {  // the contour ends before an intersection
       decide("TRC-LOOK-2", b.words.line, "none");
       return raise(10751, b);
     }
@@ -631,12 +655,21 @@ class Reference {
     if (y) {
       Extent on = extent_of(cand, radius, *y);
       valid = on.before_start != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;
-      margin = on.before_start == CGAL::NEGATIVE ? on.along_text : on.left_text;
+      // The nearer end: the violated one, or on the equidistant the one with less to spare.
+      if (on.before_start == CGAL::NEGATIVE)
+        margin = on.along_text;
+      else if (on.after_end == CGAL::NEGATIVE)
+        margin = on.left_text;
+      else
+        margin = std::strtod(on.along_text.c_str(), nullptr) < std::strtod(on.left_text.c_str(), nullptr)
+                     ? on.along_text
+                     : on.left_text;
     }
     decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
     if (!valid) return pass_over(b);
     looking_ = false;
-    if (!close_open(*y, b)) return;
+    Candidate candidate{&b, &cand, radius};
+    if (!close_open(*y, b, false, &candidate)) return;
     run_skipped(*y);
     open(b, cand, *y, radius);
   }
@@ -670,6 +703,199 @@ class Reference {
     if (c == CGAL::EQUAL)
       return CGAL::compare((xs[1] - vertex) * ahead, (xs[0] - vertex) * ahead) == CGAL::LARGER ? xs[1] : xs[0];
     return c == CGAL::SMALLER ? xs[1] : xs[0];
+  }
+
+  void flush_approach() {
+    if (!approach_) return;
+    PendingApproach a = std::move(*approach_);
+    approach_.reset();
+    emit_line(*selection_, a.from, a.to, OriginKind::kApproach);
+    dummies_.swap(a.held_back);
+    run_held_back(a.to.plane(comp_->axes));
+    dummies_.swap(a.held_back);
+  }
+
+  // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*) --------------------------
+  // The auxiliary curve of the strategy in force, and how much of its carrier counts.
+  struct EdgeCurve {
+    Carrier<Kernel> carrier;
+    enum class Bound { kWhole, kRay, kSegment } bound = Bound::kWhole;
+  };
+  static bool on_curve(const EdgeCurve& c, const Point& p) {
+    if (c.bound == EdgeCurve::Bound::kWhole) return true;
+    FT t = (p - c.carrier.point) * c.carrier.direction;  // times |direction|^2
+    if (CGAL::sign(t) == CGAL::NEGATIVE) return false;
+    return c.bound == EdgeCurve::Bound::kRay || CGAL::compare(t, c.carrier.direction.squared_length()) != CGAL::LARGER;
+  }
+
+  // TRC-EDGE-2, TRC-EDGE-3, TRC-EDGE-4: G460 the straight line between the normal point and the programmed position
+  // off the contour; G461 the circle of radius r about the programmed end (start) point; G462 the
+  // tangent extension of the equidistant beyond its normal point. `normal_point`, `vertex` and
+  // `outward` (the tangent pointing away from the contour) belong to the too-short block.
+  EdgeCurve edge_curve(EdgeStrategy strategy, const Point& vertex, const Point& normal_point, const Vector& outward,
+                       const Point& off_contour, bool approach) {
+    EdgeCurve c;
+    switch (strategy) {
+      case EdgeStrategy::kG460:  // TRC-EDGE-2
+        c.bound = EdgeCurve::Bound::kSegment;
+        c.carrier.point = approach ? off_contour : normal_point;
+        c.carrier.direction = approach ? normal_point - off_contour : off_contour - normal_point;
+        break;
+      case EdgeStrategy::kG461:  // TRC-EDGE-3
+        c.carrier.circle = true, c.carrier.point = vertex, c.carrier.radius = leaf(comp_->radius);
+        break;
+      case EdgeStrategy::kG462:  // TRC-EDGE-4
+        c.bound = EdgeCurve::Bound::kRay;
+        c.carrier.point = normal_point, c.carrier.direction = outward;
+        break;
+    }
+    return c;
+  }
+
+  // Signed position of p relative to q along element e's equidistant (> 0: p comes later).
+  static CGAL::Sign compare_along(const ContourElement& e, const Point& p, const Point& q) {
+    if (!e.is_arc()) return CGAL::sign((p - q) * e.d);
+    return ExactAngle::signed_rotation(q - e.centre, p - e.centre, e.sense).sign();
+  }
+
+  // TRC-EDGE-5: the points where the curve meets element e's equidistant between `from` (or its
+  // normal start) and its normal end; the first (retraction) or the last (approach) along it.
+  // The margin (mm, sign exact, digits rounded) is the hit's least slack to the bounds of the
+  // curve and the equidistant and, with a circle, the depth of the carriers' overlap; without a
+  // hit, the largest (negative) such value over the carriers' intersections.
+  struct EdgeHit {
+    std::optional<Point> point;
+    double margin = -std::numeric_limits<double>::infinity();
+  };
+  EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius, const std::optional<Point>& from,
+                   bool last) {
+    EdgeHit out;
+    if (curve.carrier.circle && CGAL::sign(curve.carrier.radius) == CGAL::ZERO) return out;
+    if (!curve.carrier.circle && CGAL::sign(curve.carrier.direction.squared_length()) == CGAL::ZERO) return out;
+    auto mm = [](const FT& units) { return CGAL::to_double(units) / 1e9; };
+    Carrier<Kernel> ce = carrier_of(e, radius);
+    bool circle = curve.carrier.circle || e.is_arc();
+    double depth = circle ? -mm(carrier_gap<Kernel>(ce, curve.carrier)) : std::numeric_limits<double>::infinity();
+    std::vector<Point> xs = carrier_intersections<Kernel>(ce, curve.carrier);
+    if (xs.empty() && circle) out.margin = std::min(depth, -std::numeric_limits<double>::denorm_min());
+    double best_margin = 0;
+    std::optional<ExactAngle> best_position;
+    for (const Point& p : xs) {
+      double m = depth;
+      if (curve.carrier.circle == false) {
+        FT length = CGAL::sqrt(curve.carrier.direction.squared_length());
+        FT t = (p - curve.carrier.point) * curve.carrier.direction / length;
+        m = std::min(m, mm(t));
+        if (curve.bound == EdgeCurve::Bound::kSegment) m = std::min(m, mm(length - t));
+      }
+      // Where p lies on the piece from `from` (or the normal start) to the normal end: lines by
+      // length, circles by the rotation in [0, 2 pi) from `from` in the circle's sense.
+      bool on_piece;
+      double lower_mm, upper_mm;
+      std::optional<ExactAngle> position;
+      if (!e.is_arc()) {
+        Extent on = extent_of(e, radius, p);
+        CGAL::Sign lower = from ? compare_along(e, p, *from) : on.before_start;
+        lower_mm = from ? mm((p - *from) * e.d / e.length) : std::strtod(on.along_text.c_str(), nullptr);
+        upper_mm = std::strtod(on.left_text.c_str(), nullptr);
+        on_piece = lower != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;
+      } else {
+        Vector f = (from ? *from : e.a) - e.centre;
+        ExactAngle room = ExactAngle::rotation(f, e.b - e.centre, e.sense);
+        if (e.full_circle && room.sign() == CGAL::ZERO) room = ExactAngle::full_turn();
+        ExactAngle pos = ExactAngle::rotation(f, p - e.centre, e.sense);
+        ExactAngle left = room + -pos;
+        on_piece = left.sign() != CGAL::NEGATIVE;
+        position = pos;
+        auto length = [&](const ExactAngle& a) { return std::strtod(arc_length_text(a, radius).c_str(), nullptr); };
+        lower_mm = length(pos), upper_mm = length(left);
+        if (!on_piece)  // outside: the nearer of the two ends
+          lower_mm = upper_mm = -std::min(-upper_mm, length(ExactAngle::full_turn() + -pos));
+      }
+      m = std::min({m, lower_mm, upper_mm});
+      bool valid = on_curve(curve, p) && on_piece;
+      if (!valid) {
+        out.margin = std::max(out.margin, std::min(m, -std::numeric_limits<double>::denorm_min()));
+        continue;
+      }
+      bool better = !out.point;
+      if (!better) {
+        CGAL::Sign later = position ? (*position + -*best_position).sign() : compare_along(e, p, *out.point);
+        better = later == (last ? CGAL::POSITIVE : CGAL::NEGATIVE);
+      }
+      if (better) out.point = p, best_margin = std::max(m, 0.0), best_position = position;
+    }
+    if (out.point) out.margin = best_margin;
+    return out;
+  }
+
+  static std::string_view strategy_name(EdgeStrategy s) {
+    return s == EdgeStrategy::kG460 ? "G460" : s == EdgeStrategy::kG461 ? "G461" : "G462";
+  }
+
+  // TRC-EDGE-1 on retraction: deselection while the look-ahead found no block to meet the open
+  // element (the last block is too short). The open element ends at the hit, the blocks after it
+  // are skipped (TRC-LOOK-3), the retraction line starts there.
+  void retract_edge(const Block& b) {
+    if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+      throw UnsupportedError(  // TRC-UNSUP-1
+          b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+    const Block* last_block = nullptr;
+    for (const Block* d : skipped_)
+      if (d->moves_in_plane()) last_block = d;
+    ContourElement last = element_of(*last_block);
+    if (b.state.collision == CollisionMode::kCdon)
+      throw UnsupportedError(  // TRC-CD-1 (planned)
+          b.words.line, "CDON search of G460/G461/G462 over earlier blocks");
+    decide("TRC-DESEL-1", b.words.line, "deselected");
+    if (b.state.approach == ApproachMode::kKont &&
+        kont_side(b, last.b, plane_point(b.end, comp_->axes), last.end_dir))  // TRC-KONT-1
+      throw UnsupportedError(                                                 // TRC-EDGE-6 (planned)
+          b.words.line, "KONT retraction from behind the contour after a too-short last block");
+    decide("TRC-EDGE-1", b.words.line, strategy_name(b.state.edge_strategy));
+    Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
+    EdgeCurve curve =
+        edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_point(b.end, comp_->axes), false);
+    EdgeHit edge = edge_hit(curve, *open_, open_radius_, open_start_, false);
+    std::optional<Point> hit = edge.point;
+    decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", fmt::format("{:.17g}", edge.margin));
+    if (!hit) return raise(10751, b);
+    looking_ = false;
+    if (!close_open(*hit, b)) return;
+    run_skipped(*hit);
+    retraction_line(b, *hit);
+  }
+
+  // TRC-EDGE-1 on approach: the first element would run backwards to meet `c`'s equidistant.
+  // The approach line ends at the hit on c's equidistant instead; the first block and those
+  // between are skipped.
+  void approach_edge(const Candidate& c) {
+    const Block& sel = *selection_;
+    if (sel.state.collision == CollisionMode::kCdon)
+      throw UnsupportedError(  // TRC-CD-1 (planned)
+          sel.words.line, "CDON search of G460/G461/G462 over later blocks");
+    decide("TRC-EDGE-1", sel.words.line, strategy_name(sel.state.edge_strategy));
+    const ContourElement& first = *open_;
+    EdgeCurve curve = edge_curve(sel.state.edge_strategy, first.a, open_start_, -first.start_dir,
+                                 approach_->from.plane(comp_->axes), true);
+    EdgeHit edge = edge_hit(curve, *c.element, c.radius, std::nullopt, true);
+    std::optional<Point> hit = edge.point;
+    decide("TRC-EDGE-5", sel.words.line, hit ? "hit" : "none", fmt::format("{:.17g}", edge.margin));
+    if (!hit) return raise(10751, *c.block);
+    PendingApproach a = std::move(*approach_);
+    approach_.reset();
+    emit_line(sel, a.from, at({*hit, coord(sel.end, comp_->axes.applicate)}), OriginKind::kApproach);
+    // Blocks passed over, in programmed order: held back before the first block, the first block,
+    // held back after it, passed over by the look-ahead.
+    std::vector<const Block*> passed = std::move(a.held_back);
+    passed.push_back(open_block_);
+    for (const Block* d : dummies_) passed.push_back(d);
+    for (const Block* d : skipped_) passed.push_back(d);
+    dummies_.clear();
+    skipped_ = std::move(passed);
+    looking_ = false;
+    run_skipped(*hit);
+    open(*c.block, *c.element, *hit, c.radius);
   }
 
   // TRC-G450-1: a circle of radius r about the programmed corner from the normal end point of the
@@ -809,6 +1035,13 @@ class Reference {
   const Block* selection_ = nullptr;
   std::optional<ExactPoint> selection_from_;  // set after a side change (TRC-SIDE-1)
   std::vector<const Block*> dummies_;
+  // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
+  // output once the first element's end is known (TRC-EDGE-* may replace them).
+  struct PendingApproach {
+    ExactPoint from, to;
+    std::vector<const Block*> held_back;
+  };
+  std::optional<PendingApproach> approach_;
   std::optional<ContourElement> open_;
   const Block* open_block_ = nullptr;
   Point open_start_;
