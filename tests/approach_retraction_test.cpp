@@ -193,3 +193,34 @@ TEST(ApproachRetraction, G460ApproachFindsNoIntersection) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: TRC-EDGE-6 TRC-KONT-1
+TEST(ApproachRetraction, KontFromBehindWithATooShortEndBlockIsNotSupportedYet) {
+  const std::string tool10 = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=10\n";
+  const std::pair<std::string, int> cases[] = {
+      // Retraction: N40 (3 mm up at x = 40, compensation on -X) is too short; the end (60,20) lies behind.
+      {"$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F100\nN30 X40\nN40 Y3\n"
+       "N50 G40 KONT X60 Y20\n",
+       7},
+      // Approach: from (80,20), behind N60's line x = 50 (G42: compensation on -X); N60 is too short.
+      {tool10 + "N30 X0 Y0 F10000 T1 D1\nN40 X80 Y20\nN50 G42 KONT X50 Y5\nN60 Y0\nN70 X30\nN80 X20 Y-5\n"
+                "N90 X0 Y0 G40\n",
+       5},
+  };
+  for (const auto& [text, line_no] : cases)
+    for (const char* engine : {"fast", "ref"}) {
+      bool ok = false;
+      try {
+        run_engine(engine, text, {}, &ok);
+        ADD_FAILURE() << engine << " accepted:\n" << text;
+      } catch (const UnsupportedError& e) {
+        EXPECT_EQ(e.line(), line_no) << engine << ": " << e.what();
+      }
+    }
+}
+
+}  // namespace
+}  // namespace cutcom::test

@@ -91,6 +91,7 @@ struct Engine::State {
   PathPoint approach_to;
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> approach_dummies;
   int approach_dummy_count = 0;
+  bool kont_first = false;  // the open element is the first after a KONT travel-around
   // kActive: the open element, whose end waits for the next traversing block.
   BlockCopy open;
   Element open_el;
@@ -213,11 +214,15 @@ struct Engine::State {
       decide(clause, open.line, "reverses", margin);
       // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
       if (approach_pending && candidate) return approach_edge(*candidate), false;
+      if (kont_first && candidate)
+        throw UnsupportedError(  // TRC-EDGE-6 (planned)
+            selection.line, "KONT approach from behind the contour before a too-short first block");
       raise(10751, alarm_line, alarm_block);
       return false;
     }
     decide(clause, open.line, margin == 0 ? "vanishes" : "fits", margin);
     flush_approach();
+    kont_first = false;
     PathPoint from = xyz(open_start, h(open.start)), to = xyz(end_point, h(open.end));
     if (margin == 0) {
       actions(open, to);
@@ -481,6 +486,7 @@ struct Engine::State {
 
   // TRC-KONT-3 / TRC-KONT-4 on approach: the approach line meets the first block at an outer corner.
   void approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k) {
+    kont_first = true;
     Vec2 a = Element::offset(k.vertex, (1.0 / norm(k.d1)) * k.d1, s * r);
     bool circle = kont_circle(selection, k);
     Vec2 x;

@@ -398,6 +398,7 @@ class Reference {
   // start point S and meeting the first block at an outer corner.
   void approach_around(const Block& first_block, const ContourElement& first, const FT& radius, const ExactPoint& from,
                        const Decimal& h, const KontCorner& k) {
+    kont_first_ = true;
     Point a = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d1), comp_->side_radius);
     bool circle = kont_circle(*selection_, k);
     std::optional<Point> x;
@@ -475,11 +476,15 @@ class Reference {
       decide(clause, e.line, "reverses", margin);
       // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
       if (approach_ && candidate) return approach_edge(*candidate), false;
+      if (kont_first_ && candidate)
+        throw UnsupportedError(  // TRC-EDGE-6 (planned)
+            selection_->words.line, "KONT approach from behind the contour before a too-short first block");
       raise(10751, reporting);
       return false;
     }
     decide(clause, e.line, sign == CGAL::ZERO ? "vanishes" : "fits", margin);
     flush_approach();
+    kont_first_ = false;
     ExactPoint from = at({open_start_, coord(e.start3, comp_->axes.applicate)});
     ExactPoint to = at({end_point, coord(e.end3, comp_->axes.applicate)});
     if (sign == CGAL::ZERO) {
@@ -1042,6 +1047,7 @@ class Reference {
     std::vector<const Block*> held_back;
   };
   std::optional<PendingApproach> approach_;
+  bool kont_first_ = false;  // the open element is the first after a KONT travel-around
   std::optional<ContourElement> open_;
   const Block* open_block_ = nullptr;
   Point open_start_;
