@@ -753,8 +753,9 @@ struct Engine::State {
           double t = signed_rotation(f, to, e.sense);
           return t < 0 ? t + kTurn : t;
         };
-        double room = rotation(e.end - e.centre);
-        if (e.full && room == 0) room = kTurn;
+        // What is left of the circle after `from` (as close_open measures it: no wrap-around
+        // when `from` is the normal start of a full circle).
+        double room = sweep(e) - (from ? signed_rotation(e.start - e.centre, f, e.sense) : 0.0);
         a = rotation(xs[i] - e.centre);
         on_piece = a <= room;
         lower_mm = a * radius, upper_mm = (room - a) * radius;
