@@ -737,7 +737,7 @@ struct Engine::State {
         if (curve.bound == EdgeCurve::Bound::kSegment) m = std::min(m, length - t);
       }
       // Position on the piece from `from` (or the normal start) to the normal end: lines by
-      // length, circles by the rotation in [0, 2 pi) from `from`.
+      // length, circles by the rotation in [0, 2 pi) from `from` (slack: the chord to each end).
       double a, lower_mm, upper_mm;
       bool on_piece;
       if (!e.arc) {
@@ -748,18 +748,17 @@ struct Engine::State {
         on_piece = lower_mm >= 0 && upper_mm >= 0;
       } else {
         constexpr double kTurn = 2 * std::numbers::pi;
-        Vec2 f = (from ? *from : e.start) - e.centre;
-        auto rotation = [&](Vec2 to) {
-          double t = signed_rotation(f, to, e.sense);
-          return t < 0 ? t + kTurn : t;
-        };
+        Vec2 start = from ? *from : Element::offset(e.start, e.start_tangent(), s * r);
+        Vec2 end = Element::offset(e.end, e.end_tangent(), s * r);
+        Vec2 f = start - e.centre;
+        double t = signed_rotation(f, xs[i] - e.centre, e.sense);
+        a = t < 0 ? t + kTurn : t;
         // What is left of the circle after `from` (as close_open measures it: no wrap-around
         // when `from` is the normal start of a full circle).
         double room = sweep(e) - (from ? signed_rotation(e.start - e.centre, f, e.sense) : 0.0);
-        a = rotation(xs[i] - e.centre);
         on_piece = a <= room;
-        lower_mm = a * radius, upper_mm = (room - a) * radius;
-        if (!on_piece) lower_mm = upper_mm = -std::min(-upper_mm, (kTurn - a) * radius);
+        lower_mm = norm(xs[i] - start), upper_mm = norm(xs[i] - end);
+        if (!on_piece) lower_mm = upper_mm = -std::min(lower_mm, upper_mm);
       }
       m = std::min({m, lower_mm, upper_mm});
       bool valid = on_curve(curve, xs[i]) && on_piece;

@@ -2,12 +2,7 @@
 // from equidistant.hpp (exact constructions) and contour_element / contour_angle (exact predicates).
 #include "cutcom/ref/engine.hpp"
 
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <cstdlib>
 #include <deque>
-#include <limits>
 #include <optional>
 
 #include "contour_angle.hpp"
@@ -603,6 +598,7 @@ class Reference {
   // TRC-LOOK-1 asks for the second only; TRC-LOOK-2 for both.
   struct Extent {
     CGAL::Sign before_start, after_end;  // NEGATIVE: before the start / beyond the end
+    bool start_nearer = false;           // nearer to the normal start than to the normal end
     std::string along_text, left_text;   // lengths from the normal start and to the normal end (mm)
   };
   Extent extent_of(const ContourElement& e, const FT& radius, const Point& p) const {
@@ -612,6 +608,7 @@ class Reference {
       FT along = (p - start) * e.d / e.length;
       FT left = e.length - along;
       x.before_start = CGAL::sign(along), x.after_end = CGAL::sign(left);
+      x.start_nearer = CGAL::compare(along, left) == CGAL::SMALLER;
       x.along_text = exact_mm(along), x.left_text = exact_mm(left);
     } else {
       ExactAngle sweep =
@@ -619,6 +616,7 @@ class Reference {
       ExactAngle along = ExactAngle::signed_rotation(e.a - e.centre, p - e.centre, e.sense);
       ExactAngle left = sweep + -along;
       x.before_start = along.sign(), x.after_end = left.sign();
+      x.start_nearer = (along + -left).sign() == CGAL::NEGATIVE;
       x.along_text = arc_length_text(along, radius), x.left_text = arc_length_text(left, radius);
     }
     return x;
@@ -666,9 +664,7 @@ class Reference {
       else if (on.after_end == CGAL::NEGATIVE)
         margin = on.left_text;
       else
-        margin = std::strtod(on.along_text.c_str(), nullptr) < std::strtod(on.left_text.c_str(), nullptr)
-                     ? on.along_text
-                     : on.left_text;
+        margin = on.start_nearer ? on.along_text : on.left_text;
     }
     decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
     if (!valid) return pass_over(b);
@@ -765,62 +761,62 @@ class Reference {
 
   // TRC-EDGE-5: the points where the curve meets element e's equidistant between `from` (or its
   // normal start) and its normal end; the first (retraction) or the last (approach) along it.
-  // The margin (mm, sign exact, digits rounded) is the hit's least slack to the bounds of the
-  // curve and the equidistant and, with a circle, the depth of the carriers' overlap; without a
-  // hit, the largest (negative) such value over the carriers' intersections.
+  // The margin is the hit's least slack to the ends of the equidistant piece (along a line; the
+  // chord to a circle's end) and of the curve and, with a circle, the depth of the carriers'
+  // overlap; without a hit, the largest (negative) such value over the carriers' intersections.
   struct EdgeHit {
     std::optional<Point> point;
-    double margin = -std::numeric_limits<double>::infinity();
+    std::string margin = "-inf";
   };
   EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius, const std::optional<Point>& from,
                    bool last) {
     EdgeHit out;
     if (curve.carrier.circle && CGAL::sign(curve.carrier.radius) == CGAL::ZERO) return out;
     if (!curve.carrier.circle && CGAL::sign(curve.carrier.direction.squared_length()) == CGAL::ZERO) return out;
-    auto mm = [](const FT& units) { return CGAL::to_double(units) / 1e9; };
+    auto least = [](std::optional<FT>& m, const FT& v) {
+      if (!m || CGAL::compare(v, *m) == CGAL::SMALLER) m = v;
+    };
     Carrier<Kernel> ce = carrier_of(e, radius);
-    bool circle = curve.carrier.circle || e.is_arc();
-    double depth = circle ? -mm(carrier_gap<Kernel>(ce, curve.carrier)) : std::numeric_limits<double>::infinity();
+    std::optional<FT> depth;  // none: unbounded (two lines)
+    if (curve.carrier.circle || e.is_arc()) depth = -carrier_gap<Kernel>(ce, curve.carrier);
     std::vector<Point> xs = carrier_intersections<Kernel>(ce, curve.carrier);
-    if (xs.empty() && circle) out.margin = std::min(depth, -std::numeric_limits<double>::denorm_min());
-    double best_margin = 0;
+    if (xs.empty() && depth) out.margin = exact_mm(*depth);
+    Point start = from ? *from : equidistant_point<Kernel>(e.a, e.start_normal(), comp_->side_radius);
+    Point end = equidistant_point<Kernel>(e.b, e.end_normal(), comp_->side_radius);
+    std::optional<FT> best_margin, none_margin;
     std::optional<ExactAngle> best_position;
     for (const Point& p : xs) {
-      double m = depth;
-      if (curve.carrier.circle == false) {
+      std::optional<FT> m = depth;
+      if (!curve.carrier.circle) {
         FT length = CGAL::sqrt(curve.carrier.direction.squared_length());
         FT t = (p - curve.carrier.point) * curve.carrier.direction / length;
-        m = std::min(m, mm(t));
-        if (curve.bound == EdgeCurve::Bound::kSegment) m = std::min(m, mm(length - t));
+        least(m, t);
+        if (curve.bound == EdgeCurve::Bound::kSegment) least(m, length - t);
       }
-      // Where p lies on the piece from `from` (or the normal start) to the normal end: lines by
-      // length, circles by the rotation in [0, 2 pi) from `from` in the circle's sense.
+      // Where p lies on the piece from `start` to the normal end: lines by length, circles by
+      // the rotation in [0, 2 pi) from `start` in the circle's sense.
       bool on_piece;
-      double lower_mm, upper_mm;
       std::optional<ExactAngle> position;
       if (!e.is_arc()) {
-        Extent on = extent_of(e, radius, p);
-        CGAL::Sign lower = from ? compare_along(e, p, *from) : on.before_start;
-        lower_mm = from ? mm((p - *from) * e.d / e.length) : std::strtod(on.along_text.c_str(), nullptr);
-        upper_mm = std::strtod(on.left_text.c_str(), nullptr);
-        on_piece = lower != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;
+        FT along = (p - start) * e.d / e.length, left = (end - p) * e.d / e.length;
+        on_piece = CGAL::sign(along) != CGAL::NEGATIVE && CGAL::sign(left) != CGAL::NEGATIVE;
+        least(m, along), least(m, left);
       } else {
-        Vector f = (from ? *from : e.a) - e.centre;
+        Vector f = start - e.centre;
         ExactAngle room = ExactAngle::rotation(f, e.b - e.centre, e.sense);
         if (e.full_circle && room.sign() == CGAL::ZERO) room = ExactAngle::full_turn();
-        ExactAngle pos = ExactAngle::rotation(f, p - e.centre, e.sense);
-        ExactAngle left = room + -pos;
-        on_piece = left.sign() != CGAL::NEGATIVE;
-        position = pos;
-        auto length = [&](const ExactAngle& a) { return std::strtod(arc_length_text(a, radius).c_str(), nullptr); };
-        lower_mm = length(pos), upper_mm = length(left);
-        if (!on_piece)  // outside: the nearer of the two ends
-          lower_mm = upper_mm = -std::min(-upper_mm, length(ExactAngle::full_turn() + -pos));
+        position = ExactAngle::rotation(f, p - e.centre, e.sense);
+        on_piece = (room + -*position).sign() != CGAL::NEGATIVE;
+        FT to_start = CGAL::sqrt(CGAL::squared_distance(p, start)), to_end = CGAL::sqrt(CGAL::squared_distance(p, end));
+        if (on_piece) {
+          least(m, to_start), least(m, to_end);
+        } else {  // outside: the nearer of the two ends
+          least(m, -(CGAL::compare(to_start, to_end) == CGAL::SMALLER ? to_start : to_end));
+        }
       }
-      m = std::min({m, lower_mm, upper_mm});
       bool valid = on_curve(curve, p) && on_piece;
       if (!valid) {
-        out.margin = std::max(out.margin, std::min(m, -std::numeric_limits<double>::denorm_min()));
+        if (!none_margin || (m && CGAL::compare(*m, *none_margin) == CGAL::LARGER)) none_margin = m;
         continue;
       }
       bool better = !out.point;
@@ -828,9 +824,12 @@ class Reference {
         CGAL::Sign later = position ? (*position + -*best_position).sign() : compare_along(e, p, *out.point);
         better = later == (last ? CGAL::POSITIVE : CGAL::NEGATIVE);
       }
-      if (better) out.point = p, best_margin = std::max(m, 0.0), best_position = position;
+      if (better) out.point = p, best_margin = m, best_position = position;
     }
-    if (out.point) out.margin = best_margin;
+    if (out.point)
+      out.margin = best_margin ? exact_mm(*best_margin) : "inf";
+    else if (none_margin)
+      out.margin = exact_mm(*none_margin);
     return out;
   }
 
@@ -863,7 +862,7 @@ class Reference {
         edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_point(b.end, comp_->axes), false);
     EdgeHit edge = edge_hit(curve, *open_, open_radius_, open_start_, false);
     std::optional<Point> hit = edge.point;
-    decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", fmt::format("{:.17g}", edge.margin));
+    decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", edge.margin);
     if (!hit) return raise(10751, b);
     looking_ = false;
     if (!close_open(*hit, b)) return;
@@ -885,7 +884,7 @@ class Reference {
                                  approach_->from.plane(comp_->axes), true);
     EdgeHit edge = edge_hit(curve, *c.element, c.radius, std::nullopt, true);
     std::optional<Point> hit = edge.point;
-    decide("TRC-EDGE-5", sel.words.line, hit ? "hit" : "none", fmt::format("{:.17g}", edge.margin));
+    decide("TRC-EDGE-5", sel.words.line, hit ? "hit" : "none", edge.margin);
     if (!hit) return raise(10751, *c.block);
     PendingApproach a = std::move(*approach_);
     approach_.reset();
