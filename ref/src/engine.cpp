@@ -7,6 +7,7 @@
 
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
+#include "edge_strategy.hpp"
 #include "equidistant.hpp"
 #include "exact_angle.hpp"
 #include "exact_path.hpp"
@@ -498,14 +499,7 @@ class Reference {
 
   // The carrier of an equidistant: the offset line, or the concentric circle.
   Carrier<Kernel> carrier_of(const ContourElement& e, const FT& radius) const {
-    Carrier<Kernel> c;
-    c.circle = e.is_arc();
-    if (c.circle) {
-      c.point = e.centre, c.radius = radius;
-    } else {
-      c.point = equidistant_point<Kernel>(e.a, e.normal, comp_->side_radius), c.direction = e.d;
-    }
-    return c;
+    return ref::carrier_of(e, radius, comp_->side_radius);
   }
 
   void corner(const Block& next_block) {
@@ -716,121 +710,14 @@ class Reference {
     dummies_.swap(a.held_back);
   }
 
-  // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*) --------------------------
-  // The auxiliary curve of the strategy in force, and how much of its carrier counts.
-  struct EdgeCurve {
-    Carrier<Kernel> carrier;
-    enum class Bound { kWhole, kRay, kSegment } bound = Bound::kWhole;
-  };
-  static bool on_curve(const EdgeCurve& c, const Point& p) {
-    if (c.bound == EdgeCurve::Bound::kWhole) return true;
-    FT t = (p - c.carrier.point) * c.carrier.direction;  // times |direction|^2
-    if (CGAL::sign(t) == CGAL::NEGATIVE) return false;
-    return c.bound == EdgeCurve::Bound::kRay || CGAL::compare(t, c.carrier.direction.squared_length()) != CGAL::LARGER;
-  }
-
-  // TRC-EDGE-2, TRC-EDGE-3, TRC-EDGE-4: G460 the straight line between the normal point and the programmed position
-  // off the contour; G461 the circle of radius r about the programmed end (start) point; G462 the
-  // tangent extension of the equidistant beyond its normal point. `normal_point`, `vertex` and
-  // `outward` (the tangent pointing away from the contour) belong to the too-short block.
+  // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*, edge_strategy.cpp) ------
   EdgeCurve edge_curve(EdgeStrategy strategy, const Point& vertex, const Point& normal_point, const Vector& outward,
-                       const Point& off_contour, bool approach) {
-    EdgeCurve c;
-    switch (strategy) {
-      case EdgeStrategy::kG460:  // TRC-EDGE-2
-        c.bound = EdgeCurve::Bound::kSegment;
-        c.carrier.point = approach ? off_contour : normal_point;
-        c.carrier.direction = approach ? normal_point - off_contour : off_contour - normal_point;
-        break;
-      case EdgeStrategy::kG461:  // TRC-EDGE-3
-        c.carrier.circle = true, c.carrier.point = vertex, c.carrier.radius = leaf(comp_->radius);
-        break;
-      case EdgeStrategy::kG462:  // TRC-EDGE-4
-        c.bound = EdgeCurve::Bound::kRay;
-        c.carrier.point = normal_point, c.carrier.direction = outward;
-        break;
-    }
-    return c;
+                       const Point& off_contour, bool approach) const {
+    return ref::edge_curve(strategy, vertex, normal_point, outward, off_contour, approach, leaf(comp_->radius));
   }
-
-  // Signed position of p relative to q along element e's equidistant (> 0: p comes later).
-  static CGAL::Sign compare_along(const ContourElement& e, const Point& p, const Point& q) {
-    if (!e.is_arc()) return CGAL::sign((p - q) * e.d);
-    return ExactAngle::signed_rotation(q - e.centre, p - e.centre, e.sense).sign();
-  }
-
-  // TRC-EDGE-5: the points where the curve meets element e's equidistant between `from` (or its
-  // normal start) and its normal end; the first (retraction) or the last (approach) along it.
-  // The margin is the hit's least slack to the ends of the equidistant piece (along a line; the
-  // chord to a circle's end) and of the curve and, with a circle, the depth of the carriers'
-  // overlap; without a hit, the largest (negative) such value over the carriers' intersections.
-  struct EdgeHit {
-    std::optional<Point> point;
-    std::string margin = "-inf";
-  };
   EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius, const std::optional<Point>& from,
-                   bool last) {
-    EdgeHit out;
-    if (curve.carrier.circle && CGAL::sign(curve.carrier.radius) == CGAL::ZERO) return out;
-    if (!curve.carrier.circle && CGAL::sign(curve.carrier.direction.squared_length()) == CGAL::ZERO) return out;
-    auto least = [](std::optional<FT>& m, const FT& v) {
-      if (!m || CGAL::compare(v, *m) == CGAL::SMALLER) m = v;
-    };
-    Carrier<Kernel> ce = carrier_of(e, radius);
-    std::optional<FT> depth;  // none: unbounded (two lines)
-    if (curve.carrier.circle || e.is_arc()) depth = -carrier_gap<Kernel>(ce, curve.carrier);
-    std::vector<Point> xs = carrier_intersections<Kernel>(ce, curve.carrier);
-    if (xs.empty() && depth) out.margin = exact_mm(*depth);
-    Point start = from ? *from : equidistant_point<Kernel>(e.a, e.start_normal(), comp_->side_radius);
-    Point end = equidistant_point<Kernel>(e.b, e.end_normal(), comp_->side_radius);
-    std::optional<FT> best_margin, none_margin;
-    std::optional<ExactAngle> best_position;
-    for (const Point& p : xs) {
-      std::optional<FT> m = depth;
-      if (!curve.carrier.circle) {
-        FT length = CGAL::sqrt(curve.carrier.direction.squared_length());
-        FT t = (p - curve.carrier.point) * curve.carrier.direction / length;
-        least(m, t);
-        if (curve.bound == EdgeCurve::Bound::kSegment) least(m, length - t);
-      }
-      // Where p lies on the piece from `start` to the normal end: lines by length, circles by
-      // the rotation in [0, 2 pi) from `start` in the circle's sense.
-      bool on_piece;
-      std::optional<ExactAngle> position;
-      if (!e.is_arc()) {
-        FT along = (p - start) * e.d / e.length, left = (end - p) * e.d / e.length;
-        on_piece = CGAL::sign(along) != CGAL::NEGATIVE && CGAL::sign(left) != CGAL::NEGATIVE;
-        least(m, along), least(m, left);
-      } else {
-        Vector f = start - e.centre;
-        ExactAngle room = ExactAngle::rotation(f, e.b - e.centre, e.sense);
-        if (e.full_circle && room.sign() == CGAL::ZERO) room = ExactAngle::full_turn();
-        position = ExactAngle::rotation(f, p - e.centre, e.sense);
-        on_piece = (room + -*position).sign() != CGAL::NEGATIVE;
-        FT to_start = CGAL::sqrt(CGAL::squared_distance(p, start)), to_end = CGAL::sqrt(CGAL::squared_distance(p, end));
-        if (on_piece) {
-          least(m, to_start), least(m, to_end);
-        } else {  // outside: the nearer of the two ends
-          least(m, -(CGAL::compare(to_start, to_end) == CGAL::SMALLER ? to_start : to_end));
-        }
-      }
-      bool valid = on_curve(curve, p) && on_piece;
-      if (!valid) {
-        if (!none_margin || (m && CGAL::compare(*m, *none_margin) == CGAL::LARGER)) none_margin = m;
-        continue;
-      }
-      bool better = !out.point;
-      if (!better) {
-        CGAL::Sign later = position ? (*position + -*best_position).sign() : compare_along(e, p, *out.point);
-        better = later == (last ? CGAL::POSITIVE : CGAL::NEGATIVE);
-      }
-      if (better) out.point = p, best_margin = m, best_position = position;
-    }
-    if (out.point)
-      out.margin = best_margin ? exact_mm(*best_margin) : "inf";
-    else if (none_margin)
-      out.margin = exact_mm(*none_margin);
-    return out;
+                   bool last) const {
+    return ref::edge_hit(curve, e, radius, comp_->side_radius, from, last);
   }
 
   static std::string_view strategy_name(EdgeStrategy s) {
