@@ -37,6 +37,15 @@ RC_GTEST_PROP(Metamorphic, ReversingTheContourSwapsApproachAndRetraction, ()) {
   ContourCase c = *around_ends();
   for (Step& s : c.steps) s.dummies = 0, s.flip = false;  // one selection, one deselection
   RC_TAG(c.style);
+  // A full circle next to a too-short end block is measured from its normal start on approach
+  // (its end is not known yet) and from the open element's start on retraction: the two may pick
+  // different intersections (TRC-EDGE-5). Not a mirror case.
+  std::size_t n = c.steps.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if ((i < 2 || i + 2 >= n) && c.steps[i].arc && c.steps[i].dx == 0 && c.steps[i].dy == 0) {
+      RC_TAG("full circle at an end");
+      return;
+    }
   int deselection_line = 5 + static_cast<int>(c.steps.size());  // $TC lines, N10, N20, the steps
   std::optional<std::string> why;
   try {

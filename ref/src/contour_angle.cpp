@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "exact_root.hpp"
 #include "kernel.hpp"
 
 namespace cutcom::ref {
@@ -132,7 +133,7 @@ int sign_cos_difference_exact(const FT& dot, const FT& l2, const mpq_class& t) {
     int magnitude = static_cast<int>(CGAL::compare(to_ft_q(c2), dot * dot / l2));
     return cs > 0 ? magnitude : -magnitude;
   }
-  FT q = dot / CGAL::sqrt(l2);
+  FT q = dot / exact_root(l2);
   for (mpfr_prec_t bits = 128; bits <= 4096; bits *= 2) {
     Mpfr arg(bits), cos_t(bits), bound(bits), lo(bits), hi(bits);
     mpfr_const_pi(arg.v, MPFR_RNDN);

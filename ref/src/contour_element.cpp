@@ -1,5 +1,7 @@
 #include "contour_element.hpp"
 
+#include "exact_root.hpp"
+
 namespace cutcom::ref {
 
 FT to_ft(const mpq_class& q) {
@@ -32,7 +34,7 @@ ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
   e.b = plane_point(block.end, axes);
   e.d = e.b - e.a;
   mpz_class sq = dx * dx + dy * dy;
-  e.length = CGAL::sqrt(FT(CORE::BigInt(sq.get_mpz_t())));
+  e.length = exact_root(FT(CORE::BigInt(sq.get_mpz_t())));
   e.normal = Vector(-e.d.y() / e.length, e.d.x() / e.length);
   return e;
 }
@@ -62,7 +64,7 @@ ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
   mpq_class da = ea - sa, db = eb - sb;
   mpq_class q = cr * cr / (da * da + db * db) - mpq_class(1, 4);
   int k = (e.sense > 0) == (sgn(cr) > 0) ? 1 : -1;
-  FT h = sgn(q) == 0 ? FT(0) : CGAL::sqrt(to_ft(q));
+  FT h = sgn(q) == 0 ? FT(0) : exact_root(to_ft(q));
   e.a = plane_point(block.start, axes);
   e.b = plane_point(block.end, axes);
   e.centre = Point(to_ft((sa + ea) / 2) + FT(k) * (-to_ft(db)) * h, to_ft((sb + eb) / 2) + FT(k) * to_ft(da) * h);
@@ -81,7 +83,7 @@ CrReach cr_reach(const Block& block, PlaneAxes axes) {
   mpq_class cr = units_q(*block.words.cr);
   mpq_class chord2 = da * da + db * db;
   bool reachable = sgn(chord2) > 0 && chord2 <= 4 * cr * cr;
-  return {reachable, FT(2) * to_ft(abs(cr)) - CGAL::sqrt(to_ft(chord2))};
+  return {reachable, FT(2) * to_ft(abs(cr)) - exact_root(to_ft(chord2))};
 }
 
 ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
@@ -104,7 +106,7 @@ ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
   e.cx = ca, e.cy = cb;
   e.radius_squared = (sa - ca) * (sa - ca) + (sb - cb) * (sb - cb);
   e.centre = Point(to_ft(ca), to_ft(cb));
-  e.radius = CGAL::sqrt(to_ft(e.radius_squared));
+  e.radius = exact_root(to_ft(e.radius_squared));
   e.start_tangent = arc_tangent(sa, sb, ca, cb, e.sense);
   e.end_tangent = arc_tangent(ea, eb, ca, cb, e.sense);
   e.start_dir = Vector(to_ft(e.start_tangent.a), to_ft(e.start_tangent.b));
@@ -132,8 +134,8 @@ ArcTolerance arc_end_point_check(const Block& block, PlaneAxes axes, const Decim
   mpq_class ca = units_q(coord(*block.centre, axes.abscissa)), cb = units_q(coord(*block.centre, axes.ordinate));
   mpq_class rs2 = (sa - ca) * (sa - ca) + (sb - cb) * (sb - cb);
   mpq_class re2 = (ea - ca) * (ea - ca) + (eb - cb) * (eb - cb);
-  FT rs = CGAL::sqrt(to_ft(rs2));
-  FT deviation = rs2 == re2 ? FT(0) : CGAL::abs(CGAL::sqrt(to_ft(re2)) - rs);
+  FT rs = exact_root(to_ft(rs2));
+  FT deviation = rs2 == re2 ? FT(0) : CGAL::abs(exact_root(to_ft(re2)) - rs);
   // The factor is a plain number: tolerance = max(const, factor * rho_start), in units.
   FT by_factor = to_ft(mpq_class(units_of(error_factor), mpz_class(Decimal::kUnitsPerOne))) * rs;
   FT constant = leaf(error_const);

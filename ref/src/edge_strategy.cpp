@@ -1,6 +1,7 @@
 #include "edge_strategy.hpp"
 
 #include "exact_angle.hpp"
+#include "exact_root.hpp"
 
 namespace cutcom::ref {
 
@@ -79,7 +80,7 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
   for (const Point& p : xs) {
     std::optional<FT> m = depth;
     if (!curve.carrier.circle) {
-      FT length = CGAL::sqrt(curve.carrier.direction.squared_length());
+      FT length = exact_root(curve.carrier.direction.squared_length());
       FT t = (p - curve.carrier.point) * curve.carrier.direction / length;
       least(m, t);
       if (curve.bound == EdgeCurve::Bound::kSegment) least(m, length - t);
@@ -98,7 +99,7 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
       if (e.full_circle && room.sign() == CGAL::ZERO) room = ExactAngle::full_turn();
       position = ExactAngle::rotation(f, p - e.centre, e.sense);
       on_piece = (room + -*position).sign() != CGAL::NEGATIVE;
-      FT to_start = CGAL::sqrt(CGAL::squared_distance(p, start)), to_end = CGAL::sqrt(CGAL::squared_distance(p, end));
+      FT to_start = exact_root(CGAL::squared_distance(p, start)), to_end = exact_root(CGAL::squared_distance(p, end));
       if (on_piece) {
         least(m, to_start), least(m, to_end);
       } else {  // outside: the nearer of the two ends

@@ -11,6 +11,7 @@
 #include "equidistant.hpp"
 #include "exact_angle.hpp"
 #include "exact_path.hpp"
+#include "exact_root.hpp"
 
 namespace cutcom::ref {
 
@@ -343,7 +344,7 @@ class Reference {
     FT cross = tangent.x() * off.y() - tangent.y() * off.x();
     bool behind = comp_->s * static_cast<int>(CGAL::sign(cross)) < 0;
     decide("TRC-KONT-1", at_block.words.line, behind ? "behind" : "in-front",
-           exact_mm(FT(comp_->s) * cross / CGAL::sqrt(tangent.squared_length())));
+           exact_mm(FT(comp_->s) * cross / exact_root(tangent.squared_length())));
     return behind;
   }
   bool kont_behind(const Block& at_block, const KontCorner& k, const Vector& tangent, int alarm) {
@@ -352,7 +353,7 @@ class Reference {
     FT distance2 = off.squared_length();
     bool inside = CGAL::compare(distance2, comp_->side_radius * comp_->side_radius) == CGAL::SMALLER;
     decide("TRC-KONT-2", at_block.words.line, inside ? "inside" : "room",
-           exact_mm(CGAL::sqrt(distance2) - leaf(comp_->radius)));
+           exact_mm(exact_root(distance2) - leaf(comp_->radius)));
     if (inside) raise(alarm, at_block, "TRC-KONT-2");
     return !inside;
   }
@@ -371,7 +372,7 @@ class Reference {
                                          const FT& e_radius, const Point& on_line, const Vector& d) {
     if (!e.is_arc()) {
       FT cross = k.d1.x() * k.d2.y() - k.d1.y() * k.d2.x(), dot = k.d1 * k.d2;
-      FT l1 = CGAL::sqrt(k.d1.squared_length()), l2 = CGAL::sqrt(k.d2.squared_length());
+      FT l1 = exact_root(k.d1.squared_length()), l2 = exact_root(k.d2.squared_length());
       FT trim = corner_trim<Kernel>(cross, dot, l1, l2, comp_->side_radius);
       Vector n1(-k.d1.y() / l1, k.d1.x() / l1);
       return corner_intersection<Kernel>(k.vertex, n1, k.d1, l1, comp_->side_radius, trim);
@@ -386,7 +387,7 @@ class Reference {
   }
 
   static Vector unit_left_normal(const Vector& d) {
-    FT l = CGAL::sqrt(d.squared_length());
+    FT l = exact_root(d.squared_length());
     return Vector(-d.y() / l, d.x() / l);
   }
 
@@ -522,7 +523,7 @@ class Reference {
       dot = first.end_dir * next.start_dir;
     }
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
-    FT sine = FT(comp_->s) * cross / CGAL::sqrt(dot * dot + cross * cross);  // |t1||t2| = sqrt(dot^2 + cross^2)
+    FT sine = FT(comp_->s) * cross / exact_root(dot * dot + cross * cross);  // |t1||t2| = sqrt(dot^2 + cross^2)
     decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(kind)], exact_text(sine));
 
     bool circle = kind == CornerKind::kReversal;  // TRC-G450-3

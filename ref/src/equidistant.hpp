@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include "exact_root.hpp"
+
 namespace cutcom::ref {
 
 // TRC-EQ-1: the point of the equidistant at distance r on side s (+1 left, -1 right) of the
@@ -58,9 +60,9 @@ typename K::FT carrier_gap(const Carrier<K>& u, const Carrier<K>& v) {
     const Carrier<K>& l = u.circle ? v : u;
     const Carrier<K>& c = u.circle ? u : v;
     KFT cross = l.direction.x() * (c.point.y() - l.point.y()) - l.direction.y() * (c.point.x() - l.point.x());
-    return CGAL::abs(cross) / CGAL::sqrt(l.direction.squared_length()) - c.radius;
+    return CGAL::abs(cross) / exact_root(l.direction.squared_length()) - c.radius;
   }
-  KFT d = CGAL::sqrt((v.point - u.point).squared_length());
+  KFT d = exact_root((v.point - u.point).squared_length());
   KFT outside = d - (u.radius + v.radius), inside = CGAL::abs(u.radius - v.radius) - d;
   return CGAL::compare(outside, inside) == CGAL::LARGER ? outside : inside;
 }
@@ -95,7 +97,7 @@ std::vector<typename K::Point_2> carrier_intersections(const Carrier<K>& u, cons
       out.push_back(l.point + l.direction * (-b / a));
       return out;
     }
-    KFT root = CGAL::sqrt(disc);
+    KFT root = exact_root(disc);
     out.push_back(l.point + l.direction * ((-b - root) / a));
     out.push_back(l.point + l.direction * ((-b + root) / a));
     return out;
@@ -114,7 +116,7 @@ std::vector<typename K::Point_2> carrier_intersections(const Carrier<K>& u, cons
     out.push_back(m);
     return out;
   }
-  KFT h = CGAL::sqrt(across2);
+  KFT h = exact_root(across2);
   out.push_back(m + perp * h);
   out.push_back(m - perp * h);
   return out;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "exact_root.hpp"
+
 namespace cutcom::ref {
 
 ExactPoint ExactPoint::in_plane(const Point& p, const Decimal& applicate, PlaneAxes axes) {
@@ -27,7 +29,7 @@ bool ExactPath::same(const ExactPoint& a, const ExactPoint& b) const { return a.
 
 FT ExactPath::distance(const ExactPoint& a, const ExactPoint& b) const {
   FT dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
-  return CGAL::sqrt(dx * dx + dy * dy + dz * dz);
+  return exact_root(dx * dx + dy * dy + dz * dz);
 }
 
 void ExactPath::add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourElement* offset_of,
