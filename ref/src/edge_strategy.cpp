@@ -95,8 +95,11 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
       least(m, along), least(m, left);
     } else {
       Vector f = start - e.centre;
-      ExactAngle room = ExactAngle::rotation(f, e.b - e.centre, e.sense);
-      if (e.full_circle && room.sign() == CGAL::ZERO) room = ExactAngle::full_turn();
+      // What is left of the circle after `start`, as close_open measures it: the sweep less the
+      // (signed) rotation already cut at the start; more than a turn after a G451 extension.
+      ExactAngle room =
+          e.full_circle ? ExactAngle::full_turn() : ExactAngle::rotation(e.a - e.centre, e.b - e.centre, e.sense);
+      if (from) room = room + -ExactAngle::signed_rotation(e.a - e.centre, f, e.sense);
       position = ExactAngle::rotation(f, p - e.centre, e.sense);
       on_piece = (room + -*position).sign() != CGAL::NEGATIVE;
       FT to_start = exact_root(CGAL::squared_distance(p, start)), to_end = exact_root(CGAL::squared_distance(p, end));
