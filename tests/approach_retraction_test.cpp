@@ -224,3 +224,36 @@ TEST(ApproachRetraction, KontFromBehindWithATooShortEndBlockIsNotSupportedYet) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+using K = OriginKind;
+
+// covers: TRC-EDGE-1 TRC-EDGE-4 TRC-EDGE-5 TRC-LOOK-2 TRC-LOOK-3
+TEST(ApproachRetraction, TooShortFirstBlockFoundByTheLookAhead) {
+  // r = 10, G42. N60 (first block) runs -Y from (50,5), equidistant x = 40 from (40,5); N70 runs
+  // -X for 3 mm, equidistant y = 10 from (50,10) to (47,10): the corner's intersection (40,10) lies
+  // beyond its end, too short; the look-ahead finds N80's equidistant y = 10 (x from 47 to 30) at
+  // (40,10), which lies before N60's normal start: N60 would run backwards. G462 extends N60's
+  // equidistant backwards from (40,5) along +Y: it meets N80's at (40,10). The approach goes
+  // there; N60 and N70 are skipped; N80 runs to (30,10); NORM retraction to (20,30).
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=10\nN30 G0 X0 Y20 T1 D1\nN50 G1 G42 G462 X50 Y5 F100\nN60 Y0\nN70 X47\n"
+      "N80 X30\nN90 G40 X20 Y30\n";
+  Runs r = run_both(text);
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {0, 20, 0}), line(K::kApproach, {0, 20, 0}, {40, 10, 0}),
+                  line(K::kOffset, {40, 10, 0}, {30, 10, 0}), line(K::kRetraction, {30, 10, 0}, {20, 30, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-LOOK-1", "too-short"));
+    EXPECT_TRUE(has_decision(*x, "TRC-LOOK-2", "intersection"));
+    EXPECT_TRUE(has_decision(*x, "TRC-ELEMENT-1", "reverses"));
+    EXPECT_TRUE(has_decision(*x, "TRC-EDGE-1", "G462"));
+    int skipped = 0;
+    for (const Decision& d : x->decisions) skipped += d.clause == "TRC-LOOK-3";
+    EXPECT_EQ(skipped, 2);  // N60 and N70
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::test
