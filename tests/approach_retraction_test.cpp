@@ -210,16 +210,7 @@ TEST(ApproachRetraction, KontFromBehindWithATooShortEndBlockIsNotSupportedYet) {
                 "N90 X0 Y0 G40\n",
        5},
   };
-  for (const auto& [text, line_no] : cases)
-    for (const char* engine : {"fast", "ref"}) {
-      bool ok = false;
-      try {
-        run_engine(engine, text, {}, &ok);
-        ADD_FAILURE() << engine << " accepted:\n" << text;
-      } catch (const UnsupportedError& e) {
-        EXPECT_EQ(e.line(), line_no) << engine << ": " << e.what();
-      }
-    }
+  for (const auto& [text, line_no] : cases) expect_not_supported(text, line_no);
 }
 
 }  // namespace

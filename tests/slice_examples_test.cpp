@@ -389,17 +389,7 @@ TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G41 X20\n"), 6},
   };
-  for (const auto& [text, line_no] : cases)
-    for (const char* engine : {"fast", "ref"}) {
-      bool ok = false;
-      try {
-        run_engine(engine, text, {}, &ok);
-        ADD_FAILURE() << engine << " accepted:\n" << text;
-      } catch (const UnsupportedError& e) {
-        EXPECT_EQ(e.line(), line_no) << engine << ": " << e.what();
-        EXPECT_NE(std::string(e.what()).find("not supported"), std::string::npos);
-      }
-    }
+  for (const auto& [text, line_no] : cases) expect_not_supported(text, line_no);
 }
 
 // covers: NC-ERR-2 ALARM-1

@@ -76,6 +76,20 @@ inline void expect_both(const Runs& r, const std::vector<Expect>& want) {
   expect_path(r.ref, want, "ref");
 }
 
+// Both engines reject the program as not supported (TRC-UNSUP-1), naming line `line_no`.
+inline void expect_not_supported(const std::string& text, int line_no) {
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok = false;
+    try {
+      run_engine(engine, text, {}, &ok);
+      ADD_FAILURE() << engine << " accepted:\n" << text;
+    } catch (const UnsupportedError& e) {
+      EXPECT_EQ(e.line(), line_no) << engine << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find("not supported"), std::string::npos);
+    }
+  }
+}
+
 inline bool has_decision(const RunResult& r, std::string_view clause, std::string_view branch) {
   for (const auto& d : r.decisions)
     if (d.clause == clause && d.branch == branch) return true;

@@ -240,15 +240,22 @@ struct Engine::State {
   // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
   // 1e-9 mm, and while each component stays below 2^62 the cross and dot products fit in 128 bits.
   // Tangency and reversal are then seen as ref sees them, not as a 1e-17 remainder.
-  void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
+  struct ExactProducts {
+    Int128 cross, dot;
+  };
+  std::optional<ExactProducts> exact_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u) const {
     const Int128 limit = Int128(1) << 62;
-    Int128 a1 = first.delta[static_cast<std::size_t>(axes.abscissa)],
-           b1 = first.delta[static_cast<std::size_t>(axes.ordinate)];
-    Int128 a2 = second.delta[static_cast<std::size_t>(axes.abscissa)],
-           b2 = second.delta[static_cast<std::size_t>(axes.ordinate)];
+    Int128 a1 = t[static_cast<std::size_t>(axes.abscissa)], b1 = t[static_cast<std::size_t>(axes.ordinate)];
+    Int128 a2 = u[static_cast<std::size_t>(axes.abscissa)], b2 = u[static_cast<std::size_t>(axes.ordinate)];
     for (Int128 v : {a1, b1, a2, b2})
-      if (v >= limit || v <= -limit) return;  // beyond the range: the double decision stands
-    Int128 cr = a1 * b2 - b1 * a2, dt = a1 * a2 + b1 * b2;
+      if (v >= limit || v <= -limit) return std::nullopt;  // beyond the range: the double decision stands
+    return ExactProducts{a1 * b2 - b1 * a2, a1 * a2 + b1 * b2};
+  }
+
+  void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
+    std::optional<ExactProducts> p = exact_products(first.delta, second.delta);
+    if (!p) return;
+    Int128 cr = p->cross, dt = p->dot;
     if (cr == 0) {
       c.kind = dt > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
       c.sine = 0;
@@ -431,14 +438,9 @@ struct Engine::State {
 
   // The sign of cross(t, k * u) for exact integer displacements t and u (k = +-1), if they are in range.
   std::optional<int> exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u, int k) const {
-    const Int128 limit = Int128(1) << 62;
-    Int128 a1 = t[static_cast<std::size_t>(axes.abscissa)], b1 = t[static_cast<std::size_t>(axes.ordinate)];
-    Int128 a2 = u[static_cast<std::size_t>(axes.abscissa)], b2 = u[static_cast<std::size_t>(axes.ordinate)];
-    for (Int128 v : {a1, b1, a2, b2})
-      if (v >= limit || v <= -limit) return std::nullopt;
-    Int128 c = a1 * b2 - b1 * a2;
-    int sign = (c > 0) - (c < 0);
-    return k * sign;
+    std::optional<ExactProducts> p = exact_products(t, u);
+    if (!p) return std::nullopt;
+    return k * ((p->cross > 0) - (p->cross < 0));
   }
 
   // TRC-KONT-1: behind = strictly on the far side of the contour's tangent line from the
@@ -654,19 +656,12 @@ struct Engine::State {
     looking = false;
     Candidate candidate{&c, &cand, radius};
     if (!close_open(y, b.words.line, b.words.number, &candidate)) return;
-    // TRC-LOOK-3: skipped blocks lose their plane motion; the rest runs at the intersection.
-    for (BlockCopy& d : skipped) {
-      decide("TRC-LOOK-3", d.line, "skipped");
-      line(d, xyz(y, h(d.start)), xyz(y, h(d.end)), OriginKind::kInfeed, d.rapid);
-    }
+    for (BlockCopy& d : skipped) skip_at(d, y);
     skipped.clear();
     open_element(c, cand, y, radius);
   }
 
   // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*, edge_strategy.cpp) ------
-  static std::string_view strategy_name(EdgeStrategy st) {
-    return st == EdgeStrategy::kG460 ? "G460" : st == EdgeStrategy::kG461 ? "G461" : "G462";
-  }
 
   // TRC-EDGE-1 on retraction: deselection while the look-ahead found no block to meet the open
   // element; it ends at the hit, the blocks after it are skipped.
@@ -692,7 +687,7 @@ struct Engine::State {
         throw UnsupportedError(  // TRC-EDGE-6 (planned)
             b.words.line, "KONT retraction from behind the contour after a too-short last block");
     }
-    decide("TRC-EDGE-1", d.line, strategy_name(d.edge_strategy));
+    decide("TRC-EDGE-1", d.line, g_code(d.edge_strategy));
     Vec2 normal_end = Element::offset(last.end, last.end_tangent(), s * r);
     EdgeCurve curve = edge_curve(d.edge_strategy, r, last.end, normal_end, last.end_tangent(), ab(d.end), false);
     Vec2 hit;
@@ -702,14 +697,12 @@ struct Engine::State {
     if (!found) return raise(10751, d.line, d.number);
     looking = false;
     if (!close_open(hit, d.line, d.number)) return;
-    for (BlockCopy& k : skipped) {
-      decide("TRC-LOOK-3", k.line, "skipped");
-      line(k, xyz(hit, h(k.start)), xyz(hit, h(k.end)), OriginKind::kInfeed, k.rapid);
-    }
+    for (BlockCopy& k : skipped) skip_at(k, hit);
     skipped.clear();
     retraction_line(d, hit);
   }
 
+  // TRC-LOOK-3: a skipped block loses its plane motion; the rest runs at `at`.
   void skip_at(BlockCopy& k, Vec2 at) {
     decide("TRC-LOOK-3", k.line, "skipped");
     line(k, xyz(at, h(k.start)), xyz(at, h(k.end)), OriginKind::kInfeed, k.rapid);
@@ -721,7 +714,7 @@ struct Engine::State {
     if (selection.cdon)
       throw UnsupportedError(  // TRC-CD-1 (planned)
           selection.line, "CDON search of G460/G461/G462 over later blocks");
-    decide("TRC-EDGE-1", selection.line, strategy_name(selection.edge_strategy));
+    decide("TRC-EDGE-1", selection.line, g_code(selection.edge_strategy));
     const Element& first = open_el;
     EdgeCurve curve = edge_curve(selection.edge_strategy, r, first.start, open_start, -1.0 * first.start_tangent(),
                                  ab(selection.start), true);

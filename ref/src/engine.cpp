@@ -721,10 +721,6 @@ class Reference {
     return ref::edge_hit(curve, e, radius, comp_->side_radius, from, last);
   }
 
-  static std::string_view strategy_name(EdgeStrategy s) {
-    return s == EdgeStrategy::kG460 ? "G460" : s == EdgeStrategy::kG461 ? "G461" : "G462";
-  }
-
   // TRC-EDGE-1 on retraction: deselection while the look-ahead found no block to meet the open
   // element (the last block is too short). The open element ends at the hit, the blocks after it
   // are skipped (TRC-LOOK-3), the retraction line starts there.
@@ -744,7 +740,7 @@ class Reference {
         kont_side(b, last.b, plane_point(b.end, comp_->axes), last.end_dir))  // TRC-KONT-1
       throw UnsupportedError(                                                 // TRC-EDGE-6 (planned)
           b.words.line, "KONT retraction from behind the contour after a too-short last block");
-    decide("TRC-EDGE-1", b.words.line, strategy_name(b.state.edge_strategy));
+    decide("TRC-EDGE-1", b.words.line, g_code(b.state.edge_strategy));
     Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
     EdgeCurve curve =
         edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_point(b.end, comp_->axes), false);
@@ -766,7 +762,7 @@ class Reference {
     if (sel.state.collision == CollisionMode::kCdon)
       throw UnsupportedError(  // TRC-CD-1 (planned)
           sel.words.line, "CDON search of G460/G461/G462 over later blocks");
-    decide("TRC-EDGE-1", sel.words.line, strategy_name(sel.state.edge_strategy));
+    decide("TRC-EDGE-1", sel.words.line, g_code(sel.state.edge_strategy));
     const ContourElement& first = *open_;
     EdgeCurve curve = edge_curve(sel.state.edge_strategy, first.a, open_start_, -first.start_dir,
                                  approach_->from.plane(comp_->axes), true);

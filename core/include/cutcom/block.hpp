@@ -24,6 +24,9 @@ enum class ApproachMode : std::uint8_t { kNorm, kKont, kKontC, kKontT };
 enum class CornerMode : std::uint8_t { kG450, kG451 };
 enum class CollisionMode : std::uint8_t { kCdof, kCdon, kCdof2 };
 enum class EdgeStrategy : std::uint8_t { kG460, kG461, kG462 };  // group 48
+inline std::string_view g_code(EdgeStrategy s) {
+  return s == EdgeStrategy::kG460 ? "G460" : s == EdgeStrategy::kG461 ? "G461" : "G462";
+}
 enum class SarSide : std::uint8_t { kG140, kG141, kG142, kG143 };
 enum class SarSegmentation : std::uint8_t { kG340, kG341 };
 enum class SarContour : std::uint8_t { kG147, kG148, kG247, kG248, kG347, kG348 };
