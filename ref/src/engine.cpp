@@ -2,6 +2,7 @@
 // from equidistant.hpp (exact constructions) and contour_element / contour_angle (exact predicates).
 #include "cutcom/ref/engine.hpp"
 
+#include <climits>
 #include <deque>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include "exact_angle.hpp"
 #include "exact_path.hpp"
 #include "exact_root.hpp"
+#include "held_output.hpp"
 
 namespace cutcom::ref {
 
@@ -25,7 +27,7 @@ struct CentrePoint {
 
 class Reference {
  public:
-  Reference(const MachineData& md, PathSink& sink) : md_(md), sink_(sink) {}
+  Reference(const MachineData& md, PathSink& sink) : md_(md), sink_(sink), held_(sink, path) {}
 
   // Blocks are read one by one, as a control reads them, and kept: ref may look back at any of
   // them (a deque keeps references to earlier blocks valid).
@@ -34,12 +36,16 @@ class Reference {
     while (!stopped_ && reader.next(b)) {
       program_.push_back(b);
       actions_done_.push_back(false);
+      if (b.moves_in_plane()) ++traversing_;
+      seq_.push_back(traversing_);
       step(program_.back());
+      release_window(program_.back());
     }
     // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
     while (stopped_ && reader.next(b)) {
     }
     if (!stopped_) end_of_program();
+    held_.release_before(INT_MAX);
     return !stopped_;
   }
 
@@ -72,6 +78,7 @@ class Reference {
   }
   void raise(int number, const Block& at, std::string_view clause = {}) {
     flush_approach();  // ALARM-1: what was decided before the alarm is output
+    held_.release_before(INT_MAX);
     sink_.alarm(make_alarm(number, at.words.line, at.words.number, clause));
     stopped_ = true;
   }
@@ -80,8 +87,25 @@ class Reference {
   void run_actions(const Block& b, const PathPoint& at) {
     if (actions_done_[static_cast<std::size_t>(b.index)]) return;
     actions_done_[static_cast<std::size_t>(b.index)] = true;
-    for (int i = 0; i < b.words.aux_count; ++i)
-      sink_.action({b.words.line, b.words.number, b.words.aux[static_cast<std::size_t>(i)], at});
+    for (int i = 0; i < b.words.aux_count; ++i) {
+      HeldRecord r;
+      r.owner = &b, r.seq = seq_of(b),
+      r.action = {b.words.line, b.words.number, b.words.aux[static_cast<std::size_t>(i)], at};
+      held_.hold(std::move(r));
+    }
+  }
+  int seq_of(const Block& b) const { return seq_[static_cast<std::size_t>(b.index)]; }
+  void hold(const Block& owner, const PathElement& e, ExactPath::Element exact) {
+    HeldRecord r;
+    r.owner = &owner, r.seq = seq_of(owner), r.element = e, r.exact = std::move(exact);
+    held_.hold(std::move(r));
+  }
+  // TRC-CD-1: with CDON in force the output of the last MD20240 traversing blocks waits (a later
+  // block may cut it); otherwise it goes out block by block.
+  void release_window(const Block& b) {
+    if (stopped_) return;
+    bool window = phase_ == Phase::kActive && b.state.collision == CollisionMode::kCdon && comp_;
+    held_.release_before(window ? traversing_ + 1 - md_.cutcom_maxnum_check_blocks : INT_MAX);
   }
 
   Origin origin(const Block& b, OriginKind kind) const {
@@ -99,9 +123,9 @@ class Reference {
     PathElement e;
     e.type = ElementType::kLine, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
     e.start = a, e.end = b, e.origin = origin(owner, kind);
-    path.add_line(owner.words.line, from, to, offset_of, comp_ ? comp_->side_radius : FT(0),
-                  comp_ ? comp_->axes : PlaneAxes{0, 1, 2});
-    sink_.element(e);
+    hold(owner, e,
+         ExactPath::line_element(owner.words.line, from, to, offset_of, comp_ ? comp_->side_radius : FT(0),
+                                 comp_ ? comp_->axes : PlaneAxes{0, 1, 2}));
   }
 
   // A circular element about `centre` (at the applicate of its start), radius `radius` in the plane;
@@ -114,8 +138,7 @@ class Reference {
     e.type = ElementType::kArc, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
     e.start = a, e.end = path.output(to), e.center = path.output(centre), e.ccw = ccw;
     e.origin = from_what;
-    path.add_circle(owner.words.line, from, to, centre, radius, axes);
-    sink_.element(e);
+    hold(owner, e, ExactPath::circle_element(owner.words.line, from, to, centre, radius, axes));
   }
 
   ExactPoint at(const CentrePoint& p) const { return ExactPoint::in_plane(p.plane, p.applicate, comp_->axes); }
@@ -915,6 +938,9 @@ class Reference {
   std::deque<Block> program_;
   const MachineData& md_;
   PathSink& sink_;
+  std::vector<int> seq_;  // per block: the ordinal of the last traversing block up to it (TRC-CD-1)
+  int traversing_ = 0;
+  HeldOutput held_;
   std::vector<bool> actions_done_;
   Phase phase_ = Phase::kOff;
   bool stopped_ = false;

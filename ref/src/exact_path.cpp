@@ -32,16 +32,16 @@ FT ExactPath::distance(const ExactPoint& a, const ExactPoint& b) const {
   return exact_root(dx * dx + dy * dy + dz * dz);
 }
 
-void ExactPath::add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourElement* offset_of,
-                         const FT& side_radius, PlaneAxes axes) {
+ExactPath::Element ExactPath::line_element(int line, const ExactPoint& from, const ExactPoint& to,
+                                           const ContourElement* offset_of, const FT& side_radius, PlaneAxes axes) {
   Element e{line, from, to, axes, std::nullopt, std::nullopt, side_radius};
   if (offset_of) e.offset_of = *offset_of;
-  elements_.push_back(std::move(e));
+  return e;
 }
 
-void ExactPath::add_circle(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
-                           const FT& side_radius, PlaneAxes axes) {
-  elements_.push_back(Element{line, from, to, axes, std::nullopt, centre, side_radius});
+ExactPath::Element ExactPath::circle_element(int line, const ExactPoint& from, const ExactPoint& to,
+                                             const ExactPoint& centre, const FT& side_radius, PlaneAxes axes) {
+  return Element{line, from, to, axes, std::nullopt, centre, side_radius};
 }
 
 void ExactPath::check(ExactCheckReport& report) const {

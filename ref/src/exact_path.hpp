@@ -25,11 +25,6 @@ class ExactPath {
   bool same(const ExactPoint& a, const ExactPoint& b) const;
   FT distance(const ExactPoint& a, const ExactPoint& b) const;
 
-  // Records an output line; `offset_of` names the programmed block for an equidistant.
-  void add_line(int line, const ExactPoint& from, const ExactPoint& to, const ContourElement* offset_of,
-                const FT& side_radius, PlaneAxes axes);
-  void add_circle(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
-                  const FT& side_radius, PlaneAxes axes);
   void check(ExactCheckReport& report) const;
 
   struct Element {
@@ -41,6 +36,13 @@ class ExactPath {
     FT side_radius;
   };
   const std::vector<Element>& elements() const { return elements_; }
+
+  // An output line; `offset_of` names the programmed block for an equidistant.
+  static Element line_element(int line, const ExactPoint& from, const ExactPoint& to, const ContourElement* offset_of,
+                              const FT& side_radius, PlaneAxes axes);
+  static Element circle_element(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
+                                const FT& side_radius, PlaneAxes axes);
+  void add(const Element& e) { elements_.push_back(e); }  // in output order
 
  private:
   std::vector<Element> elements_;

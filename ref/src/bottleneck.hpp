@@ -1,0 +1,41 @@
+// TRC-CD-1 (CDON) in exact arithmetic: pieces of the tool-centre path and where a block's entry
+// crosses a held-back piece. The engine decides which pieces are compared; this file holds the
+// geometry.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "equidistant.hpp"
+#include "exact_angle.hpp"
+
+namespace cutcom::ref {
+
+// A piece of the tool-centre path in the plane: a segment from a to b, or a circle about `centre`
+// from a through `sweep` in the sense `sense` (a full turn when a = b).
+struct PathPiece {
+  bool arc = false;
+  Point a, b, centre;
+  FT radius;
+  int sense = 1;
+  ExactAngle sweep;
+
+  static PathPiece segment(const Point& from, const Point& to);
+  static PathPiece circle(const Point& from, const Point& to, const Point& centre, const FT& radius, int sense,
+                          bool full_turn = false);
+  Carrier<Kernel> carrier() const;
+};
+
+// Where the entry meets a held piece: the earliest point along the held piece on both, which
+// entry piece it lies on, and its least slack (mm units) to the pieces' ends (and, with a circle,
+// the depth of the carriers' overlap). `near_miss`: the largest (negative) slack of the carriers'
+// common points that lie off a piece, for the decision's margin.
+struct PieceCrossing {
+  std::optional<Point> point;
+  int entry_piece = -1;
+  FT slack;
+  std::optional<FT> near_miss;
+};
+PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry);
+
+}  // namespace cutcom::ref
