@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "bottleneck.hpp"
 #include "edge_strategy.hpp"
 #include "plane_geometry.hpp"
 
@@ -35,6 +36,7 @@ struct BlockCopy {
   bool kont = false;  // KONT in force (approach and retraction)
   bool g451 = false;  // G451 in force
   bool cdon = false;  // CDON in force
+  int seq = 0;        // ordinal of the last traversing block up to this one (TRC-CD-1 window)
   EdgeStrategy edge_strategy = EdgeStrategy::kG462;
 
   static BlockCopy of(const Block& b) {
@@ -68,7 +70,14 @@ double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ?
 struct Engine::State {
   enum class Phase { kOff, kApproach, kActive };
 
-  State(const MachineData& m, PathSink& out) : md(m), sink(out) {}
+  State(const MachineData& m, PathSink& out) : md(m), sink(out) {
+    // TRC-CD-1: what the window can hold: MD20240 + 2 traversing blocks, each with up to MD20250
+    // blocks without plane motion, each block at most three elements and its actions.
+    std::size_t capacity = static_cast<std::size_t>(m.cutcom_maxnum_check_blocks + 2) *
+                           static_cast<std::size_t>(m.cutcom_maxnum_dummy_blocks + 1) * (3 + BlockWords::kMaxAux);
+    held.reserve(capacity);
+    held_scratch.reserve(capacity);
+  }
 
   const MachineData& md;
   PathSink& sink;
@@ -109,6 +118,57 @@ struct Engine::State {
   std::vector<BlockCopy> skipped;
   int examined = 0, dummy_run = 0;
 
+  // TRC-CD-1: output waits here, in path order, until the MD20240 window has passed it (under
+  // CDON); a bottleneck cut removes what follows the cut point. Reserved once.
+  struct HeldRecord {
+    int seq = 0;  // the owner's traversing ordinal
+    bool is_element = false;
+    PathElement element;
+    double radius = 0;  // arcs: radius in the plane
+    ActionEvent action;
+    int owner_line = 0;  // the block it belongs to, to run it again at a cut
+    std::optional<std::int64_t> owner_number;
+    PathPoint owner_start, owner_end;
+    bool owner_rapid = false;
+    Decimal owner_feed;
+  };
+  std::vector<HeldRecord> held, held_scratch;
+  int traversing = 0;
+  BlockCopy prev_block;  // the last traversing block with compensation (TRC-CD-1)
+  bool has_prev = false;
+
+  BlockCopy copy_of(const Block& b) const {
+    BlockCopy c = BlockCopy::of(b);
+    c.seq = traversing;
+    return c;
+  }
+  HeldRecord record_of(const BlockCopy& owner) const {
+    HeldRecord k;
+    k.seq = owner.seq, k.owner_line = owner.line, k.owner_number = owner.number, k.owner_start = owner.start;
+    k.owner_end = owner.end, k.owner_rapid = owner.rapid, k.owner_feed = owner.feed;
+    return k;
+  }
+  // Releases the records of traversing blocks before `seq`.
+  void release_before(int seq) {
+    std::size_t n = 0;
+    for (; n < held.size() && held[n].seq < seq; ++n) {
+      if (held[n].is_element)
+        sink.element(held[n].element);
+      else
+        sink.action(held[n].action);
+    }
+    held.erase(held.begin(), held.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  void release_all() { release_before(std::numeric_limits<int>::max()); }
+  // With CDON in force the output of the last MD20240 traversing blocks waits; otherwise it goes
+  // out block by block.
+  void release_window(const Block& b) {
+    if (stopped) return;
+    bool window = phase == Phase::kActive && b.state.collision == CollisionMode::kCdon;
+    if (!window) return release_all();
+    release_before(traversing + 1 - md.cutcom_maxnum_check_blocks);
+  }
+
   // --- plane <-> workpiece coordinates -------------------------------------------------------
   Vec2 ab(const PathPoint& p) const { return {pick(p, axes.abscissa), pick(p, axes.ordinate)}; }
   double h(const PathPoint& p) const { return pick(p, axes.applicate); }
@@ -132,13 +192,18 @@ struct Engine::State {
   }
   void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
     flush_approach();  // ALARM-1: what was decided before the alarm is output
+    release_all();
     sink.alarm(make_alarm(number, line, block, clause));
     stopped = true;
   }
   void actions(BlockCopy& b, const PathPoint& at) {
     if (b.actions_done) return;
     b.actions_done = true;
-    for (int i = 0; i < b.aux_count; ++i) sink.action({b.line, b.number, b.aux[static_cast<std::size_t>(i)], at});
+    for (int i = 0; i < b.aux_count; ++i) {
+      HeldRecord rec = record_of(b);
+      rec.action = {b.line, b.number, b.aux[static_cast<std::size_t>(i)], at};
+      held.push_back(rec);
+    }
   }
   Origin origin(const BlockCopy& b, OriginKind kind) const {
     Origin o;
@@ -151,7 +216,9 @@ struct Engine::State {
     PathElement e;
     e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
     e.origin = origin(owner, kind);
-    sink.element(e);
+    HeldRecord rec = record_of(owner);
+    rec.is_element = true, rec.element = e;
+    held.push_back(rec);
   }
 
   void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
@@ -160,7 +227,9 @@ struct Engine::State {
     PathElement e;
     e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
     e.feed = owner.feed, e.origin = from_what;
-    sink.element(e);
+    HeldRecord rec = record_of(owner);
+    rec.is_element = true, rec.element = e, rec.radius = norm(ab(from) - ab(centre));
+    held.push_back(rec);
   }
 
   Element element_of(const BlockCopy& c) const {
@@ -187,7 +256,7 @@ struct Engine::State {
   // TRC-DUMMY-2: at most MD20250 of them between two traversing blocks.
   void queue_dummy(const Block& b) {
     if (dummy_count == md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
-    dummies[static_cast<std::size_t>(dummy_count++)] = BlockCopy::of(b);
+    dummies[static_cast<std::size_t>(dummy_count++)] = copy_of(b);
   }
 
   // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
@@ -325,7 +394,7 @@ struct Engine::State {
         return select(b);
       }
     }
-    BlockCopy c = BlockCopy::of(b);
+    BlockCopy c = copy_of(b);
     if (!c.arc) return line(c, c.start, c.end, OriginKind::kProgrammed, c.rapid);
     // A programmed circle about its (corrected, ARC-CENTRE-1) centre.
     axes = plane_axes(b.state.plane);
@@ -345,7 +414,7 @@ struct Engine::State {
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
     if (!close_open(end, b.words.line, b.words.number)) return;
     run_dummies(end);
-    PathPoint tool = xyz(end, h(BlockCopy::of(b).start));
+    PathPoint tool = xyz(end, h(copy_of(b).start));
     select(b);
     selection.start = tool;  // the approach starts where the tool is
     selection_from_tool = true;
@@ -367,8 +436,9 @@ struct Engine::State {
     decide("TRC-RADIUS-2", b.words.line, eff.sign() < 0 ? "negative" : eff.sign() == 0 ? "zero" : "positive");
     s = eff.sign() < 0 ? -sign : sign;
     r = std::fabs(eff.to_double());
-    selection = BlockCopy::of(b);
+    selection = copy_of(b);
     selection_from_tool = false;
+    has_prev = false;
     dummy_count = 0;
     phase = Phase::kApproach;
   }
@@ -388,7 +458,8 @@ struct Engine::State {
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "change of compensation side G41/G42 before the first contour block");
     if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
-    BlockCopy first = BlockCopy::of(b);
+    BlockCopy first = copy_of(b);
+    prev_block = first, has_prev = true;
     Element e = element_of(first);
     double radius = 0;
     if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
@@ -517,6 +588,12 @@ struct Engine::State {
   // --- phase: compensation active --------------------------------------------------------------
   void active(const Block& b) {
     if (!check_active_block(b)) return;
+    if (b.state.side == side && b.moves_in_plane()) {
+      bool had_prev = has_prev;
+      BlockCopy before = prev_block;
+      prev_block = copy_of(b), has_prev = true;
+      if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(prev_block, before)) return;
+    }
     if (looking) return look_ahead(b);
     if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
     if (b.state.side == Side::kOff) {
@@ -533,7 +610,7 @@ struct Engine::State {
   Carrier carrier_of(const Element& e, double radius) const { return fast::carrier_of(e, radius, s * r); }
 
   void corner(const Block& b) {
-    const BlockCopy copy = BlockCopy::of(b);  // converted once per block
+    const BlockCopy copy = copy_of(b);  // converted once per block
     Element next = element_of(copy);
     double next_radius = 0;
     if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
@@ -618,7 +695,7 @@ struct Engine::State {
   void start_look_ahead(const Block& too_short) {
     for (int i = 0; i < dummy_count; ++i) skip(dummies[static_cast<std::size_t>(i)]);
     dummy_count = 0;
-    skip(BlockCopy::of(too_short));
+    skip(copy_of(too_short));
     examined = 1, dummy_run = 0;
     looking = true;
     if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, too_short.words.line, too_short.words.number);
@@ -632,11 +709,11 @@ struct Engine::State {
     }
     if (!b.moves_in_plane()) {
       if (++dummy_run > md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
-      return skip(BlockCopy::of(b));
+      return skip(copy_of(b));
     }
     dummy_run = 0;
     ++examined;
-    BlockCopy c = BlockCopy::of(b);
+    BlockCopy c = copy_of(b);
     Element cand = element_of(c);
     double radius = 0;
     if (!equidistant_exists(b, cand, radius)) return pass_over(c);
@@ -669,7 +746,7 @@ struct Engine::State {
     if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
-    BlockCopy d = BlockCopy::of(b);
+    BlockCopy d = copy_of(b);
     const BlockCopy* last_block = nullptr;
     for (const BlockCopy& k : skipped)
       if (k.delta[static_cast<std::size_t>(axes.abscissa)] != 0 ||
@@ -738,6 +815,173 @@ struct Engine::State {
     open_element(block, element, hit, c.radius);
   }
 
+  // --- CDON: bottleneck detection (TRC-CD-1, bottleneck.cpp) ------------------------------------
+  // Block m's entry, built provisionally from its predecessor: the transition circle at an outer
+  // corner (whatever G450/G451 say), then its equidistant from its normal start (from the inner
+  // corner's intersection); none if that lies beyond its end or the equidistant collapses.
+  struct Entry {
+    Element element;
+    double radius = 0;
+    Vec2 vertex, normal_start;
+    int before_line = 0;  // the predecessor, which names the corner
+    std::optional<std::int64_t> before_number;
+    bool circle = false;  // pieces[0] is the transition circle
+    PathPiece pieces[2];
+    int count = 0;
+  };
+  bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) const {
+    en.element = element_of(m);
+    en.before_line = before.line, en.before_number = before.number;
+    const Element& next = en.element;
+    double sr = s * r;
+    if (next.arc) {
+      en.radius = next.equidistant_radius(sr);
+      if (!(en.radius > 0)) return false;
+    }
+    en.normal_start = Element::offset(next.start, next.start_tangent(), sr);
+    Vec2 end = Element::offset(next.end, next.end_tangent(), sr);
+    auto equidistant_from = [&](Vec2 from, bool full) {
+      return next.arc ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
+                      : PathPiece::segment(from, end);
+    };
+    Element prev = element_of(before);
+    double prev_radius = prev.arc ? prev.equidistant_radius(sr) : 0;
+    en.vertex = prev.end;
+    Corner c = classify_corner(prev.end_tangent(), next.start_tangent(), s);
+    if (!prev.arc && !next.arc) decide_kind_exactly(before, m, c);
+    if (prev.arc && !(prev_radius > 0)) c.kind = Corner::Kind::kTangent;
+    en.count = 0;
+    if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) {
+      Vec2 from = Element::offset(prev.end, prev.end_tangent(), sr);
+      en.pieces[en.count++] = PathPiece::circle(from, en.normal_start, prev.end, r, -s);
+      en.circle = true;
+    }
+    if (c.kind != Corner::Kind::kInner) {
+      en.pieces[en.count++] = equidistant_from(en.normal_start, next.full);
+      return true;
+    }
+    Vec2 x;
+    if (!nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.end,
+                              next.start_tangent(), x))
+      return false;
+    if (extent_of(next, en.radius, x).left < 0) return false;
+    en.pieces[en.count++] = equidistant_from(x, false);
+    return true;
+  }
+
+  PathPiece piece_of(const HeldRecord& rec) const {
+    const PathElement& e = rec.element;
+    Vec2 a = ab(e.start), b = ab(e.end);
+    if (e.type == ElementType::kLine) return PathPiece::segment(a, b);
+    return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
+  }
+  PathPiece open_piece() const {
+    Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+    if (!open_el.arc) return PathPiece::segment(open_start, end);
+    Vec2 normal_start = Element::offset(open_el.start, open_el.start_tangent(), s * r);
+    bool full = open_el.full && open_start.a == normal_start.a && open_start.b == normal_start.b;
+    return PathPiece::circle(open_start, end, open_el.centre, open_radius, open_el.sense, full);
+  }
+  static bool is_candidate(const HeldRecord& rec) {
+    return rec.is_element &&
+           (rec.element.origin.kind == OriginKind::kOffset || rec.element.origin.kind == OriginKind::kTransitionCircle);
+  }
+
+  // TRC-CD-1: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
+  // and, in the look-ahead, the open element; the earliest block crossed wins, on it the earliest
+  // point. True: the path was cut there.
+  bool bottleneck(const BlockCopy& m, const BlockCopy& before) {
+    if (r == 0) return false;  // no width: nothing to collide
+    int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
+    Entry entry;
+    int state = 0;  // 0: not built, 1: built, -1: none
+    bool has_near = false;
+    double near = 0;
+    auto try_piece = [&](const PathPiece& held_piece, PieceCrossing& c) {
+      if (state == 0) state = entry_of(m, before, entry) ? 1 : -1;
+      if (state < 0) return false;
+      c = piece_crossing(held_piece, entry.pieces, entry.count);
+      if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
+      return c.entry_piece >= 0;
+    };
+    PieceCrossing c;
+    for (std::size_t i = 0; i < held.size(); ++i) {
+      const HeldRecord& rec = held[i];
+      if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
+      if (try_piece(piece_of(rec), c)) return cut(m, entry, static_cast<int>(i), c, has_near, near), true;
+      if (state < 0) return false;
+    }
+    if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), c))
+      return cut(m, entry, -1, c, has_near, near), true;
+    if (state > 0) decide("TRC-CD-1", m.line, "none", has_near ? near : -std::numeric_limits<double>::infinity());
+    return false;
+  }
+
+  // TRC-CD-1 (with TRC-LOOK-3): the crossed block ends at the crossing; the blocks after it lose
+  // their plane motion (the rest runs there, in programmed order); block m goes on along its entry.
+  void cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, bool has_near, double near) {
+    const Vec2 x = c.point;
+    double margin = has_near ? std::min(c.slack, -near) : c.slack;
+    decide("TRC-CD-1", m.line, "cut", margin);
+    int last_run = -1;  // the last block run again from held records
+    if (record >= 0) {
+      HeldRecord& rec = held[static_cast<std::size_t>(record)];
+      const HeldRecord crossed = rec;
+      rec.element.end = xyz(x, h(rec.element.end));
+      const PathPoint end = rec.element.end;
+      held_scratch.assign(held.begin() + record + 1, held.end());
+      held.erase(held.begin() + record + 1, held.end());
+      const PathPoint& st = rec.element.start;
+      if (st.x == end.x && st.y == end.y && st.z == end.z) held.erase(held.begin() + record);
+      bool rest = open.line == crossed.owner_line;  // its equidistant was still open
+      for (const HeldRecord& k : held_scratch) rest = rest || k.owner_line == crossed.owner_line;
+      if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
+      for (std::size_t i = 0; i < held_scratch.size(); ++i) {
+        const HeldRecord& k = held_scratch[i];
+        if (k.owner_line == crossed.owner_line) continue;
+        if (k.owner_line != last_run) {
+          if (last_run >= 0) infeed_of(held_scratch[i - 1], x);
+          decide("TRC-LOOK-3", k.owner_line, "skipped");
+          last_run = k.owner_line;
+        }
+        if (!k.is_element) {
+          HeldRecord a = k;
+          a.action.at = xyz(x, h(k.owner_start));
+          held.push_back(a);
+        }
+      }
+      if (last_run >= 0) infeed_of(held_scratch.back(), x);
+      if (open.line != crossed.owner_line && open.line != last_run) skip_at(open, x);
+    } else {
+      looking = false;
+      if (!close_open(x, m.line, m.number)) return;
+    }
+    for (BlockCopy& k : skipped) skip_at(k, x);
+    skipped.clear();
+    for (int i = 0; i < dummy_count; ++i) skip_at(dummies[static_cast<std::size_t>(i)], x);
+    dummy_count = 0;
+    looking = false;
+    kont_first = false;
+    bool on_circle = en.circle && c.entry_piece == 0 && !(x.a == en.normal_start.a && x.b == en.normal_start.b);
+    if (!on_circle) return open_element(m, en.element, x, en.radius);
+    double hv = h(m.start);
+    Origin corner;
+    corner.kind = OriginKind::kTransitionCircle, corner.line = en.before_line, corner.block = en.before_number;
+    corner.next_line = m.line, corner.next_block = m.number;
+    BlockCopy owner = m;
+    arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, corner);
+    open_element(owner, en.element, en.normal_start, en.radius);
+  }
+  // A block run again at a cut, from its held record: its applicate motion at x (its actions were
+  // put back before).
+  void infeed_of(const HeldRecord& k, const PathPoint& from, const PathPoint& to) {
+    BlockCopy owner;
+    owner.line = k.owner_line, owner.number = k.owner_number, owner.rapid = k.owner_rapid, owner.feed = k.owner_feed;
+    owner.actions_done = true, owner.seq = k.seq;
+    line(owner, from, to, OriginKind::kInfeed, owner.rapid);
+  }
+  void infeed_of(const HeldRecord& k, Vec2 x) { infeed_of(k, xyz(x, h(k.owner_start)), xyz(x, h(k.owner_end))); }
+
   // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points; it
   // belongs to the second block.
   void transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
@@ -762,7 +1006,7 @@ struct Engine::State {
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
     decide("TRC-DESEL-1", b.words.line, "deselected");
-    BlockCopy last = BlockCopy::of(b);
+    BlockCopy last = copy_of(b);
     if (last.kont) {
       Vec2 p = ab(last.end);
       Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt};
@@ -870,19 +1114,25 @@ void Engine::push(const Block& b) {
   if (st.stopped) return;
   if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
     throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
+  if (b.moves_in_plane()) ++st.traversing;
   if (b.is_arc() && !st.arc_is_consistent(b)) return;
   switch (st.phase) {
     case State::Phase::kOff:
-      return st.off(b);
+      st.off(b);
+      break;
     case State::Phase::kApproach:
-      return st.approach(b);
+      st.approach(b);
+      break;
     case State::Phase::kActive:
-      return st.active(b);
+      st.active(b);
+      break;
   }
+  st.release_window(b);
 }
 
 void Engine::finish() {
   if (!state_->stopped) state_->end_of_program();
+  state_->release_all();
 }
 
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink) {

@@ -2,10 +2,12 @@
 // from equidistant.hpp (exact constructions) and contour_element / contour_angle (exact predicates).
 #include "cutcom/ref/engine.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <deque>
 #include <optional>
 
+#include "bottleneck.hpp"
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
 #include "edge_strategy.hpp"
@@ -250,6 +252,7 @@ class Reference {
     comp_ = Compensation{b.state.plane,          plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
                          ActiveEdge::of(b.state)};
     selection_ = &b;
+    prev_block_ = nullptr;
     dummies_.clear();
     phase_ = Phase::kApproach;
   }
@@ -319,6 +322,7 @@ class Reference {
 
   // TRC-APPR-NORM-1 / TRC-KONT-*: the move onto the contour from the start position.
   void approach(const Block& first_block) {
+    prev_block_ = &first_block;
     ContourElement first = element_of(first_block);
     FT radius;
     if (!equidistant_exists(first, radius)) return raise(10751, first_block);  // nothing before it to meet
@@ -447,6 +451,11 @@ class Reference {
   // --- compensation active -----------------------------------------------------------------------
   void compensation_active(const Block& b) {
     if (!still_compensable(b)) return;
+    if (b.state.side == comp_->side && b.moves_in_plane()) {
+      const Block* before = prev_block_;
+      prev_block_ = &b;
+      if (b.state.collision == CollisionMode::kCdon && before && bottleneck(b, *before)) return;
+    }
     if (looking_) return look_ahead(b);
     if (b.state.side != Side::kOff && b.state.side != comp_->side) return change_side(b);
     if (b.state.side == Side::kOff) {
@@ -809,6 +818,169 @@ class Reference {
     open(*c.block, *c.element, *hit, c.radius);
   }
 
+  // --- CDON: bottleneck detection (TRC-CD-1, bottleneck.cpp) ------------------------------------
+  // A block's entry, built provisionally from its predecessor: the transition circle at an outer
+  // corner (whatever G450/G451 say), then its equidistant from its normal start (from the inner
+  // corner's intersection); none if that lies beyond its normal end or the equidistant collapses.
+  struct Entry {
+    ContourElement element;
+    FT radius;
+    Point vertex, normal_start;
+    const Block* before = nullptr;
+    bool circle = false;  // pieces[0] is the transition circle
+    std::vector<PathPiece> pieces;
+  };
+  std::optional<Entry> entry_of(const Block& m, const Block& before) const {
+    Entry en;
+    en.element = element_of(m);
+    en.before = &before;
+    const ContourElement& next = en.element;
+    const FT& sr = comp_->side_radius;
+    if (next.is_arc()) {
+      en.radius = equidistant_radius<Kernel>(next.radius, next.sense, sr);
+      if (CGAL::sign(en.radius) != CGAL::POSITIVE) return std::nullopt;
+    }
+    en.normal_start = equidistant_point<Kernel>(next.a, next.start_normal(), sr);
+    Point end = equidistant_point<Kernel>(next.b, next.end_normal(), sr);
+    auto equidistant_from = [&](const Point& from, bool full) {
+      return next.is_arc() ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
+                           : PathPiece::segment(from, end);
+    };
+    ContourElement prev = element_of(before);
+    FT prev_radius;
+    if (prev.is_arc()) prev_radius = equidistant_radius<Kernel>(prev.radius, prev.sense, sr);
+    en.vertex = prev.b;
+    CornerKind kind = classify_corner(prev.end_dir, next.start_dir, comp_->s);
+    if (prev.is_arc() && CGAL::sign(prev_radius) != CGAL::POSITIVE) kind = CornerKind::kTangent;
+    if (kind == CornerKind::kOuter || kind == CornerKind::kReversal) {
+      Point from = equidistant_point<Kernel>(prev.b, prev.end_normal(), sr);
+      en.pieces.push_back(PathPiece::circle(from, en.normal_start, prev.b, leaf(comp_->radius), -comp_->s));
+      en.circle = true;
+    }
+    if (kind != CornerKind::kInner) {
+      en.pieces.push_back(equidistant_from(en.normal_start, next.full_circle));
+      return en;
+    }
+    std::optional<Point> x =
+        nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.b, next.start_dir);
+    if (!x || extent_of(next, en.radius, *x).after_end == CGAL::NEGATIVE) return std::nullopt;
+    en.pieces.push_back(equidistant_from(*x, false));
+    return en;
+  }
+
+  // A held-back element as a piece of the plane path.
+  static PathPiece piece_of(const HeldRecord& r) {
+    const ExactPath::Element& e = r.exact;
+    Point a = e.start.plane(e.axes), b = e.end.plane(e.axes);
+    if (r.element->type == ElementType::kLine) return PathPiece::segment(a, b);
+    return PathPiece::circle(a, b, e.centre->plane(e.axes), CGAL::abs(e.side_radius), r.element->ccw ? 1 : -1, a == b);
+  }
+  // The open element from its start point to its normal end.
+  PathPiece open_piece() const {
+    const ContourElement& e = *open_;
+    Point end = equidistant_point<Kernel>(e.b, e.end_normal(), comp_->side_radius);
+    if (!e.is_arc()) return PathPiece::segment(open_start_, end);
+    return PathPiece::circle(open_start_, end, e.centre, open_radius_, e.sense, e.full_circle && open_at_normal_start_);
+  }
+
+  // TRC-CD-1: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
+  // and, in the look-ahead, the open element; the earliest block that it crosses wins, on it the
+  // earliest point. True: the path was cut there. Margin: the crossing's least slack, or the
+  // largest near miss.
+  bool bottleneck(const Block& m, const Block& before) {
+    if (comp_->radius.sign() == 0) return false;  // no width: nothing to collide
+    int lo = seq_of(m) - md_.cutcom_maxnum_check_blocks, hi = seq_of(m) - 2;
+    std::optional<Entry> entry;
+    std::optional<FT> near;
+    bool compared = false;
+    auto try_piece = [&](const PathPiece& held) -> std::optional<PieceCrossing> {
+      if (!entry && !compared) entry = entry_of(m, before);
+      compared = true;
+      if (!entry) return std::nullopt;
+      PieceCrossing c = piece_crossing(held, entry->pieces);
+      if (c.near_miss && (!near || CGAL::compare(*c.near_miss, *near) == CGAL::LARGER)) near = c.near_miss;
+      if (!c.point) return std::nullopt;
+      return c;
+    };
+    std::deque<HeldRecord>& records = held_.records();
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      const HeldRecord& r = records[i];
+      if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
+      if (std::optional<PieceCrossing> c = try_piece(piece_of(r))) return cut(m, *entry, i, *c, near), true;
+      if (compared && !entry) return false;
+    }
+    if (looking_ && seq_of(*open_block_) >= lo && seq_of(*open_block_) <= hi)
+      if (std::optional<PieceCrossing> c = try_piece(open_piece())) return cut(m, *entry, std::nullopt, *c, near), true;
+    if (entry) decide("TRC-CD-1", m.words.line, "none", near ? exact_mm(*near) : std::string("-inf"));
+    return false;
+  }
+
+  // TRC-CD-1 (with TRC-LOOK-3): the path is cut at the crossing. The crossed block ends there; the
+  // blocks after it lose their plane motion (the rest runs at the point, in programmed order);
+  // block m goes on along its entry: the rest of the circle, then its equidistant.
+  void cut(const Block& m, const Entry& en, std::optional<std::size_t> record, const PieceCrossing& c,
+           const std::optional<FT>& near) {
+    const Point x = *c.point;
+    FT margin = c.slack;
+    if (near && CGAL::compare(-*near, margin) == CGAL::SMALLER) margin = -*near;
+    decide("TRC-CD-1", m.words.line, "cut", exact_mm(margin));
+    std::vector<const Block*> passed;
+    auto pass = [&](const Block* b) {
+      for (const Block* p : passed)
+        if (p == b) return;
+      passed.push_back(b);
+    };
+    if (record) {
+      std::deque<HeldRecord>& records = held_.records();
+      HeldRecord& r = records[*record];
+      const Block* crossed = r.owner;
+      ExactPoint end = r.exact.end;
+      FT* coords[3] = {&end.x, &end.y, &end.z};
+      *coords[comp_->axes.abscissa] = x.x(), *coords[comp_->axes.ordinate] = x.y();
+      r.exact.end = end, r.element->end = path.output(end);
+      bool rest = false;  // the crossed block had more after the cut element
+      for (std::size_t i = *record + 1; i < records.size(); ++i) {
+        const Block* owner = records[i].owner;
+        if (!records[i].element) actions_done_[static_cast<std::size_t>(owner->index)] = false;  // run again at x
+        if (owner == crossed)
+          rest = true;
+        else
+          pass(owner);
+      }
+      records.erase(records.begin() + static_cast<std::ptrdiff_t>(*record) + 1, records.end());
+      if (path.same(r.exact.start, r.exact.end)) records.erase(records.begin() + static_cast<std::ptrdiff_t>(*record));
+      if (open_block_ == crossed)
+        rest = true;  // its equidistant was still open
+      else
+        pass(open_block_);
+      if (rest) {  // the crossed block's applicate motion still to come
+        ExactPoint to = end;
+        FT* t[3] = {&to.x, &to.y, &to.z};
+        *t[comp_->axes.applicate] = leaf(coord(crossed->end, comp_->axes.applicate));
+        emit_line(*crossed, end, to, OriginKind::kInfeed);
+      }
+    } else {
+      looking_ = false;
+      if (!close_open(x, m)) return;
+    }
+    for (const Block* d : skipped_) pass(d);
+    for (const Block* d : dummies_) pass(d);
+    std::sort(passed.begin(), passed.end(), [](const Block* a, const Block* b) { return a->index < b->index; });
+    skipped_ = std::move(passed);
+    dummies_.clear();
+    looking_ = false;
+    kont_first_ = false;
+    run_skipped(x);
+    bool on_circle = en.circle && c.entry_piece == 0 && x != en.normal_start;
+    if (!on_circle) return open(m, en.element, x, en.radius, x == en.normal_start);
+    Decimal h = coord(m.start, comp_->axes.applicate);
+    Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
+    corner.next_line = m.words.line, corner.next_block = m.words.number;
+    emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
+             comp_->axes);
+    open(m, en.element, en.normal_start, en.radius, true);
+  }
+
   // TRC-G450-1: a circle of radius r about the programmed corner from the normal end point of the
   // first equidistant to the normal start point of the second; it belongs to the second block.
   void transition_circle(const Block& next_block, const ContourElement& next, const FT& next_radius,
@@ -947,6 +1119,7 @@ class Reference {
   bool d0_noticed_ = false;
   std::optional<Compensation> comp_;
   const Block* selection_ = nullptr;
+  const Block* prev_block_ = nullptr;         // the last traversing block with compensation (TRC-CD-1)
   std::optional<ExactPoint> selection_from_;  // set after a side change (TRC-SIDE-1)
   std::vector<const Block*> dummies_;
   // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,

@@ -1,0 +1,93 @@
+#include "bottleneck.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+namespace cutcom::fast {
+
+namespace {
+constexpr double kTurn = 2 * std::numbers::pi;
+
+// The rotation in [0, 2 pi) from `from` to `to` in the sense `sense`.
+double rotation(Vec2 from, Vec2 to, int sense) {
+  double a = sense * std::atan2(cross(from, to), dot(from, to));
+  return a < 0 ? a + kTurn : a;
+}
+
+Carrier carrier(const PathPiece& p) {
+  Carrier c;
+  c.circle = p.arc;
+  c.point = p.arc ? p.centre : p.a;
+  if (p.arc)
+    c.radius = p.radius;
+  else
+    c.direction = p.b - p.a;
+  return c;
+}
+
+struct OnPiece {
+  bool on = false;
+  double slack = 0, position = 0;
+};
+OnPiece locate(const PathPiece& piece, Vec2 p) {
+  OnPiece o;
+  if (!piece.arc) {
+    Vec2 d = piece.b - piece.a;
+    double length = norm(d);
+    double along = dot(p - piece.a, d) / length, left = length - along;
+    o.position = along, o.slack = std::min(along, left), o.on = o.slack >= 0;
+    return o;
+  }
+  o.position = rotation(piece.a - piece.centre, p - piece.centre, piece.sense);
+  o.on = piece.sweep - o.position >= 0;
+  double nearer = std::min(norm(p - piece.a), norm(p - piece.b));
+  o.slack = o.on ? nearer : -nearer;
+  return o;
+}
+}  // namespace
+
+PathPiece PathPiece::segment(Vec2 from, Vec2 to) {
+  PathPiece p;
+  p.a = from, p.b = to;
+  return p;
+}
+
+PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn) {
+  PathPiece p;
+  p.arc = true, p.a = from, p.b = to, p.centre = centre, p.radius = radius, p.sense = sense;
+  p.sweep = full_turn ? kTurn : rotation(from - centre, to - centre, sense);
+  return p;
+}
+
+// TRC-CD-1: the earliest point along `held` that lies on one of the entry's pieces.
+PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count) {
+  PieceCrossing out;
+  if (!held.arc && held.a.a == held.b.a && held.a.b == held.b.b) return out;
+  Carrier h = carrier(held);
+  bool found = false;
+  double best = 0;
+  for (int i = 0; i < count; ++i) {
+    const PathPiece& e = entry[i];
+    if (!e.arc && e.a.a == e.b.a && e.a.b == e.b.b) continue;
+    Carrier c = carrier(e);
+    bool has_depth = h.circle || c.circle;
+    double depth = has_depth ? -carrier_gap(h, c) : 0;
+    Vec2 xs[2];
+    int n = carrier_intersections(h, c, xs);
+    for (int k = 0; k < n; ++k) {
+      OnPiece on_held = locate(held, xs[k]), on_entry = locate(e, xs[k]);
+      double slack = std::min(on_held.slack, on_entry.slack);
+      if (has_depth) slack = std::min(slack, depth);
+      if (!on_held.on || !on_entry.on) {
+        if (!out.has_near_miss || slack > out.near_miss) out.near_miss = slack, out.has_near_miss = true;
+        continue;
+      }
+      if (found && on_held.position >= best) continue;
+      found = true, best = on_held.position;
+      out.point = xs[k], out.entry_piece = i, out.slack = slack;
+    }
+  }
+  return out;
+}
+
+}  // namespace cutcom::fast

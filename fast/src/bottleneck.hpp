@@ -1,0 +1,33 @@
+// TRC-CD-1 (CDON) in double precision: pieces of the tool-centre path and where a block's entry
+// crosses a held-back piece (see ref/src/bottleneck.hpp for the rule; no code is shared).
+#pragma once
+
+#include "plane_geometry.hpp"
+
+namespace cutcom::fast {
+
+// A segment from a to b, or a circle about `centre` from a through `sweep` in the sense `sense`.
+struct PathPiece {
+  bool arc = false;
+  Vec2 a, b, centre;
+  double radius = 0;
+  int sense = 1;
+  double sweep = 0;  // [0, 2 pi]
+
+  static PathPiece segment(Vec2 from, Vec2 to);
+  static PathPiece circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn = false);
+};
+
+// The earliest point along `held` on one of the entry's `count` pieces: `entry_piece` its index
+// (-1: none), `slack` its least slack; `near_miss` (if has_near_miss) the largest slack of the
+// carriers' common points off a piece.
+struct PieceCrossing {
+  Vec2 point;
+  int entry_piece = -1;
+  double slack = 0;
+  bool has_near_miss = false;
+  double near_miss = 0;
+};
+PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count);
+
+}  // namespace cutcom::fast
