@@ -59,7 +59,7 @@ PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int 
   return p;
 }
 
-// TRC-CD-1: the earliest point along `held` that lies on one of the entry's pieces.
+// TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
 PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count) {
   PieceCrossing out;
   if (!held.arc && held.a.a == held.b.a && held.a.b == held.b.b) return out;

@@ -1,4 +1,4 @@
-// TRC-CD-1 (CDON) in double precision: pieces of the tool-centre path and where a block's entry
+// TRC-CD-2/3 (CDON) in double precision: pieces of the tool-centre path and where a block's entry
 // crosses a held-back piece (see ref/src/bottleneck.hpp for the rule; no code is shared).
 #pragma once
 

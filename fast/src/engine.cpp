@@ -754,7 +754,7 @@ struct Engine::State {
         last_block = &k;
     Element last = element_of(*last_block);
     if (d.cdon)
-      throw UnsupportedError(  // TRC-CD-1 (planned)
+      throw UnsupportedError(  // TRC-CD-5 (planned)
           b.words.line, "CDON search of G460/G461/G462 over earlier blocks");
     decide("TRC-DESEL-1", d.line, "deselected");
     if (d.kont) {  // TRC-KONT-1
@@ -789,7 +789,7 @@ struct Engine::State {
   // approach line ends at the hit on c's equidistant, the first block and those between are skipped.
   void approach_edge(const Candidate& c) {
     if (selection.cdon)
-      throw UnsupportedError(  // TRC-CD-1 (planned)
+      throw UnsupportedError(  // TRC-CD-5 (planned)
           selection.line, "CDON search of G460/G461/G462 over later blocks");
     decide("TRC-EDGE-1", selection.line, g_code(selection.edge_strategy));
     const Element& first = open_el;
@@ -815,8 +815,8 @@ struct Engine::State {
     open_element(block, element, hit, c.radius);
   }
 
-  // --- CDON: bottleneck detection (TRC-CD-1, bottleneck.cpp) ------------------------------------
-  // Block m's entry, built provisionally from its predecessor: the transition circle at an outer
+  // --- CDON: bottleneck detection (TRC-CD-*, bottleneck.cpp) ------------------------------------
+  // TRC-CD-2: block m's entry, built provisionally from its predecessor: the transition circle at an outer
   // corner (whatever G450/G451 say), then its equidistant from its normal start (from the inner
   // corner's intersection); none if that lies beyond its end or the equidistant collapses.
   struct Entry {
@@ -887,7 +887,7 @@ struct Engine::State {
            (rec.element.origin.kind == OriginKind::kOffset || rec.element.origin.kind == OriginKind::kTransitionCircle);
   }
 
-  // TRC-CD-1: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
+  // TRC-CD-3: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
   // and, in the look-ahead, the open element; the earliest block crossed wins, on it the earliest
   // point. True: the path was cut there.
   bool bottleneck(const BlockCopy& m, const BlockCopy& before) {
@@ -913,16 +913,16 @@ struct Engine::State {
     }
     if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), c))
       return cut(m, entry, -1, c, has_near, near), true;
-    if (state > 0) decide("TRC-CD-1", m.line, "none", has_near ? near : -std::numeric_limits<double>::infinity());
+    if (state > 0) decide("TRC-CD-3", m.line, "none", has_near ? near : -std::numeric_limits<double>::infinity());
     return false;
   }
 
-  // TRC-CD-1 (with TRC-LOOK-3): the crossed block ends at the crossing; the blocks after it lose
+  // TRC-CD-4 (with TRC-LOOK-3): the crossed block ends at the crossing; the blocks after it lose
   // their plane motion (the rest runs there, in programmed order); block m goes on along its entry.
   void cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, bool has_near, double near) {
     const Vec2 x = c.point;
     double margin = has_near ? std::min(c.slack, -near) : c.slack;
-    decide("TRC-CD-1", m.line, "cut", margin);
+    decide("TRC-CD-3", m.line, "cut", margin);
     int last_run = -1;  // the last block run again from held records
     if (record >= 0) {
       HeldRecord& rec = held[static_cast<std::size_t>(record)];

@@ -62,7 +62,7 @@ CGAL::Sign later(const PathPiece& piece, const OnPiece& p, const OnPiece& q) {
 }
 }  // namespace
 
-// TRC-CD-1: the earliest point along `held` that lies on one of the entry's pieces.
+// TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
 PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry) {
   PieceCrossing out;
   if (!held.arc && held.a == held.b) return out;

@@ -1,4 +1,4 @@
-// TRC-CD-1 (CDON) in exact arithmetic: pieces of the tool-centre path and where a block's entry
+// TRC-CD-2/3 (CDON) in exact arithmetic: pieces of the tool-centre path and where a block's entry
 // crosses a held-back piece. The engine decides which pieces are compared; this file holds the
 // geometry.
 #pragma once

@@ -765,7 +765,7 @@ class Reference {
       if (d->moves_in_plane()) last_block = d;
     ContourElement last = element_of(*last_block);
     if (b.state.collision == CollisionMode::kCdon)
-      throw UnsupportedError(  // TRC-CD-1 (planned)
+      throw UnsupportedError(  // TRC-CD-5 (planned)
           b.words.line, "CDON search of G460/G461/G462 over earlier blocks");
     decide("TRC-DESEL-1", b.words.line, "deselected");
     if (b.state.approach == ApproachMode::kKont &&
@@ -792,7 +792,7 @@ class Reference {
   void approach_edge(const Candidate& c) {
     const Block& sel = *selection_;
     if (sel.state.collision == CollisionMode::kCdon)
-      throw UnsupportedError(  // TRC-CD-1 (planned)
+      throw UnsupportedError(  // TRC-CD-5 (planned)
           sel.words.line, "CDON search of G460/G461/G462 over later blocks");
     decide("TRC-EDGE-1", sel.words.line, g_code(sel.state.edge_strategy));
     const ContourElement& first = *open_;
@@ -818,8 +818,8 @@ class Reference {
     open(*c.block, *c.element, *hit, c.radius);
   }
 
-  // --- CDON: bottleneck detection (TRC-CD-1, bottleneck.cpp) ------------------------------------
-  // A block's entry, built provisionally from its predecessor: the transition circle at an outer
+  // --- CDON: bottleneck detection (TRC-CD-*, bottleneck.cpp) ------------------------------------
+  // TRC-CD-2: a block's entry, built provisionally from its predecessor: the transition circle at an outer
   // corner (whatever G450/G451 say), then its equidistant from its normal start (from the inner
   // corner's intersection); none if that lies beyond its normal end or the equidistant collapses.
   struct Entry {
@@ -883,7 +883,7 @@ class Reference {
     return PathPiece::circle(open_start_, end, e.centre, open_radius_, e.sense, e.full_circle && open_at_normal_start_);
   }
 
-  // TRC-CD-1: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
+  // TRC-CD-3: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
   // and, in the look-ahead, the open element; the earliest block that it crosses wins, on it the
   // earliest point. True: the path was cut there. Margin: the crossing's least slack, or the
   // largest near miss.
@@ -911,11 +911,11 @@ class Reference {
     }
     if (looking_ && seq_of(*open_block_) >= lo && seq_of(*open_block_) <= hi)
       if (std::optional<PieceCrossing> c = try_piece(open_piece())) return cut(m, *entry, std::nullopt, *c, near), true;
-    if (entry) decide("TRC-CD-1", m.words.line, "none", near ? exact_mm(*near) : std::string("-inf"));
+    if (entry) decide("TRC-CD-3", m.words.line, "none", near ? exact_mm(*near) : std::string("-inf"));
     return false;
   }
 
-  // TRC-CD-1 (with TRC-LOOK-3): the path is cut at the crossing. The crossed block ends there; the
+  // TRC-CD-4 (with TRC-LOOK-3): the path is cut at the crossing. The crossed block ends there; the
   // blocks after it lose their plane motion (the rest runs at the point, in programmed order);
   // block m goes on along its entry: the rest of the circle, then its equidistant.
   void cut(const Block& m, const Entry& en, std::optional<std::size_t> record, const PieceCrossing& c,
@@ -923,7 +923,7 @@ class Reference {
     const Point x = *c.point;
     FT margin = c.slack;
     if (near && CGAL::compare(-*near, margin) == CGAL::SMALLER) margin = -*near;
-    decide("TRC-CD-1", m.words.line, "cut", exact_mm(margin));
+    decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
     std::vector<const Block*> passed;
     auto pass = [&](const Block* b) {
       for (const Block* p : passed)

@@ -1,0 +1,104 @@
+// Collision (bottleneck) detection CDON (spec/approach-retraction.md, TRC-CD-*), derived by hand.
+#include "support.hpp"
+
+namespace cutcom::test {
+namespace {
+
+using K = OriginKind;
+
+// A straight wall y = 0 (part below, G41 along +x) with a recess 1 mm wide and 5 mm deep at
+// x = 10 ... 11; r = 2. `extra` goes into N50 (the recess's floor), `between` after it.
+std::string notch(const std::string& mode, const std::string& extra = "", const std::string& between = "") {
+  return "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-5 Y5 Z0 T1 D1\nN20 G41 " + mode +
+         " G1 X0 Y0 F500\nN30 X10\nN40 Y-5\nN50 X11 " + extra + "\n" + between +
+         "N60 Y0\nN70 X20\nN80 G40 X25 Y5\nN90 M30\n";
+}
+
+bool alarm_is(const RunResult& r, int number, int line_no) {
+  return r.alarms.size() == 1 && r.alarms[0].number == number && r.alarms[0].line == line_no;
+}
+
+// covers: TRC-CD-1 TRC-CD-2 TRC-CD-3 TRC-CD-4 TRC-LOOK-3
+TEST(Collision, CdonCutsTheNotchBetweenItsMouthCircles) {
+  // The transition circles about (10,0) (corner N30/N40, from (10,2) clockwise) and about (11,0)
+  // (N70's entry, from (9,0) clockwise to (11,2)) cross at (10.5, sqrt(4 - 0.25)) = (10.5, sqrt15/2).
+  // N70 arrives while the look-ahead over N50 (too short at the inner corner N40/N50) has passed
+  // N60; N40's circle is held back (window 3: N40, N50, N60): the earliest block crossed.
+  const double y = std::sqrt(15.0) / 2;
+  Runs r = run_both(notch("CDON"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-5, 5, 0}), line(K::kApproach, {-5, 5, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), arc({10, 2, 0}, {10.5, y, 0}, {10, 0, 0}, false),
+                  arc({10.5, y, 0}, {11, 2, 0}, {11, 0, 0}, false), line(K::kOffset, {11, 2, 0}, {20, 2, 0}),
+                  line(K::kRetraction, {20, 2, 0}, {25, 5, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(x->alarms.empty());
+    EXPECT_TRUE(has_decision(*x, "TRC-CD-3", "cut"));
+    EXPECT_TRUE(has_decision(*x, "TRC-LOOK-3", "skipped"));
+    EXPECT_EQ(x->path[4].origin.line, 8);  // named as N70's own circle at the corner N60/N70
+    EXPECT_EQ(x->path[4].origin.next_line, 9);
+  }
+  // N60's entry (inner corner N50/N60 from (9,-3), up x = 9) misses what is held: traced `none`
+  // before the cut at N70.
+  EXPECT_TRUE(has_decision(r.ref, "TRC-CD-3", "none"));
+}
+
+// covers: TRC-CD-1 TRC-ELEMENT-1
+TEST(Collision, CdofRaisesTheAlarmAtTheNotch) {
+  // Without collision detection the look-ahead meets N40's equidistant x = 12 at (12,2) with N70's
+  // y = 2, above N40's start (12,0): N40's equidistant would run backwards, alarm 10751 at N70.
+  for (const char* mode : {"CDOF", "CDOF2"}) {
+    Runs r = run_both(notch(mode));
+    EXPECT_TRUE(alarm_is(r.ref, 10751, 9)) << mode;
+    EXPECT_TRUE(alarm_is(r.fast, 10751, 9)) << mode;
+    EXPECT_FALSE(has_decision(r.ref, "TRC-CD-3", "cut"));
+  }
+}
+
+// covers: TRC-CD-1
+TEST(Collision, TheWindowMustReachTheCrossedBlock) {
+  // MD20240 = 2: N70 compares N50 only (N40's circle is out of the window) and the look-ahead
+  // over N50 gives up after two examined blocks: alarm 10751 at N60.
+  MachineData md;
+  md.set("MD20240", "2");
+  Runs r = run_both(notch("CDON"), md);
+  EXPECT_TRUE(alarm_is(r.ref, 10751, 8));
+  EXPECT_TRUE(alarm_is(r.fast, 10751, 8));
+}
+
+// covers: TRC-CD-4 TRC-LOOK-3
+TEST(Collision, SkippedBlocksRunTheirActionsAndInfeedAtTheCrossing) {
+  // M8 in N50 and a Z infeed N55 between the recess's blocks: they run at the crossing, in order;
+  // N70's circle then starts at the new depth.
+  const double y = std::sqrt(15.0) / 2;
+  Runs r = run_both(notch("CDON", "M8", "N55 Z-1\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-5, 5, 0}), line(K::kApproach, {-5, 5, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), arc({10, 2, 0}, {10.5, y, 0}, {10, 0, 0}, false),
+                  line(K::kInfeed, {10.5, y, 0}, {10.5, y, -1}), arc({10.5, y, -1}, {11, 2, -1}, {11, 0, -1}, false),
+                  line(K::kOffset, {11, 2, -1}, {20, 2, -1}), line(K::kRetraction, {20, 2, -1}, {25, 5, -1})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    ASSERT_EQ(x->actions.size(), 2u);  // M8, then M30 at the end
+    EXPECT_EQ(x->actions[0].line, 7);
+    expect_point(x->actions[0].at, {10.5, y, 0}, "M8 at the crossing");
+  }
+}
+
+// covers: TRC-CD-2 TRC-CD-3
+TEST(Collision, AWideRecessIsNotCut) {
+  // 5 mm wide (> 2r): the mouth circles about (10,0) and (15,0) do not meet; the path is CDOF's.
+  std::string wide =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-5 Y5 Z0 T1 D1\nN20 G41 CDON G1 X0 Y0 F500\n"
+      "N30 X10\nN40 Y-5\nN50 X15\nN60 Y0\nN70 X20\nN80 G40 X25 Y5\nN90 M30\n";
+  Runs on = run_both(wide);
+  std::string off = wide;
+  off.replace(off.find("CDON"), 4, "CDOF");
+  Runs of = run_both(off);
+  ASSERT_EQ(on.ref.path.size(), of.ref.path.size());
+  for (std::size_t i = 0; i < on.ref.path.size(); ++i) expect_point(on.ref.path[i].end, of.ref.path[i].end, "same");
+  for (const RunResult* x : {&on.ref, &on.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-CD-3", "none"));
+    EXPECT_FALSE(has_decision(*x, "TRC-CD-3", "cut"));
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::test
