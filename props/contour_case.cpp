@@ -30,9 +30,9 @@ std::string to_program(const ContourCase& c) {
   p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}0 T1 D1\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
                    fixed(c.start_y, c.decimals), h);
   n += 10;
-  p += fmt::format("N{} G1 {} {} {} G{} {}{} {}{} F500\n", n, c.right ? "G42" : "G41", c.kont_select ? "KONT" : "NORM",
-                   c.g451_select ? "G451" : "G450", c.edge_select, a, fixed(c.first_x, c.decimals), b,
-                   fixed(c.first_y, c.decimals));
+  p += fmt::format("N{} G1 {} {} {} G{} {} {}{} {}{} F500\n", n, c.right ? "G42" : "G41",
+                   c.kont_select ? "KONT" : "NORM", c.g451_select ? "G451" : "G450", c.edge_select,
+                   c.cdon ? "CDON" : "CDOF", a, fixed(c.first_x, c.decimals), b, fixed(c.first_y, c.decimals));
   std::int64_t x = c.first_x, y = c.first_y;
   bool right = c.right;
   int depth = 0;
@@ -68,7 +68,8 @@ std::string to_program(const ContourCase& c) {
 }
 
 void showValue(const ContourCase& c, std::ostream& os) {
-  os << "style " << c.style << ", MD20210=" << c.md20210 << " MD20230=" << c.md20230 << "\n" << to_program(c);
+  os << "style " << c.style << ", MD20210=" << c.md20210 << " MD20230=" << c.md20230 << " MD20240=" << c.md20240 << "\n"
+     << to_program(c);
 }
 
 }  // namespace cutcom::props

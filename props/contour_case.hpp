@@ -33,6 +33,8 @@ struct ContourCase {
   bool kont_select = false, kont_deselect = false;  // KONT instead of NORM in the G41/G42 and G40 blocks
   bool g451_select = false, g451_deselect = false;  // corner mode programmed in those blocks
   int edge_select = 462, edge_deselect = 462;       // G460 / G461 / G462 in those blocks
+  bool cdon = false;                                // CDON instead of CDOF in the G41/G42 block
+  int md20240 = 3;                                  // blocks in the look-ahead / collision window
   std::string style;                                // which generator made it (for RC_TAG)
 };
 

@@ -38,6 +38,8 @@ void common(ContourCase& c) {
   c.kont_select = *inRange(0, 3) != 0, c.kont_deselect = *inRange(0, 3) != 0;
   c.g451_select = *inRange(0, 3) == 0, c.g451_deselect = *inRange(0, 3) == 0;
   c.edge_select = *element(460, 461, 462, 462), c.edge_deselect = *element(460, 461, 462, 462);
+  c.cdon = *inRange(0, 3) == 0;  // TRC-CD-*: collision detection on every third program
+  if (*inRange(0, 4) == 0) c.md20240 = *element(2, 4, 5);
   for (std::size_t i = 0; i < c.steps.size(); ++i) {
     Step& s = c.steps[i];
     // Never in the first contour block after a selection (not supported there): not in the first
@@ -322,6 +324,72 @@ rc::Gen<ContourCase> around_ends() {
   });
 }
 
+// TRC-CD-*: a straight wall with one or two recesses (U: down, across, up; V: down, up; leaning
+// walls) whose width is narrower than, exactly, about or wider than 2r, in any direction; CDON
+// with a window that reaches across each recess.
+rc::Gen<ContourCase> bottleneck() {
+  return rc::gen::exec([] {
+    ContourCase c;
+    c.style = "bottleneck";
+    std::int64_t r = *inRange<std::int64_t>(300, 5001);
+    c.radius_um = r;
+    // Wall direction u (integer, length l) and the tool side n = left normal of u (G41).
+    static constexpr std::int64_t kDirs[][3] = {{1, 0, 1}, {0, 1, 1}, {-1, 0, 1}, {3, 4, 5}, {-4, 3, 5}, {12, -5, 13}};
+    const auto& d = kDirs[*inRange(0, 6)];
+    std::int64_t ux = d[0], uy = d[1], l = d[2];
+    auto step = [&](std::int64_t along, std::int64_t across) {  // in um of the wall's frame, /l
+      Step s;
+      s.dx = (along * ux - across * uy) / l, s.dy = (along * uy + across * ux) / l;
+      nonzero(s);
+      return s;
+    };
+    int recesses = *inRange(1, 3), most = 2;
+    c.steps.push_back(step(*inRange<std::int64_t>(3, 9) * r, 0));
+    for (int k = 0; k < recesses; ++k) {
+      std::int64_t w;
+      switch (*inRange(0, 6)) {
+        case 0:
+          w = 2 * r;
+          break;  // exactly 2r
+        case 1:
+          w = 2 * r + *element<std::int64_t>(-1, 1);
+          break;  // a micrometre off
+        case 2:
+          w = *inRange<std::int64_t>(2 * r, 4 * r);
+          break;  // wider
+        default:
+          w = *inRange<std::int64_t>(r / 5, 2 * r);
+          break;  // narrower: a bottleneck
+      }
+      std::int64_t depth = *inRange<std::int64_t>(r / 3, 4 * r), lean = *element<std::int64_t>(0, 0, r / 4, -r / 4);
+      if (*inRange(0, 3) == 0) {  // V
+        c.steps.push_back(step(w / 2, -depth));
+        c.steps.push_back(step(w - w / 2, depth));
+      } else {
+        c.steps.push_back(step(lean, -depth));
+        c.steps.push_back(step(std::max<std::int64_t>(w - 2 * lean, 1), 0));
+        c.steps.push_back(step(lean, depth));
+        most = 3;
+      }
+      c.steps.push_back(step(*inRange<std::int64_t>(3, 9) * r, 0));
+    }
+    common(c);
+    for (Step& s : c.steps) s.flip = false;
+    c.right = *inRange(0, 4) == 0;  // G42: the recesses are bumps for the tool
+    c.cdon = true;
+    c.md20240 = most + *inRange(2, 4);
+    c.first_x = signed_um(20000), c.first_y = signed_um(20000);
+    // Start and end well off the wall on the tool side, before its start and after its end.
+    std::int64_t sx = (-2 * r * ux - 3 * r * uy) / l, sy = (-2 * r * uy + 3 * r * ux) / l;
+    c.start_x = c.first_x + sx, c.start_y = c.first_y + sy;
+    std::int64_t ex = c.first_x, ey = c.first_y;
+    for (const Step& s : c.steps) ex += s.dx, ey += s.dy;
+    c.end_x = ex + (2 * r * ux - 3 * r * uy) / l, c.end_y = ey + (2 * r * uy + 3 * r * ux) / l;
+    c.kont_select = c.kont_deselect = false;
+    return c;
+  });
+}
+
 rc::Gen<ContourCase> any_contour() {
   return rc::gen::weightedOneOf<ContourCase>({{4, random_walk()},
                                               {3, grid_walk()},
@@ -331,7 +399,8 @@ rc::Gen<ContourCase> any_contour() {
                                               {4, with_circles()},
                                               {2, tiny_blocks()},
                                               {1, circles_near_radius()},
-                                              {2, around_ends()}});
+                                              {2, around_ends()},
+                                              {2, bottleneck()}});
 }
 
 }  // namespace cutcom::props

@@ -17,6 +17,7 @@ rc::Gen<ContourCase> with_circles();   // lines and I/J/K circles: tangent, inne
 rc::Gen<ContourCase> notch();
 rc::Gen<ContourCase> tiny_blocks();          // many blocks shorter than the radius: look-ahead and its window
 rc::Gen<ContourCase> around_ends();          // start/end in front of, behind, on the tangent line, near the circle r
+rc::Gen<ContourCase> bottleneck();           // walls with recesses narrower/wider than 2r, CDON (TRC-CD-*)
 rc::Gen<ContourCase> circles_near_radius();  // circles whose radius is the tool radius within a few um          //
                                              // slots of width exactly 2r: elements of length 0
 

@@ -21,6 +21,7 @@ inline MachineData machine_data_of(const ContourCase& c) {
   MachineData md;
   md.set("MD20210", std::to_string(c.md20210));
   md.set("MD20230", std::to_string(c.md20230));
+  md.set("MD20240", std::to_string(c.md20240));
   return md;
 }
 

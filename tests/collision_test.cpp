@@ -100,5 +100,24 @@ TEST(Collision, AWideRecessIsNotCut) {
   }
 }
 
+// covers: TRC-CD-3 TRC-CD-4 TRC-EDGE-3 TRC-EDGE-4 TRC-CD-1
+TEST(Collision, BundledExampleG461ThenACdonCutThenG462) {
+  // examples/bottleneck.mpf: G461 about (0,0) meets N50's equidistant x = -1 at (-1, sqrt3); the
+  // recess's mouth circles about (1,10) and (1,11) cross at (1 - sqrt15/2, 10.5); G462 extends
+  // N100's equidistant y = 23 to N90's x = -1.
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-10 Y-5 Z2 T1 D1\nN20 G1 Z-3 F200\n"
+      "N30 G41 G461 CDOF X0 Y0 F600\nN40 X1\nN50 Y10 CDON\nN60 X6\nN70 Y11\nN80 X1\nN90 Y25\n"
+      "N100 X0 CDOF\nN110 G40 G462 X-10 Y30\nN120 G0 Z2\nN130 M30\n";
+  const double s3 = std::sqrt(3.0), x = 1 - std::sqrt(15.0) / 2;
+  Runs r = run_both(text);
+  expect_both(
+      r, {line(K::kProgrammed, {0, 0, 0}, {-10, -5, 2}), line(K::kProgrammed, {-10, -5, 2}, {-10, -5, -3}),
+          line(K::kApproach, {-10, -5, -3}, {-1, s3, -3}), line(K::kOffset, {-1, s3, -3}, {-1, 10, -3}),
+          arc({-1, 10, -3}, {x, 10.5, -3}, {1, 10, -3}, false), arc({x, 10.5, -3}, {-1, 11, -3}, {1, 11, -3}, false),
+          line(K::kOffset, {-1, 11, -3}, {-1, 23, -3}), line(K::kRetraction, {-1, 23, -3}, {-10, 30, -3}),
+          line(K::kProgrammed, {-10, 30, -3}, {-10, 30, 2})});
+}
+
 }  // namespace
 }  // namespace cutcom::test

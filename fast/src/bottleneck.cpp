@@ -1,6 +1,7 @@
 #include "bottleneck.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace cutcom::fast {
@@ -74,17 +75,23 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
     double depth = has_depth ? -carrier_gap(h, c) : 0;
     Vec2 xs[2];
     int n = carrier_intersections(h, c, xs);
+    if (!h.circle && !c.circle && n == 0) {  // parallel: collinear is the knife edge of crossing
+      double gap = std::fabs(cross(h.direction, c.point - h.point)) / norm(h.direction);
+      if (!out.has_near_miss || -gap > out.near_miss) out.near_miss = -gap, out.has_near_miss = true;
+    }
     for (int k = 0; k < n; ++k) {
       OnPiece on_held = locate(held, xs[k]), on_entry = locate(e, xs[k]);
       double slack = std::min(on_held.slack, on_entry.slack);
-      if (has_depth) slack = std::min(slack, depth);
-      if (!on_held.on || !on_entry.on) {
+      bool on = on_held.on && on_entry.on;
+      if (on && has_depth) slack = std::min(slack, depth);
+      if (!on) {
         if (!out.has_near_miss || slack > out.near_miss) out.near_miss = slack, out.has_near_miss = true;
         continue;
       }
       if (found && on_held.position >= best) continue;
       found = true, best = on_held.position;
       out.point = xs[k], out.entry_piece = i, out.slack = slack;
+      out.along = held.arc ? best * held.radius : best;
     }
   }
   return out;

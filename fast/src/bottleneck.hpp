@@ -25,6 +25,7 @@ struct PieceCrossing {
   Vec2 point;
   int entry_piece = -1;
   double slack = 0;
+  double along = 0;  // how far along the held piece (length; rotation times radius at a circle)
   bool has_near_miss = false;
   double near_miss = 0;
 };

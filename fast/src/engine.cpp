@@ -829,14 +829,14 @@ struct Engine::State {
     PathPiece pieces[2];
     int count = 0;
   };
-  bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) const {
+  bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
     en.element = element_of(m);
     en.before_line = before.line, en.before_number = before.number;
     const Element& next = en.element;
     double sr = s * r;
     if (next.arc) {
       en.radius = next.equidistant_radius(sr);
-      if (!(en.radius > 0)) return false;
+      if (!(en.radius > 0)) return decide("TRC-CD-2", m.line, "collapsed", en.radius), false;
     }
     en.normal_start = Element::offset(next.start, next.start_tangent(), sr);
     Vec2 end = Element::offset(next.end, next.end_tangent(), sr);
@@ -849,7 +849,13 @@ struct Engine::State {
     en.vertex = prev.end;
     Corner c = classify_corner(prev.end_tangent(), next.start_tangent(), s);
     if (!prev.arc && !next.arc) decide_kind_exactly(before, m, c);
-    if (prev.arc && !(prev_radius > 0)) c.kind = Corner::Kind::kTangent;
+    if (prev.arc && !(prev_radius > 0)) {
+      decide("TRC-CD-2", m.line, "after-collapse", prev_radius);
+      c.kind = Corner::Kind::kTangent;
+    } else {
+      static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
+      decide("TRC-CD-2", m.line, kKind[static_cast<int>(c.kind)], c.sine);
+    }
     en.count = 0;
     if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) {
       Vec2 from = Element::offset(prev.end, prev.end_tangent(), sr);
@@ -860,11 +866,15 @@ struct Engine::State {
       en.pieces[en.count++] = equidistant_from(en.normal_start, next.full);
       return true;
     }
+    Carrier u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
     Vec2 x;
-    if (!nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.end,
-                              next.start_tangent(), x))
+    if (!nearest_intersection(u, v, prev.end, next.start_tangent(), x)) {
+      decide("TRC-CD-2", m.line, "no-entry",
+             u.circle || v.circle ? carrier_gap(u, v) : -std::numeric_limits<double>::infinity());
       return false;
-    if (extent_of(next, en.radius, x).left < 0) return false;
+    }
+    double left = extent_of(next, en.radius, x).left;
+    if (left < 0) return decide("TRC-CD-2", m.line, "no-entry", left), false;
     en.pieces[en.count++] = equidistant_from(x, false);
     return true;
   }
@@ -931,8 +941,10 @@ struct Engine::State {
       const PathPoint end = rec.element.end;
       held_scratch.assign(held.begin() + record + 1, held.end());
       held.erase(held.begin() + record + 1, held.end());
-      const PathPoint& st = rec.element.start;
-      if (st.x == end.x && st.y == end.y && st.z == end.z) held.erase(held.begin() + record);
+      // Cut at (or, rounded, next to) its start: nothing is left of it; an arc from a point to
+      // itself would read as a full circle.
+      double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
+      if (c.along <= 64 * std::numeric_limits<double>::epsilon() * scale) held.erase(held.begin() + record);
       bool rest = open.line == crossed.owner_line;  // its equidistant was still open
       for (const HeldRecord& k : held_scratch) rest = rest || k.owner_line == crossed.owner_line;
       if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));

@@ -30,6 +30,10 @@ Carrier<Kernel> PathPiece::carrier() const {
 }
 
 namespace {
+// Margins only pick the least or largest of exact values: an approximate comparison picks one of
+// equal values as well, without the exact zero test of their difference (CORE's costliest case).
+bool approx_less(const FT& a, const FT& b) { return CGAL::to_double(a) < CGAL::to_double(b); }
+
 // Where a point of the carrier lies on the piece: `position` orders points along it, `slack` is
 // the distance to the nearer end (along a segment, the chord at a circle), negative off it.
 struct OnPiece {
@@ -44,14 +48,15 @@ OnPiece locate(const PathPiece& piece, const Point& p) {
     FT length = exact_root(d.squared_length());
     FT along = (p - piece.a) * d / length, left = length - along;
     o.line_position = along;
-    o.slack = CGAL::compare(along, left) == CGAL::SMALLER ? along : left;
-    o.on = CGAL::sign(o.slack) != CGAL::NEGATIVE;
+    o.on = CGAL::sign(along) != CGAL::NEGATIVE && CGAL::sign(left) != CGAL::NEGATIVE;
+    o.slack = approx_less(along, left) ? along : left;
+    if (!o.on && CGAL::sign(o.slack) != CGAL::NEGATIVE) o.slack = CGAL::sign(along) == CGAL::NEGATIVE ? along : left;
     return o;
   }
   o.arc_position = ExactAngle::rotation(piece.a - piece.centre, p - piece.centre, piece.sense);
   o.on = (piece.sweep + -o.arc_position).sign() != CGAL::NEGATIVE;
   FT to_a = exact_root(CGAL::squared_distance(p, piece.a)), to_b = exact_root(CGAL::squared_distance(p, piece.b));
-  FT nearer = CGAL::compare(to_a, to_b) == CGAL::SMALLER ? to_a : to_b;
+  FT nearer = approx_less(to_a, to_b) ? to_a : to_b;
   o.slack = o.on ? nearer : -nearer;
   return o;
 }
@@ -74,12 +79,22 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     Carrier<Kernel> c = e.carrier();
     std::optional<FT> depth;
     if (h.circle || c.circle) depth = -carrier_gap<Kernel>(h, c);
-    for (const Point& p : carrier_intersections<Kernel>(h, c)) {
+    std::vector<Point> xs = carrier_intersections<Kernel>(h, c);
+    if (!h.circle && !c.circle && xs.empty()) {
+      // Parallel lines never cross; collinear ones (distance 0) are the knife edge of crossing.
+      FT gap = CGAL::abs(CGAL::determinant(h.direction, c.point - h.point)) / exact_root(h.direction.squared_length());
+      if (!out.near_miss || approx_less(*out.near_miss, -gap)) out.near_miss = -gap;
+    }
+    for (const Point& p : xs) {
       OnPiece on_held = locate(held, p), on_entry = locate(e, p);
-      FT slack = CGAL::compare(on_held.slack, on_entry.slack) == CGAL::SMALLER ? on_held.slack : on_entry.slack;
-      if (depth && CGAL::compare(*depth, slack) == CGAL::SMALLER) slack = *depth;
-      if (!on_held.on || !on_entry.on) {
-        if (!out.near_miss || CGAL::compare(slack, *out.near_miss) == CGAL::LARGER) out.near_miss = slack;
+      bool on = on_held.on && on_entry.on;
+      // The margin: the least slack; off a piece, the violated one.
+      FT slack = on_held.slack;
+      if (on ? approx_less(on_entry.slack, slack) : !on_entry.on && (on_held.on || approx_less(slack, on_entry.slack)))
+        slack = on_entry.slack;
+      if (on && depth && approx_less(*depth, slack)) slack = *depth;
+      if (!on) {
+        if (!out.near_miss || approx_less(*out.near_miss, slack)) out.near_miss = slack;
         continue;
       }
       if (best && later(held, on_held, *best) != CGAL::NEGATIVE) continue;

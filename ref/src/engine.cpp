@@ -830,15 +830,17 @@ class Reference {
     bool circle = false;  // pieces[0] is the transition circle
     std::vector<PathPiece> pieces;
   };
-  std::optional<Entry> entry_of(const Block& m, const Block& before) const {
+  std::optional<Entry> entry_of(const Block& m, const Block& before) {
     Entry en;
     en.element = element_of(m);
     en.before = &before;
     const ContourElement& next = en.element;
     const FT& sr = comp_->side_radius;
+    const int line = m.words.line;
     if (next.is_arc()) {
       en.radius = equidistant_radius<Kernel>(next.radius, next.sense, sr);
-      if (CGAL::sign(en.radius) != CGAL::POSITIVE) return std::nullopt;
+      if (CGAL::sign(en.radius) != CGAL::POSITIVE)
+        return decide("TRC-CD-2", line, "collapsed", exact_mm(en.radius)), std::nullopt;
     }
     en.normal_start = equidistant_point<Kernel>(next.a, next.start_normal(), sr);
     Point end = equidistant_point<Kernel>(next.b, next.end_normal(), sr);
@@ -851,7 +853,16 @@ class Reference {
     if (prev.is_arc()) prev_radius = equidistant_radius<Kernel>(prev.radius, prev.sense, sr);
     en.vertex = prev.b;
     CornerKind kind = classify_corner(prev.end_dir, next.start_dir, comp_->s);
-    if (prev.is_arc() && CGAL::sign(prev_radius) != CGAL::POSITIVE) kind = CornerKind::kTangent;
+    if (prev.is_arc() && CGAL::sign(prev_radius) != CGAL::POSITIVE) {
+      decide("TRC-CD-2", line, "after-collapse", exact_mm(prev_radius));
+      kind = CornerKind::kTangent;
+    } else {
+      static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
+      FT cross = prev.end_dir.x() * next.start_dir.y() - prev.end_dir.y() * next.start_dir.x();
+      FT dot = prev.end_dir * next.start_dir;
+      decide("TRC-CD-2", line, kKind[static_cast<int>(kind)],
+             exact_text(FT(comp_->s) * cross / exact_root(dot * dot + cross * cross)));
+    }
     if (kind == CornerKind::kOuter || kind == CornerKind::kReversal) {
       Point from = equidistant_point<Kernel>(prev.b, prev.end_normal(), sr);
       en.pieces.push_back(PathPiece::circle(from, en.normal_start, prev.b, leaf(comp_->radius), -comp_->s));
@@ -861,9 +872,14 @@ class Reference {
       en.pieces.push_back(equidistant_from(en.normal_start, next.full_circle));
       return en;
     }
-    std::optional<Point> x =
-        nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.b, next.start_dir);
-    if (!x || extent_of(next, en.radius, *x).after_end == CGAL::NEGATIVE) return std::nullopt;
+    Carrier<Kernel> u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
+    std::optional<Point> x = nearest_intersection(u, v, prev.b, next.start_dir);
+    if (!x) {
+      decide("TRC-CD-2", line, "no-entry", u.circle || v.circle ? exact_mm(carrier_gap<Kernel>(u, v)) : "-inf");
+      return std::nullopt;
+    }
+    Extent reach = extent_of(next, en.radius, *x);
+    if (reach.after_end == CGAL::NEGATIVE) return decide("TRC-CD-2", line, "no-entry", reach.left_text), std::nullopt;
     en.pieces.push_back(equidistant_from(*x, false));
     return en;
   }
@@ -898,7 +914,8 @@ class Reference {
       compared = true;
       if (!entry) return std::nullopt;
       PieceCrossing c = piece_crossing(held, entry->pieces);
-      if (c.near_miss && (!near || CGAL::compare(*c.near_miss, *near) == CGAL::LARGER)) near = c.near_miss;
+      // The largest near miss (approximately picked among exact values: see bottleneck.cpp).
+      if (c.near_miss && (!near || CGAL::to_double(*near) < CGAL::to_double(*c.near_miss))) near = c.near_miss;
       if (!c.point) return std::nullopt;
       return c;
     };
@@ -922,7 +939,7 @@ class Reference {
            const std::optional<FT>& near) {
     const Point x = *c.point;
     FT margin = c.slack;
-    if (near && CGAL::compare(-*near, margin) == CGAL::SMALLER) margin = -*near;
+    if (near && CGAL::to_double(-*near) < CGAL::to_double(margin)) margin = -*near;
     decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
     std::vector<const Block*> passed;
     auto pass = [&](const Block* b) {

@@ -46,6 +46,16 @@ std::string exact_image_mismatch(const std::string& original, const std::string&
 std::optional<std::string> exact_reversal_mismatch(const std::string& original, const std::string& reversed,
                                                    const MachineData& md, int selection_line, int deselection_line);
 
+// PROP-CD-1: runs the program and checks exactly that no point of ref's compensated path
+// (equidistants, transition circles) comes closer than r to a programmed compensated block.
+// Contours with circles are not checked (pairs = 0).
+struct ClearanceCheck {
+  bool alarm = false;     // an alarm stopped the run: nothing checked
+  int pairs = 0;          // (path element, programmed block) pairs decided
+  std::string violation;  // empty: none
+};
+ClearanceCheck exact_clearance(const std::string& program, const MachineData& md);
+
 // Reads the program block by block and runs it. Returns false if an alarm stopped it.
 // With `checks`, also verifies the exact path (costs exact zero tests: milliseconds each).
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks = nullptr);
