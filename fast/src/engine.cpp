@@ -211,11 +211,14 @@ struct Engine::State {
     return o;
   }
   void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, OriginKind kind, bool rapid) {
+    line(owner, from, to, origin(owner, kind), rapid);
+  }
+  void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const Origin& named, bool rapid) {
     actions(owner, from);
     if (from.x == to.x && from.y == to.y && from.z == to.z) return;  // PATH-ELEMENT-1: no zero-length element
     PathElement e;
     e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
-    e.origin = origin(owner, kind);
+    e.origin = named;
     HeldRecord rec = record_of(owner);
     rec.is_element = true, rec.element = e;
     held.push_back(rec);
@@ -654,17 +657,17 @@ struct Engine::State {
 
   // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
   // deciding block's G450/G451, switched by the contour angle (TRC-CORNER-2, degrees).
-  bool outer_corner_circle(int line_no, bool g451, const Corner& c) {
+  bool outer_corner_circle(int line_no, bool g451, const Corner& c, bool traced = true) {
     double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
     if (g451) {  // TRC-CORNER-3: G451 switches to G450 above MD20210
       double limit = md.cutcom_corner_limit.to_double();
       bool circle = angle > limit;
-      decide("TRC-CORNER-3", line_no, circle ? "switch-to-G450" : "keep-G451", angle - limit);
+      if (traced) decide("TRC-CORNER-3", line_no, circle ? "switch-to-G450" : "keep-G451", angle - limit);
       return circle;
     }
     double limit = md.cutcom_curve_insert_limit.to_double();  // TRC-CORNER-4: G450 to G451 below MD20230
     bool circle = !(angle < limit);
-    decide("TRC-CORNER-4", line_no, circle ? "keep-G450" : "switch-to-G451", angle - limit);
+    if (traced) decide("TRC-CORNER-4", line_no, circle ? "keep-G450" : "switch-to-G451", angle - limit);
     return circle;
   }
 
@@ -823,9 +826,14 @@ struct Engine::State {
     Element element;
     double radius = 0;
     Vec2 vertex, normal_start;
+    Vec2 own_start;       // where m's own equidistant piece starts
     int before_line = 0;  // the predecessor, which names the corner
     std::optional<std::int64_t> before_number;
-    bool circle = false;  // pieces[0] is the transition circle
+    Element before_element;
+    double before_radius = 0;
+    // pieces[0] leads to m's equidistant: the transition circle, or (G451) the predecessor's
+    // equidistant extended to the intersection.
+    enum class Lead { kNone, kCircle, kExtension } lead = Lead::kNone;
     PathPiece pieces[2];
     int count = 0;
   };
@@ -844,9 +852,12 @@ struct Engine::State {
       return next.arc ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
                       : PathPiece::segment(from, end);
     };
-    Element prev = element_of(before);
+    en.before_element = element_of(before);
+    const Element& prev = en.before_element;
     double prev_radius = prev.arc ? prev.equidistant_radius(sr) : 0;
+    en.before_radius = prev_radius;
     en.vertex = prev.end;
+    en.own_start = en.normal_start;
     Corner c = classify_corner(prev.end_tangent(), next.start_tangent(), s);
     if (!prev.arc && !next.arc) decide_kind_exactly(before, m, c);
     if (prev.arc && !(prev_radius > 0)) {
@@ -857,10 +868,29 @@ struct Engine::State {
       decide("TRC-CD-2", m.line, kKind[static_cast<int>(c.kind)], c.sine);
     }
     en.count = 0;
+    Vec2 prev_end = Element::offset(prev.end, prev.end_tangent(), sr);
+    if (c.kind == Corner::Kind::kOuter && !outer_corner_circle(m.line, m.g451, c, false)) {
+      // G451 (TRC-G451-1, TRC-ARC-CORNER-1): both equidistants extended to their intersection;
+      // none found (circles) is the circle (TRC-ARC-CORNER-2).
+      Vec2 x;
+      bool found = true;
+      if (!prev.arc && !next.arc)
+        x = Element::offset(prev.end, prev.unit, sr) - corner_trim(c, s, r) * prev.unit;
+      else
+        found = nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.end,
+                                     next.start_tangent(), x);
+      if (found) {
+        en.own_start = x;
+        en.lead = Entry::Lead::kExtension;
+        en.pieces[en.count++] = prev.arc ? PathPiece::circle(prev_end, x, prev.centre, prev_radius, prev.sense)
+                                         : PathPiece::segment(prev_end, x);
+        en.pieces[en.count++] = equidistant_from(x, false);
+        return true;
+      }
+    }
     if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) {
-      Vec2 from = Element::offset(prev.end, prev.end_tangent(), sr);
-      en.pieces[en.count++] = PathPiece::circle(from, en.normal_start, prev.end, r, -s);
-      en.circle = true;
+      en.pieces[en.count++] = PathPiece::circle(prev_end, en.normal_start, prev.end, r, -s);
+      en.lead = Entry::Lead::kCircle;
     }
     if (c.kind != Corner::Kind::kInner) {
       en.pieces[en.count++] = equidistant_from(en.normal_start, next.full);
@@ -875,6 +905,7 @@ struct Engine::State {
     }
     double left = extent_of(next, en.radius, x).left;
     if (left < 0) return decide("TRC-CD-2", m.line, "no-entry", left), false;
+    en.own_start = x;
     en.pieces[en.count++] = equidistant_from(x, false);
     return true;
   }
@@ -974,15 +1005,26 @@ struct Engine::State {
     dummy_count = 0;
     looking = false;
     kont_first = false;
-    bool on_circle = en.circle && c.entry_piece == 0 && !(x.a == en.normal_start.a && x.b == en.normal_start.b);
-    if (!on_circle) return open_element(m, en.element, x, en.radius);
+    bool on_lead =
+        en.lead != Entry::Lead::kNone && c.entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
+    if (!on_lead) return open_element(m, en.element, x, en.radius);
     double hv = h(m.start);
-    Origin corner;
-    corner.kind = OriginKind::kTransitionCircle, corner.line = en.before_line, corner.block = en.before_number;
-    corner.next_line = m.line, corner.next_block = m.number;
     BlockCopy owner = m;
-    arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, corner);
-    open_element(owner, en.element, en.normal_start, en.radius);
+    Origin named;
+    named.line = en.before_line, named.block = en.before_number;
+    if (en.lead == Entry::Lead::kCircle) {
+      named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
+      arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
+      return open_element(owner, en.element, en.normal_start, en.radius);
+    }
+    // The rest of the predecessor's extended equidistant, at m's applicate, named after it.
+    named.kind = OriginKind::kOffset;
+    const Element& p = en.before_element;
+    if (p.arc)
+      arc(owner, xyz(x, hv), xyz(en.own_start, hv), xyz(p.centre, hv), p.sense > 0, named);
+    else
+      line(owner, xyz(x, hv), xyz(en.own_start, hv), named, owner.rapid);
+    open_element(owner, en.element, en.own_start, en.radius);
   }
   // A block run again at a cut, from its held record: its applicate motion at x (its actions were
   // put back before).

@@ -118,13 +118,13 @@ class Reference {
 
   // PATH-ELEMENT-1: a straight element; zero-length ones are not output.
   void emit_line(const Block& owner, const ExactPoint& from, const ExactPoint& to, OriginKind kind,
-                 const ContourElement* offset_of = nullptr) {
+                 const ContourElement* offset_of = nullptr, const Block* named = nullptr) {
     PathPoint a = path.output(from), b = path.output(to);
     run_actions(owner, a);
     if (path.same(from, to)) return;
     PathElement e;
     e.type = ElementType::kLine, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
-    e.start = a, e.end = b, e.origin = origin(owner, kind);
+    e.start = a, e.end = b, e.origin = origin(named ? *named : owner, kind);
     hold(owner, e,
          ExactPath::line_element(owner.words.line, from, to, offset_of, comp_ ? comp_->side_radius : FT(0),
                                  comp_ ? comp_->axes : PlaneAxes{0, 1, 2}));
@@ -597,8 +597,8 @@ class Reference {
 
   // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
   // G450/G451 of `at_block`, switched by the contour angle (exactly; rational where `rc` is given).
-  bool outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross,
-                           const FT& dot) {
+  bool outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross, const FT& dot,
+                           bool traced = true) {
     bool g451 = at_block.state.corner == CornerMode::kG451;
     const Decimal& limit = g451 ? md_.cutcom_corner_limit : md_.cutcom_curve_insert_limit;
     AngleComparison a;
@@ -612,11 +612,11 @@ class Reference {
     }
     if (g451) {
       bool circle = a.sign > 0;
-      decide("TRC-CORNER-3", at_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
+      if (traced) decide("TRC-CORNER-3", at_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
       return circle;
     }
     bool circle = !(a.sign < 0);
-    decide("TRC-CORNER-4", at_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
+    if (traced) decide("TRC-CORNER-4", at_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
     return circle;
   }
 
@@ -826,8 +826,13 @@ class Reference {
     ContourElement element;
     FT radius;
     Point vertex, normal_start;
+    Point own_start;  // where m's own equidistant piece starts
     const Block* before = nullptr;
-    bool circle = false;  // pieces[0] is the transition circle
+    ContourElement before_element;
+    FT before_radius;
+    // pieces[0] leads to m's equidistant: the transition circle, or (G451) the predecessor's
+    // equidistant extended to the intersection.
+    enum class Lead { kNone, kCircle, kExtension } lead = Lead::kNone;
     std::vector<PathPiece> pieces;
   };
   std::optional<Entry> entry_of(const Block& m, const Block& before) {
@@ -848,11 +853,15 @@ class Reference {
       return next.is_arc() ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
                            : PathPiece::segment(from, end);
     };
-    ContourElement prev = element_of(before);
-    FT prev_radius;
+    en.before_element = element_of(before);
+    const ContourElement& prev = en.before_element;
+    FT& prev_radius = en.before_radius;
     if (prev.is_arc()) prev_radius = equidistant_radius<Kernel>(prev.radius, prev.sense, sr);
     en.vertex = prev.b;
-    CornerKind kind = classify_corner(prev.end_dir, next.start_dir, comp_->s);
+    en.own_start = en.normal_start;
+    std::optional<CornerClass> rc;
+    if (prev.rational && next.rational) rc = classify_corner(prev.end_tangent, next.start_tangent, comp_->s);
+    CornerKind kind = rc ? rc->kind : classify_corner(prev.end_dir, next.start_dir, comp_->s);
     if (prev.is_arc() && CGAL::sign(prev_radius) != CGAL::POSITIVE) {
       decide("TRC-CD-2", line, "after-collapse", exact_mm(prev_radius));
       kind = CornerKind::kTangent;
@@ -863,10 +872,20 @@ class Reference {
       decide("TRC-CD-2", line, kKind[static_cast<int>(kind)],
              exact_text(FT(comp_->s) * cross / exact_root(dot * dot + cross * cross)));
     }
+    Point prev_end = equidistant_point<Kernel>(prev.b, prev.end_normal(), sr);
+    if (kind == CornerKind::kOuter && !outer_corner_is_circle(m, prev, prev_radius, next, en.radius, rc)) {
+      // G451 (TRC-G451-1, TRC-ARC-CORNER-1): both equidistants extended to their intersection.
+      en.own_start = *g451_point_;
+      en.lead = Entry::Lead::kExtension;
+      en.pieces.push_back(prev.is_arc()
+                              ? PathPiece::circle(prev_end, en.own_start, prev.centre, prev_radius, prev.sense)
+                              : PathPiece::segment(prev_end, en.own_start));
+      en.pieces.push_back(equidistant_from(en.own_start, false));
+      return en;
+    }
     if (kind == CornerKind::kOuter || kind == CornerKind::kReversal) {
-      Point from = equidistant_point<Kernel>(prev.b, prev.end_normal(), sr);
-      en.pieces.push_back(PathPiece::circle(from, en.normal_start, prev.b, leaf(comp_->radius), -comp_->s));
-      en.circle = true;
+      en.pieces.push_back(PathPiece::circle(prev_end, en.normal_start, prev.b, leaf(comp_->radius), -comp_->s));
+      en.lead = Entry::Lead::kCircle;
     }
     if (kind != CornerKind::kInner) {
       en.pieces.push_back(equidistant_from(en.normal_start, next.full_circle));
@@ -880,9 +899,29 @@ class Reference {
     }
     Extent reach = extent_of(next, en.radius, *x);
     if (reach.after_end == CGAL::NEGATIVE) return decide("TRC-CD-2", line, "no-entry", reach.left_text), std::nullopt;
+    en.own_start = *x;
     en.pieces.push_back(equidistant_from(*x, false));
     return en;
   }
+
+  // The outer corner of the entry as corner() will make it (TRC-CORNER-3/4 untraced here): true
+  // for the circle; false for G451, with the intersection in g451_point_ (TRC-ARC-CORNER-2: none
+  // found is the circle).
+  bool outer_corner_is_circle(const Block& m, const ContourElement& prev, const FT& prev_radius,
+                              const ContourElement& next, const FT& next_radius, const std::optional<CornerClass>& rc) {
+    FT cross = rc ? to_ft(rc->cross) : prev.end_dir.x() * next.start_dir.y() - prev.end_dir.y() * next.start_dir.x();
+    FT dot = rc ? to_ft(rc->dot) : prev.end_dir * next.start_dir;
+    if (outer_corner_circle(m, rc, cross, dot, false)) return true;
+    if (!prev.is_arc() && !next.is_arc()) {
+      FT trim = corner_trim<Kernel>(cross, dot, prev.length, next.length, comp_->side_radius);
+      g451_point_ = corner_intersection<Kernel>(prev.b, prev.normal, prev.d, prev.length, comp_->side_radius, trim);
+      return false;
+    }
+    g451_point_ =
+        nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, next_radius), prev.b, next.start_dir);
+    return !g451_point_;
+  }
+  std::optional<Point> g451_point_;
 
   // A held-back element as a piece of the plane path.
   static PathPiece piece_of(const HeldRecord& r) {
@@ -988,14 +1027,24 @@ class Reference {
     looking_ = false;
     kont_first_ = false;
     run_skipped(x);
-    bool on_circle = en.circle && c.entry_piece == 0 && x != en.normal_start;
-    if (!on_circle) return open(m, en.element, x, en.radius, x == en.normal_start);
+    bool on_lead = en.lead != Entry::Lead::kNone && c.entry_piece == 0 && x != en.own_start;
+    if (!on_lead) return open(m, en.element, x, en.radius, x == en.normal_start);
     Decimal h = coord(m.start, comp_->axes.applicate);
-    Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
-    corner.next_line = m.words.line, corner.next_block = m.words.number;
-    emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
-             comp_->axes);
-    open(m, en.element, en.normal_start, en.radius, true);
+    if (en.lead == Entry::Lead::kCircle) {
+      Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
+      corner.next_line = m.words.line, corner.next_block = m.words.number;
+      emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
+               comp_->axes);
+      return open(m, en.element, en.normal_start, en.radius, true);
+    }
+    // The rest of the predecessor's extended equidistant, at m's applicate, named after it.
+    const ContourElement& p = en.before_element;
+    if (p.is_arc())
+      emit_arc(m, at({x, h}), at({en.own_start, h}), at({p.centre, h}), en.before_radius, p.sense > 0,
+               origin(*en.before, OriginKind::kOffset), comp_->axes);
+    else
+      emit_line(m, at({x, h}), at({en.own_start, h}), OriginKind::kOffset, &p, en.before);
+    open(m, en.element, en.own_start, en.radius);
   }
 
   // TRC-G450-1: a circle of radius r about the programmed corner from the normal end point of the
