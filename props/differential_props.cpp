@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
 
 #include "generators.hpp"
 #include "run_case.hpp"
@@ -11,9 +14,21 @@
 namespace cutcom::props {
 namespace {
 
+// CUTCOM_SLOW_CASE=S prints every case that takes longer than S seconds (ref's exact arithmetic
+// can be slow at exact degeneracies: this finds them).
+void report_if_slow(const ContourCase& c, std::chrono::steady_clock::duration took) {
+  static const char* limit = std::getenv("CUTCOM_SLOW_CASE");
+  if (!limit || std::chrono::duration<double>(took).count() <= std::atof(limit)) return;
+  std::cerr << "slow case (" << std::chrono::duration<double>(took).count() << " s):\n";
+  showValue(c, std::cerr);
+  std::cerr << "\n";
+}
+
 void check_agreement(const ContourCase& c) {
   RC_TAG(c.style);
+  auto started = std::chrono::steady_clock::now();
   CaseRuns r = run_case(c, false);
+  report_if_slow(c, std::chrono::steady_clock::now() - started);
   Verdict v = compare(r.ref, r.fast, r.tolerance);
   if (r.ref_unsupported || r.fast_unsupported) {
     // TRC-UNSUP-1: both reject naming the same line, or one does after a knife edge.

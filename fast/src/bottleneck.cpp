@@ -61,13 +61,13 @@ PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int 
 }
 
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
-PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count) {
+PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count, int from) {
   PieceCrossing out;
   if (!held.arc && held.a.a == held.b.a && held.a.b == held.b.b) return out;
   Carrier h = carrier(held);
   bool found = false;
   double best = 0;
-  for (int i = 0; i < count; ++i) {
+  for (int i = from; i < count; ++i) {
     const PathPiece& e = entry[i];
     if (!e.arc && e.a.a == e.b.a && e.a.b == e.b.b) continue;
     Carrier c = carrier(e);

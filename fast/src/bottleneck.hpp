@@ -29,6 +29,7 @@ struct PieceCrossing {
   bool has_near_miss = false;
   double near_miss = 0;
 };
-PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count);
+// `from`: the first entry piece compared (see ref).
+PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count, int from = 0);
 
 }  // namespace cutcom::fast

@@ -938,10 +938,12 @@ struct Engine::State {
     int state = 0;  // 0: not built, 1: built, -1: none
     bool has_near = false;
     double near = 0;
-    auto try_piece = [&](const PathPiece& held_piece, PieceCrossing& c) {
+    // A G451 lead is the predecessor's equidistant: its neighbour m-2 is not compared with it.
+    auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
       if (state == 0) state = entry_of(m, before, entry) ? 1 : -1;
       if (state < 0) return false;
-      c = piece_crossing(held_piece, entry.pieces, entry.count);
+      bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi;
+      c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0);
       if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
       return c.entry_piece >= 0;
     };
@@ -949,10 +951,10 @@ struct Engine::State {
     for (std::size_t i = 0; i < held.size(); ++i) {
       const HeldRecord& rec = held[i];
       if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
-      if (try_piece(piece_of(rec), c)) return cut(m, entry, static_cast<int>(i), c, has_near, near), true;
+      if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, has_near, near), true;
       if (state < 0) return false;
     }
-    if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), c))
+    if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
       return cut(m, entry, -1, c, has_near, near), true;
     if (state > 0) decide("TRC-CD-3", m.line, "none", has_near ? near : -std::numeric_limits<double>::infinity());
     return false;

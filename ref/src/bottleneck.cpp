@@ -68,12 +68,12 @@ CGAL::Sign later(const PathPiece& piece, const OnPiece& p, const OnPiece& q) {
 }  // namespace
 
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
-PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry) {
+PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from) {
   PieceCrossing out;
   if (!held.arc && held.a == held.b) return out;
   Carrier<Kernel> h = held.carrier();
   std::optional<OnPiece> best;
-  for (std::size_t i = 0; i < entry.size(); ++i) {
+  for (std::size_t i = from; i < entry.size(); ++i) {
     const PathPiece& e = entry[i];
     if (!e.arc && e.a == e.b) continue;
     Carrier<Kernel> c = e.carrier();

@@ -36,6 +36,8 @@ struct PieceCrossing {
   FT slack;
   std::optional<FT> near_miss;
 };
-PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry);
+// `from`: the first entry piece compared (a lead piece of the predecessor is not compared with its
+// neighbour's pieces).
+PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from = 0);
 
 }  // namespace cutcom::ref

@@ -948,11 +948,13 @@ class Reference {
     std::optional<Entry> entry;
     std::optional<FT> near;
     bool compared = false;
-    auto try_piece = [&](const PathPiece& held) -> std::optional<PieceCrossing> {
+    // A G451 lead is the predecessor's equidistant: its neighbour m-2 is not compared with it.
+    auto try_piece = [&](const PathPiece& held, int seq) -> std::optional<PieceCrossing> {
       if (!entry && !compared) entry = entry_of(m, before);
       compared = true;
       if (!entry) return std::nullopt;
-      PieceCrossing c = piece_crossing(held, entry->pieces);
+      bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi;
+      PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0);
       // The largest near miss (approximately picked among exact values: see bottleneck.cpp).
       if (c.near_miss && (!near || CGAL::to_double(*near) < CGAL::to_double(*c.near_miss))) near = c.near_miss;
       if (!c.point) return std::nullopt;
@@ -962,11 +964,12 @@ class Reference {
     for (std::size_t i = 0; i < records.size(); ++i) {
       const HeldRecord& r = records[i];
       if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
-      if (std::optional<PieceCrossing> c = try_piece(piece_of(r))) return cut(m, *entry, i, *c, near), true;
+      if (std::optional<PieceCrossing> c = try_piece(piece_of(r), r.seq)) return cut(m, *entry, i, *c, near), true;
       if (compared && !entry) return false;
     }
     if (looking_ && seq_of(*open_block_) >= lo && seq_of(*open_block_) <= hi)
-      if (std::optional<PieceCrossing> c = try_piece(open_piece())) return cut(m, *entry, std::nullopt, *c, near), true;
+      if (std::optional<PieceCrossing> c = try_piece(open_piece(), seq_of(*open_block_)))
+        return cut(m, *entry, std::nullopt, *c, near), true;
     if (entry) decide("TRC-CD-3", m.words.line, "none", near ? exact_mm(*near) : std::string("-inf"));
     return false;
   }
