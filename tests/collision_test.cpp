@@ -119,5 +119,37 @@ TEST(Collision, BundledExampleG461ThenACdonCutThenG462) {
           line(K::kProgrammed, {-10, 30, -3}, {-10, 30, 2})});
 }
 
+// covers: TRC-CD-5 TRC-EDGE-4 TRC-EDGE-5
+TEST(Collision, RetractionWithCdonSearchesFurtherBack) {
+  // G41, r = 2, a pocket corner: N30 along y = 0, N40 up, N50 back to x = 14, N60 down 1 mm (too
+  // short at its inner corner). G462 extends N60's equidistant x = 16 downwards from (16,5):
+  // CDOF stops at N50's equidistant y = 4 (16,4); CDON searches on and takes N30's y = 2 (16,2),
+  // the last found, skipping N40 ... N60 (MD20240 = 4 reaches N30).
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-5 Y5 Z0 T1 D1\nN20 G41 CDON G1 X0 Y0 F500\n"
+      "N30 X20\nN40 Y6\nN50 X14\nN60 Y5\nN70 G40 G462 X10 Y-5\nN80 M30\n";
+  MachineData md;
+  md.set("MD20240", "4");
+  Runs on = run_both(text, md);
+  expect_both(on, {line(K::kProgrammed, {0, 0, 0}, {-5, 5, 0}), line(K::kApproach, {-5, 5, 0}, {0, 2, 0}),
+                   line(K::kOffset, {0, 2, 0}, {16, 2, 0}), line(K::kRetraction, {16, 2, 0}, {10, -5, 0})});
+  for (const RunResult* x : {&on.ref, &on.fast}) EXPECT_TRUE(has_decision(*x, "TRC-CD-5", "earlier-block"));
+  std::string off = text;
+  off.replace(off.find("CDON"), 4, "CDOF");
+  Runs of = run_both(off, md);
+  expect_both(of, {line(K::kProgrammed, {0, 0, 0}, {-5, 5, 0}), line(K::kApproach, {-5, 5, 0}, {0, 2, 0}),
+                   line(K::kOffset, {0, 2, 0}, {18, 2, 0}), line(K::kOffset, {18, 2, 0}, {18, 4, 0}),
+                   line(K::kOffset, {18, 4, 0}, {16, 4, 0}), line(K::kRetraction, {16, 4, 0}, {10, -5, 0})});
+}
+
+// covers: TRC-CD-6
+TEST(Collision, ApproachWithG46xAndCdonIsNotSupportedYet) {
+  // N40 is too short for N50 (inner corner): the approach strategy applies, with CDON in force.
+  expect_not_supported(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G0 X-5 Y-5 T1 D1\nN20 G41 CDON G461 G1 X0 Y0\n"
+      "N30 X1\nN40 Y10\nN50 X-10\nN60 G40 X-20 Y20\n",
+      4);
+}
+
 }  // namespace
 }  // namespace cutcom::test

@@ -756,9 +756,6 @@ struct Engine::State {
           k.delta[static_cast<std::size_t>(axes.ordinate)] != 0 || k.arc)
         last_block = &k;
     Element last = element_of(*last_block);
-    if (d.cdon)
-      throw UnsupportedError(  // TRC-CD-5 (planned)
-          b.words.line, "CDON search of G460/G461/G462 over earlier blocks");
     decide("TRC-DESEL-1", d.line, "deselected");
     if (d.kont) {  // TRC-KONT-1
       std::optional<int> sign;
@@ -774,12 +771,50 @@ struct Engine::State {
     double margin = 0;
     bool found = edge_hit(curve, open_el, open_radius, s * r, &open_start, false, hit, margin);
     decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
+    if (d.cdon && search_further_back(d, curve)) return;
     if (!found) return raise(10751, d.line, d.number);
     looking = false;
     if (!close_open(hit, d.line, d.number)) return;
     for (BlockCopy& k : skipped) skip_at(k, hit);
     skipped.clear();
     retraction_line(d, hit);
+  }
+
+  // TRC-CD-5: with CDON the retraction's search goes on over the held-back equidistants and circles
+  // of the blocks m-W ... m-2; the last hit found (the earliest block, on it the earliest point)
+  // is valid. True: the path was cut there and the retraction made.
+  bool search_further_back(BlockCopy& d, const EdgeCurve& curve) {
+    PathPiece aux = curve_piece(curve);
+    int lo = d.seq - md.cutcom_maxnum_check_blocks, hi = d.seq - 2;
+    bool compared = false, has_near = false;
+    double near = 0;
+    for (std::size_t i = 0; i < held.size(); ++i) {
+      const HeldRecord& rec = held[i];
+      if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
+      compared = true;
+      PieceCrossing c = piece_crossing(piece_of(rec), &aux, 1);
+      if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
+      if (c.entry_piece < 0) continue;
+      decide("TRC-CD-5", d.line, "earlier-block", has_near ? std::min(c.slack, -near) : c.slack);
+      if (!cut_at(static_cast<int>(i), c.point, c.along, d.line, d.number)) return true;
+      retraction_line(d, c.point);
+      return true;
+    }
+    if (compared)
+      decide("TRC-CD-5", d.line, "open-element", has_near ? near : -std::numeric_limits<double>::infinity());
+    return false;
+  }
+
+  // An auxiliary curve of TRC-EDGE-2..4 as a path piece: G460's segment, G461's whole circle,
+  // G462's ray as a segment reaching beyond any programmable coordinate (10^13 mm).
+  static PathPiece curve_piece(const EdgeCurve& curve) {
+    const Carrier& k = curve.carrier;
+    if (k.circle) {
+      Vec2 a{k.point.a + k.radius, k.point.b};
+      return PathPiece::circle(a, a, k.point, k.radius, 1, true);
+    }
+    if (curve.bound == EdgeCurve::Bound::kSegment) return PathPiece::segment(k.point, k.point + k.direction);
+    return PathPiece::segment(k.point, k.point + (1e13 / norm(k.direction)) * k.direction);
   }
 
   // TRC-LOOK-3: a skipped block loses its plane motion; the rest runs at `at`.
@@ -792,7 +827,7 @@ struct Engine::State {
   // approach line ends at the hit on c's equidistant, the first block and those between are skipped.
   void approach_edge(const Candidate& c) {
     if (selection.cdon)
-      throw UnsupportedError(  // TRC-CD-5 (planned)
+      throw UnsupportedError(  // TRC-CD-6 (planned)
           selection.line, "CDON search of G460/G461/G462 over later blocks");
     decide("TRC-EDGE-1", selection.line, g_code(selection.edge_strategy));
     const Element& first = open_el;
@@ -966,6 +1001,14 @@ struct Engine::State {
     const Vec2 x = c.point;
     double margin = has_near ? std::min(c.slack, -near) : c.slack;
     decide("TRC-CD-3", m.line, "cut", margin);
+    if (!cut_at(record, x, c.along, m.line, m.number)) return;
+    continue_entry(m, en, c.entry_piece, x);
+  }
+
+  // TRC-CD-4: cuts the held-back path at x on `record` (-1: on the open element), `along` it from
+  // its start; the blocks after it lose their plane motion and run at x (TRC-LOOK-3). False: an
+  // alarm stopped the run.
+  bool cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number) {
     int last_run = -1;  // the last block run again from held records
     if (record >= 0) {
       HeldRecord& rec = held[static_cast<std::size_t>(record)];
@@ -977,7 +1020,7 @@ struct Engine::State {
       // Cut at (or, rounded, next to) its start: nothing is left of it; an arc from a point to
       // itself would read as a full circle.
       double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
-      if (c.along <= 64 * std::numeric_limits<double>::epsilon() * scale) held.erase(held.begin() + record);
+      if (along <= 64 * std::numeric_limits<double>::epsilon() * scale) held.erase(held.begin() + record);
       bool rest = open.line == crossed.owner_line;  // its equidistant was still open
       for (const HeldRecord& k : held_scratch) rest = rest || k.owner_line == crossed.owner_line;
       if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
@@ -999,7 +1042,7 @@ struct Engine::State {
       if (open.line != crossed.owner_line && open.line != last_run) skip_at(open, x);
     } else {
       looking = false;
-      if (!close_open(x, m.line, m.number)) return;
+      if (!close_open(x, line_no, number)) return false;
     }
     for (BlockCopy& k : skipped) skip_at(k, x);
     skipped.clear();
@@ -1007,8 +1050,13 @@ struct Engine::State {
     dummy_count = 0;
     looking = false;
     kont_first = false;
+    return true;
+  }
+
+  // TRC-CD-4: block m goes on from the crossing along its entry.
+  void continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
     bool on_lead =
-        en.lead != Entry::Lead::kNone && c.entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
+        en.lead != Entry::Lead::kNone && entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
     if (!on_lead) return open_element(m, en.element, x, en.radius);
     double hv = h(m.start);
     BlockCopy owner = m;

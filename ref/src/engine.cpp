@@ -764,9 +764,6 @@ class Reference {
     for (const Block* d : skipped_)
       if (d->moves_in_plane()) last_block = d;
     ContourElement last = element_of(*last_block);
-    if (b.state.collision == CollisionMode::kCdon)
-      throw UnsupportedError(  // TRC-CD-5 (planned)
-          b.words.line, "CDON search of G460/G461/G462 over earlier blocks");
     decide("TRC-DESEL-1", b.words.line, "deselected");
     if (b.state.approach == ApproachMode::kKont &&
         kont_side(b, last.b, plane_point(b.end, comp_->axes), last.end_dir))  // TRC-KONT-1
@@ -779,11 +776,52 @@ class Reference {
     EdgeHit edge = edge_hit(curve, *open_, open_radius_, open_start_, false);
     std::optional<Point> hit = edge.point;
     decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", edge.margin);
+    if (b.state.collision == CollisionMode::kCdon && search_further_back(b, curve)) return;
     if (!hit) return raise(10751, b);
     looking_ = false;
     if (!close_open(*hit, b)) return;
     run_skipped(*hit);
     retraction_line(b, *hit);
+  }
+
+  // TRC-CD-5: with CDON the retraction's search goes on over the held-back equidistants and circles
+  // of the blocks m-W ... m-2 before the open element; the last hit found (the earliest block, on
+  // it the earliest point) is valid. True: the path was cut there and the retraction made.
+  bool search_further_back(const Block& b, const EdgeCurve& curve) {
+    std::vector<PathPiece> aux{curve_piece(curve)};
+    int lo = seq_of(b) - md_.cutcom_maxnum_check_blocks, hi = seq_of(b) - 2;
+    std::optional<FT> near;
+    bool compared = false;
+    std::deque<HeldRecord>& records = held_.records();
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      const HeldRecord& r = records[i];
+      if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
+      compared = true;
+      PieceCrossing c = piece_crossing(piece_of(r), aux);
+      if (c.near_miss && (!near || CGAL::to_double(*near) < CGAL::to_double(*c.near_miss))) near = c.near_miss;
+      if (!c.point) continue;
+      FT margin = c.slack;
+      if (near && CGAL::to_double(-*near) < CGAL::to_double(margin)) margin = -*near;
+      decide("TRC-CD-5", b.words.line, "earlier-block", exact_mm(margin));
+      const Point x = *c.point;
+      if (!cut_at(b, i, x)) return true;
+      retraction_line(b, x);
+      return true;
+    }
+    if (compared) decide("TRC-CD-5", b.words.line, "open-element", near ? exact_mm(*near) : std::string("-inf"));
+    return false;
+  }
+
+  // An auxiliary curve of TRC-EDGE-2..4 as a path piece: G460's segment, G461's whole circle,
+  // G462's ray as a segment reaching beyond any programmable coordinate (10^13 mm).
+  PathPiece curve_piece(const EdgeCurve& curve) const {
+    const Carrier<Kernel>& k = curve.carrier;
+    if (k.circle)
+      return PathPiece::circle(k.point + Vector(k.radius, 0), k.point + Vector(k.radius, 0), k.point, k.radius, 1,
+                               true);
+    if (curve.bound == EdgeCurve::Bound::kSegment) return PathPiece::segment(k.point, k.point + k.direction);
+    FT far = FT(10'000'000'000'000L) * FT(1'000'000'000L) / exact_root(k.direction.squared_length());
+    return PathPiece::segment(k.point, k.point + k.direction * far);
   }
 
   // TRC-EDGE-1 on approach: the first element would run backwards to meet `c`'s equidistant.
@@ -792,7 +830,7 @@ class Reference {
   void approach_edge(const Candidate& c) {
     const Block& sel = *selection_;
     if (sel.state.collision == CollisionMode::kCdon)
-      throw UnsupportedError(  // TRC-CD-5 (planned)
+      throw UnsupportedError(  // TRC-CD-6 (planned)
           sel.words.line, "CDON search of G460/G461/G462 over later blocks");
     decide("TRC-EDGE-1", sel.words.line, g_code(sel.state.edge_strategy));
     const ContourElement& first = *open_;
@@ -983,6 +1021,13 @@ class Reference {
     FT margin = c.slack;
     if (near && CGAL::to_double(-*near) < CGAL::to_double(margin)) margin = -*near;
     decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
+    if (!cut_at(m, record, x)) return;
+    continue_entry(m, en, c.entry_piece, x);
+  }
+
+  // TRC-CD-4: cuts the held-back path at x on `record` (none: on the open element); the blocks
+  // after it lose their plane motion and run at x (TRC-LOOK-3). False: an alarm stopped the run.
+  bool cut_at(const Block& reporting, std::optional<std::size_t> record, const Point& x) {
     std::vector<const Block*> passed;
     auto pass = [&](const Block* b) {
       for (const Block* p : passed)
@@ -1020,7 +1065,7 @@ class Reference {
       }
     } else {
       looking_ = false;
-      if (!close_open(x, m)) return;
+      if (!close_open(x, reporting)) return false;
     }
     for (const Block* d : skipped_) pass(d);
     for (const Block* d : dummies_) pass(d);
@@ -1030,10 +1075,16 @@ class Reference {
     looking_ = false;
     kont_first_ = false;
     run_skipped(x);
-    bool on_lead = en.lead != Entry::Lead::kNone && c.entry_piece == 0 && x != en.own_start;
+    return true;
+  }
+
+  // TRC-CD-4: block m goes on from the crossing along its entry.
+  void continue_entry(const Block& m, const Entry& en, int entry_piece, const Point& x) {
+    const Entry::Lead lead = en.lead;
+    bool on_lead = lead != Entry::Lead::kNone && entry_piece == 0 && x != en.own_start;
     if (!on_lead) return open(m, en.element, x, en.radius, x == en.normal_start);
     Decimal h = coord(m.start, comp_->axes.applicate);
-    if (en.lead == Entry::Lead::kCircle) {
+    if (lead == Entry::Lead::kCircle) {
       Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
       corner.next_line = m.words.line, corner.next_block = m.words.number;
       emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
