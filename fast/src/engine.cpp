@@ -973,11 +973,12 @@ struct Engine::State {
     int state = 0;  // 0: not built, 1: built, -1: none
     bool has_near = false;
     double near = 0;
-    // A G451 lead is the predecessor's equidistant: its neighbour m-2 is not compared with it.
+    // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
+    // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
     auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
       if (state == 0) state = entry_of(m, before, entry) ? 1 : -1;
       if (state < 0) return false;
-      bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi;
+      bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
       c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0);
       if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
       return c.entry_piece >= 0;

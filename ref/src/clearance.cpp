@@ -64,7 +64,12 @@ ClearanceCheck exact_clearance(const std::string& program, const MachineData& md
   ProgramReader reader(in, md.initial_state());
   CollectingSink sink;
   ExactPath path;
-  run_exact(reader, md, sink, path);
+  try {
+    run_exact(reader, md, sink, path);
+  } catch (const UnsupportedError&) {  // TRC-UNSUP-1: nothing to check
+    out.unsupported = true;
+    return out;
+  }
   out.alarm = !sink.result.alarms.empty();
   if (out.alarm) return out;
   // The programmed contour: compensated blocks with motion in the plane after the selection block.

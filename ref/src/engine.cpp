@@ -986,12 +986,13 @@ class Reference {
     std::optional<Entry> entry;
     std::optional<FT> near;
     bool compared = false;
-    // A G451 lead is the predecessor's equidistant: its neighbour m-2 is not compared with it.
+    // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
+    // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
     auto try_piece = [&](const PathPiece& held, int seq) -> std::optional<PieceCrossing> {
       if (!entry && !compared) entry = entry_of(m, before);
       compared = true;
       if (!entry) return std::nullopt;
-      bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi;
+      bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi && !looking_;
       PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0);
       // The largest near miss (approximately picked among exact values: see bottleneck.cpp).
       if (c.near_miss && (!near || CGAL::to_double(*near) < CGAL::to_double(*c.near_miss))) near = c.near_miss;

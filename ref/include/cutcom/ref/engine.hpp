@@ -50,9 +50,10 @@ std::optional<std::string> exact_reversal_mismatch(const std::string& original, 
 // (equidistants, transition circles) comes closer than r to a programmed compensated block.
 // Contours with circles are not checked (pairs = 0).
 struct ClearanceCheck {
-  bool alarm = false;     // an alarm stopped the run: nothing checked
-  int pairs = 0;          // (path element, programmed block) pairs decided
-  std::string violation;  // empty: none
+  bool alarm = false;        // an alarm stopped the run: nothing checked
+  bool unsupported = false;  // rejected "not supported" (TRC-UNSUP-1): nothing checked
+  int pairs = 0;             // (path element, programmed block) pairs decided
+  std::string violation;     // empty: none
 };
 ClearanceCheck exact_clearance(const std::string& program, const MachineData& md);
 
