@@ -119,9 +119,9 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       return v;
     }
     // A crossing that touches a piece's end (TRC-CD-3, margin in the band) may be taken on either
-    // piece at the joint: the engines then skip different blocks right after it.
-    if (i > 0) {
-      const Decision& p = ref.decisions[i - 1];
+    // piece at the joint: the engines then skip different blocks and hold different pieces after it.
+    for (std::size_t k = 0; k < i; ++k) {
+      const Decision& p = ref.decisions[k];
       if (p.clause == "TRC-CD-3" && p.branch == "cut" && std::fabs(margin_value(p)) <= tol.band(p.clause)) {
         v.kind = Verdict::Kind::kKnifeEdge;
         v.clause = std::string(p.clause);

@@ -32,7 +32,7 @@ Carrier<Kernel> PathPiece::carrier() const {
 namespace {
 // Margins only pick the least or largest of exact values: an approximate comparison picks one of
 // equal values as well, without the exact zero test of their difference (CORE's costliest case).
-bool approx_less(const FT& a, const FT& b) { return CGAL::to_double(a) < CGAL::to_double(b); }
+bool approx_less(const FT& a, const FT& b) { return rough(a) < rough(b); }
 
 // Where a point of the carrier lies on the piece: `position` orders points along it, `slack` is
 // the distance to the nearer end (along a segment, the chord at a circle), negative off it.

@@ -38,6 +38,11 @@ struct PieceCrossing {
 };
 // `from`: the first entry piece compared (a lead piece of the predecessor is not compared with its
 // neighbour's pieces).
+// The floating-point filter's value of an exact number, computed when it was built: enough to
+// pick the least or largest of exact margins. CGAL::to_double would evaluate the expression to 53
+// bits, which costs CORE a root-bound evaluation wherever an inner difference is exactly zero.
+inline double rough(const FT& x) { return x.Rep()->ffVal.getValue(); }
+
 PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from = 0);
 
 }  // namespace cutcom::ref

@@ -798,10 +798,10 @@ class Reference {
       if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
       compared = true;
       PieceCrossing c = piece_crossing(piece_of(r), aux);
-      if (c.near_miss && (!near || CGAL::to_double(*near) < CGAL::to_double(*c.near_miss))) near = c.near_miss;
+      if (c.near_miss && (!near || rough(*near) < rough(*c.near_miss))) near = c.near_miss;
       if (!c.point) continue;
       FT margin = c.slack;
-      if (near && CGAL::to_double(-*near) < CGAL::to_double(margin)) margin = -*near;
+      if (near && rough(-*near) < rough(margin)) margin = -*near;
       decide("TRC-CD-5", b.words.line, "earlier-block", exact_mm(margin));
       const Point x = *c.point;
       if (!cut_at(b, i, x)) return true;
@@ -994,8 +994,8 @@ class Reference {
       if (!entry) return std::nullopt;
       bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi && !looking_;
       PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0);
-      // The largest near miss (approximately picked among exact values: see bottleneck.cpp).
-      if (c.near_miss && (!near || CGAL::to_double(*near) < CGAL::to_double(*c.near_miss))) near = c.near_miss;
+      // The largest near miss (picked by the filter's value: see bottleneck.hpp).
+      if (c.near_miss && (!near || rough(*near) < rough(*c.near_miss))) near = c.near_miss;
       if (!c.point) return std::nullopt;
       return c;
     };
@@ -1020,7 +1020,7 @@ class Reference {
            const std::optional<FT>& near) {
     const Point x = *c.point;
     FT margin = c.slack;
-    if (near && CGAL::to_double(-*near) < CGAL::to_double(margin)) margin = -*near;
+    if (near && rough(-*near) < rough(margin)) margin = -*near;
     decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
     if (!cut_at(m, record, x)) return;
     continue_entry(m, en, c.entry_piece, x);
