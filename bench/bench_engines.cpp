@@ -37,7 +37,7 @@ class NullSink : public PathSink {
 // produced line by line as the reader asks for it.
 class ZigZagProgram : public std::streambuf {
  public:
-  explicit ZigZagProgram(long blocks) : total_(blocks) {}
+  explicit ZigZagProgram(long blocks, bool cdon = false) : total_(blocks), cdon_(cdon) {}
 
  protected:
   int_type underflow() override {
@@ -53,7 +53,7 @@ class ZigZagProgram : public std::streambuf {
     long k = n_++;
     if (k == 0) return "$TC_DP6[1,1]=2\n";
     if (k == 1) return "N1 G0 X-10 Y-10 T1 D1\n";
-    if (k == 2) return "N2 G1 G41 X0 Y0 F500\n";
+    if (k == 2) return cdon_ ? "N2 G1 G41 CDON X0 Y0 F500\n" : "N2 G1 G41 X0 Y0 F500\n";
     if (k == total_ + 3) return "G40 X-10 Y-10\n";
     if (k % 7 == 0) return "Z-1 M8\n";  // a block without plane motion
     long i = k - 3;
@@ -62,6 +62,7 @@ class ZigZagProgram : public std::streambuf {
     return buf;
   }
   long total_, n_ = 0;
+  bool cdon_;  // collision detection on: output held back over the MD20240 window (TRC-CD-1)
   std::string line_;
 };
 
@@ -107,11 +108,11 @@ BENCHMARK(BM_Example<true>)->Name("BM_ExampleRef")->Arg(0)->Arg(1)->Unit(benchma
 
 // fast on long programs: blocks per second, and allocations per block (0 in the steady state:
 // the count does not grow with the program length).
-void BM_FastLongProgram(benchmark::State& state) {
+void BM_FastLongProgram(benchmark::State& state, bool cdon) {
   MachineData md;
   long allocations = 0;
   for (auto _ : state) {
-    ZigZagProgram text(state.range(0));
+    ZigZagProgram text(state.range(0), cdon);
     std::istream in(&text);
     ProgramReader reader(in, md.initial_state());
     NullSink sink;
@@ -123,7 +124,8 @@ void BM_FastLongProgram(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
   state.counters["allocations"] = static_cast<double>(allocations);
 }
-BENCHMARK(BM_FastLongProgram)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FastLongProgram, cdof, false)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FastLongProgram, cdon, true)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_RefLongProgram(benchmark::State& state) {
   MachineData md;

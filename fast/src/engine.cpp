@@ -133,8 +133,10 @@ struct Engine::State {
     Decimal owner_feed;
   };
   std::vector<HeldRecord> held, held_scratch;
+  bool holding = false;  // CDON in force for the block being processed: output waits in `held`
   int traversing = 0;
-  BlockCopy prev_block;  // the last traversing block with compensation (TRC-CD-1)
+  std::array<BlockCopy, 2> prev_blocks;  // the last traversing block with compensation and the one before
+  int prev_slot = 0;
   bool has_prev = false;
 
   BlockCopy copy_of(const Block& b) const {
@@ -148,6 +150,8 @@ struct Engine::State {
     k.owner_end = owner.end, k.owner_rapid = owner.rapid, k.owner_feed = owner.feed;
     return k;
   }
+  // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
+  bool direct() const { return !holding && held.empty(); }
   // Releases the records of traversing blocks before `seq`.
   void release_before(int seq) {
     std::size_t n = 0;
@@ -200,8 +204,13 @@ struct Engine::State {
     if (b.actions_done) return;
     b.actions_done = true;
     for (int i = 0; i < b.aux_count; ++i) {
+      ActionEvent a{b.line, b.number, b.aux[static_cast<std::size_t>(i)], at};
+      if (direct()) {
+        sink.action(a);
+        continue;
+      }
       HeldRecord rec = record_of(b);
-      rec.action = {b.line, b.number, b.aux[static_cast<std::size_t>(i)], at};
+      rec.action = a;
       held.push_back(rec);
     }
   }
@@ -219,6 +228,7 @@ struct Engine::State {
     PathElement e;
     e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
     e.origin = named;
+    if (direct()) return sink.element(e);
     HeldRecord rec = record_of(owner);
     rec.is_element = true, rec.element = e;
     held.push_back(rec);
@@ -230,6 +240,7 @@ struct Engine::State {
     PathElement e;
     e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
     e.feed = owner.feed, e.origin = from_what;
+    if (direct()) return sink.element(e);
     HeldRecord rec = record_of(owner);
     rec.is_element = true, rec.element = e, rec.radius = norm(ab(from) - ab(centre));
     held.push_back(rec);
@@ -461,8 +472,10 @@ struct Engine::State {
       throw UnsupportedError(  // TRC-UNSUP-1
           b.words.line, "change of compensation side G41/G42 before the first contour block");
     if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
-    BlockCopy first = copy_of(b);
-    prev_block = first, has_prev = true;
+    prev_slot ^= 1;
+    prev_blocks[static_cast<std::size_t>(prev_slot)] = copy_of(b);
+    const BlockCopy& first = prev_blocks[static_cast<std::size_t>(prev_slot)];
+    has_prev = true;
     Element e = element_of(first);
     double radius = 0;
     if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
@@ -591,13 +604,17 @@ struct Engine::State {
   // --- phase: compensation active --------------------------------------------------------------
   void active(const Block& b) {
     if (!check_active_block(b)) return;
+    const BlockCopy* current = nullptr;  // a traversing block, converted once
     if (b.state.side == side && b.moves_in_plane()) {
+      int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
+      prev_blocks[static_cast<std::size_t>(slot)] = copy_of(b);
+      const BlockCopy& before = prev_blocks[static_cast<std::size_t>(prev_slot)];
       bool had_prev = has_prev;
-      BlockCopy before = prev_block;
-      prev_block = copy_of(b), has_prev = true;
-      if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(prev_block, before)) return;
+      prev_slot = slot, has_prev = true;
+      current = &prev_blocks[static_cast<std::size_t>(slot)];
+      if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(*current, before)) return;
     }
-    if (looking) return look_ahead(b);
+    if (looking) return look_ahead(b, current);
     if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
     if (b.state.side == Side::kOff) {
       if (!b.programs_plane_axis()) {
@@ -607,13 +624,12 @@ struct Engine::State {
       return deselect(b);
     }
     if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3
-    corner(b);
+    corner(b, *current);
   }
 
   Carrier carrier_of(const Element& e, double radius) const { return fast::carrier_of(e, radius, s * r); }
 
-  void corner(const Block& b) {
-    const BlockCopy copy = copy_of(b);  // converted once per block
+  void corner(const Block& b, const BlockCopy& copy) {
     Element next = element_of(copy);
     double next_radius = 0;
     if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
@@ -704,7 +720,7 @@ struct Engine::State {
     if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, too_short.words.line, too_short.words.number);
   }
 
-  void look_ahead(const Block& b) {
+  void look_ahead(const Block& b, const BlockCopy* current) {
     if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
     if (b.state.side != side && b.state.side != Side::kOff) {  // the contour ends before an intersection
       decide("TRC-LOOK-2", b.words.line, "none");
@@ -716,7 +732,7 @@ struct Engine::State {
     }
     dummy_run = 0;
     ++examined;
-    BlockCopy c = copy_of(b);
+    const BlockCopy& c = *current;
     Element cand = element_of(c);
     double radius = 0;
     if (!equidistant_exists(b, cand, radius)) return pass_over(c);
@@ -1220,6 +1236,7 @@ void Engine::push(const Block& b) {
   if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
     throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
   if (b.moves_in_plane()) ++st.traversing;
+  st.holding = b.state.collision == CollisionMode::kCdon;
   if (b.is_arc() && !st.arc_is_consistent(b)) return;
   switch (st.phase) {
     case State::Phase::kOff:
