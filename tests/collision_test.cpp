@@ -142,13 +142,27 @@ TEST(Collision, RetractionWithCdonSearchesFurtherBack) {
                    line(K::kOffset, {18, 4, 0}, {16, 4, 0}), line(K::kRetraction, {16, 4, 0}, {10, -5, 0})});
 }
 
-// covers: TRC-CD-6
-TEST(Collision, ApproachWithG46xAndCdonIsNotSupportedYet) {
-  // N40 is too short for N50 (inner corner): the approach strategy applies, with CDON in force.
-  expect_not_supported(
-      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G0 X-5 Y-5 T1 D1\nN20 G41 CDON G461 G1 X0 Y0\n"
-      "N30 X1\nN40 Y10\nN50 X-10\nN60 G40 X-20 Y20\n",
-      4);
+// covers: TRC-CD-6 TRC-EDGE-4 TRC-EDGE-1
+TEST(Collision, ApproachWithCdonSearchesFurtherAhead) {
+  // The retraction example run backwards (G42): N30 up 1 mm is too short for N40 (inner corner);
+  // G462 extends N30's equidistant x = 16 downwards from (16,5). CDOF meets N40's y = 4 at (16,4);
+  // CDON searches the later blocks (MD20240 = 4 after the selection) and takes N60's y = 2 at
+  // (16,2), the last found: N30 ... N50 lose their plane motion.
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X10 Y15 Z0 T1 D1\n"
+      "N20 G42 CDON G462 G1 X14 Y5 F500\nN30 Y6\nN40 X20\nN50 Y0\nN60 X0\nN70 G40 X-5 Y-5\nN80 M30\n";
+  MachineData md;
+  md.set("MD20240", "4");
+  Runs on = run_both(text, md);
+  expect_both(on, {line(K::kProgrammed, {0, 0, 0}, {10, 15, 0}), line(K::kApproach, {10, 15, 0}, {16, 2, 0}),
+                   line(K::kOffset, {16, 2, 0}, {0, 2, 0}), line(K::kRetraction, {0, 2, 0}, {-5, -5, 0})});
+  for (const RunResult* x : {&on.ref, &on.fast}) EXPECT_TRUE(has_decision(*x, "TRC-CD-6", "later-block"));
+  std::string off = text;
+  off.replace(off.find("CDON"), 4, "CDOF");
+  Runs of = run_both(off, md);
+  expect_both(of, {line(K::kProgrammed, {0, 0, 0}, {10, 15, 0}), line(K::kApproach, {10, 15, 0}, {16, 4, 0}),
+                   line(K::kOffset, {16, 4, 0}, {18, 4, 0}), line(K::kOffset, {18, 4, 0}, {18, 2, 0}),
+                   line(K::kOffset, {18, 2, 0}, {0, 2, 0}), line(K::kRetraction, {0, 2, 0}, {-5, -5, 0})});
 }
 
 }  // namespace

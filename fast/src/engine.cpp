@@ -138,6 +138,8 @@ struct Engine::State {
   std::array<BlockCopy, 2> prev_blocks;  // the last traversing block with compensation and the one before
   int prev_slot = 0;
   bool has_prev = false;
+  EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until
+  int approach_until = -1;
 
   BlockCopy copy_of(const Block& b) const {
     BlockCopy c = BlockCopy::of(b);
@@ -453,6 +455,7 @@ struct Engine::State {
     selection = copy_of(b);
     selection_from_tool = false;
     has_prev = false;
+    approach_until = -1;
     dummy_count = 0;
     phase = Phase::kApproach;
   }
@@ -612,6 +615,7 @@ struct Engine::State {
       bool had_prev = has_prev;
       prev_slot = slot, has_prev = true;
       current = &prev_blocks[static_cast<std::size_t>(slot)];
+      if (approach_until >= 0 && approach_further_ahead(b, *current)) return;
       if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(*current, before)) return;
     }
     if (looking) return look_ahead(b, current);
@@ -842,9 +846,6 @@ struct Engine::State {
   // TRC-EDGE-1 on approach: the first element would run backwards to meet c's equidistant; the
   // approach line ends at the hit on c's equidistant, the first block and those between are skipped.
   void approach_edge(const Candidate& c) {
-    if (selection.cdon)
-      throw UnsupportedError(  // TRC-CD-6 (planned)
-          selection.line, "CDON search of G460/G461/G462 over later blocks");
     decide("TRC-EDGE-1", selection.line, g_code(selection.edge_strategy));
     const Element& first = open_el;
     EdgeCurve curve = edge_curve(selection.edge_strategy, r, first.start, open_start, -1.0 * first.start_tangent(),
@@ -867,6 +868,36 @@ struct Engine::State {
     BlockCopy block = *c.block;
     Element element = *c.element;
     open_element(block, element, hit, c.radius);
+    // TRC-CD-6: with CDON the later blocks of the window are searched too.
+    if (selection.cdon) approach_curve = curve, approach_until = selection.seq + md.cutcom_maxnum_check_blocks;
+  }
+
+  // TRC-CD-6: with CDON the approach's search goes on over the later blocks while the approach line
+  // is held back (up to MD20240 traversing blocks after the selection block); the last hit found
+  // is valid: the approach line ends there and the blocks between lose their plane motion.
+  bool approach_further_ahead(const Block& b, const BlockCopy& m) {
+    if (m.seq > approach_until || !m.cdon) {
+      approach_until = -1;
+      return false;
+    }
+    Element e = element_of(m);
+    double radius = 0;
+    if (e.arc) {
+      radius = e.equidistant_radius(s * r);
+      if (!(radius > 0)) return false;
+    }
+    Vec2 hit;
+    double margin = 0;
+    bool found = edge_hit(approach_curve, e, radius, s * r, nullptr, true, hit, margin);
+    decide("TRC-CD-6", b.words.line, found ? "later-block" : "none", margin);
+    if (!found) return false;
+    for (std::size_t i = 0; i < held.size(); ++i) {
+      if (!held[i].is_element || held[i].element.origin.kind != OriginKind::kApproach) continue;
+      if (!cut_at(static_cast<int>(i), hit, std::numeric_limits<double>::infinity(), m.line, m.number)) return true;
+      open_element(m, e, hit, radius);
+      return true;
+    }
+    return false;
   }
 
   // --- CDON: bottleneck detection (TRC-CD-*, bottleneck.cpp) ------------------------------------

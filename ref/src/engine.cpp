@@ -253,6 +253,7 @@ class Reference {
                          ActiveEdge::of(b.state)};
     selection_ = &b;
     prev_block_ = nullptr;
+    approach_search_.reset();
     dummies_.clear();
     phase_ = Phase::kApproach;
   }
@@ -454,6 +455,7 @@ class Reference {
     if (b.state.side == comp_->side && b.moves_in_plane()) {
       const Block* before = prev_block_;
       prev_block_ = &b;
+      if (approach_search_ && approach_further_ahead(b)) return;
       if (b.state.collision == CollisionMode::kCdon && before && bottleneck(b, *before)) return;
     }
     if (looking_) return look_ahead(b);
@@ -829,9 +831,6 @@ class Reference {
   // between are skipped.
   void approach_edge(const Candidate& c) {
     const Block& sel = *selection_;
-    if (sel.state.collision == CollisionMode::kCdon)
-      throw UnsupportedError(  // TRC-CD-6 (planned)
-          sel.words.line, "CDON search of G460/G461/G462 over later blocks");
     decide("TRC-EDGE-1", sel.words.line, g_code(sel.state.edge_strategy));
     const ContourElement& first = *open_;
     EdgeCurve curve = edge_curve(sel.state.edge_strategy, first.a, open_start_, -first.start_dir,
@@ -854,7 +853,43 @@ class Reference {
     looking_ = false;
     run_skipped(*hit);
     open(*c.block, *c.element, *hit, c.radius);
+    // TRC-CD-6: with CDON the later blocks of the window are searched too.
+    if (sel.state.collision == CollisionMode::kCdon)
+      approach_search_ = ApproachSearch{curve, seq_of(sel) + md_.cutcom_maxnum_check_blocks};
   }
+
+  // TRC-CD-6: with CDON the approach's search goes on over the later blocks while the approach line
+  // is held back (up to MD20240 traversing blocks after the selection block); the last hit found
+  // is valid: the approach line ends there instead and the blocks between lose their plane motion.
+  // True: block m was entered so.
+  bool approach_further_ahead(const Block& m) {
+    if (seq_of(m) > approach_search_->until || m.state.collision != CollisionMode::kCdon) {
+      approach_search_.reset();
+      return false;
+    }
+    ContourElement e = element_of(m);
+    FT radius;
+    if (e.is_arc()) {
+      radius = equidistant_radius<Kernel>(e.radius, e.sense, comp_->side_radius);
+      if (CGAL::sign(radius) != CGAL::POSITIVE) return false;
+    }
+    EdgeHit hit = edge_hit(approach_search_->curve, e, radius, std::nullopt, true);
+    decide("TRC-CD-6", m.words.line, hit.point ? "later-block" : "none", hit.margin);
+    if (!hit.point) return false;
+    std::deque<HeldRecord>& records = held_.records();
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      if (!records[i].element || records[i].element->origin.kind != OriginKind::kApproach) continue;
+      if (!cut_at(m, i, *hit.point)) return true;
+      open(m, e, *hit.point, radius);
+      return true;
+    }
+    return false;
+  }
+  struct ApproachSearch {
+    EdgeCurve curve;
+    int until;  // the last traversing block searched
+  };
+  std::optional<ApproachSearch> approach_search_;
 
   // --- CDON: bottleneck detection (TRC-CD-*, bottleneck.cpp) ------------------------------------
   // TRC-CD-2: a block's entry, built provisionally from its predecessor: the transition circle at an outer
