@@ -986,7 +986,8 @@ struct Engine::State {
       return false;
     }
     double left = extent_of(next, en.radius, x).left;
-    if (left < 0) return decide("TRC-CD-2", m.line, "no-entry", left), false;
+    decide("TRC-CD-2", m.line, left < 0 ? "no-entry" : "entry", left);
+    if (left < 0) return false;
     en.own_start = x;
     en.pieces[en.count++] = equidistant_from(x, false);
     return true;

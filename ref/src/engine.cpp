@@ -971,7 +971,9 @@ class Reference {
       return std::nullopt;
     }
     Extent reach = extent_of(next, en.radius, *x);
-    if (reach.after_end == CGAL::NEGATIVE) return decide("TRC-CD-2", line, "no-entry", reach.left_text), std::nullopt;
+    bool beyond = reach.after_end == CGAL::NEGATIVE;
+    decide("TRC-CD-2", line, beyond ? "no-entry" : "entry", reach.left_text);
+    if (beyond) return std::nullopt;
     en.own_start = *x;
     en.pieces.push_back(equidistant_from(*x, false));
     return en;
