@@ -67,7 +67,7 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefOnCirclesNearTheToolRadius, ()) {
 }
 
 // covers: PROP-DIFF-1 TRC-KONT-1 TRC-KONT-2 TRC-KONT-3 TRC-KONT-4 TRC-APPR-NORM-1 TRC-RETR-NORM-1 TRC-EDGE-1
-// covers: TRC-EDGE-2 TRC-EDGE-3 TRC-EDGE-4 TRC-EDGE-5
+// covers: TRC-EDGE-2 TRC-EDGE-3 TRC-EDGE-4 TRC-EDGE-5 TRC-EDGE-6
 RC_GTEST_PROP(Differential, FastAgreesWithRefAtApproachAndRetraction, ()) {
   ContourCase c = *around_ends();
   // Which end rules the case reached (ref's trace), to show the generator reaches them.
@@ -76,6 +76,7 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefAtApproachAndRetraction, ()) {
   for (const Decision& d : r.ref.decisions) {
     if (d.clause == "TRC-KONT-3" || d.clause == "TRC-KONT-4") reached = std::string(d.clause);
     if (d.clause == "TRC-EDGE-1") reached = "EDGE " + std::string(d.branch);
+    if (d.clause == "TRC-EDGE-6") reached = "KONT around a short block, " + std::string(d.branch);
   }
   RC_TAG(reached);
   check_agreement(c);

@@ -197,13 +197,34 @@ TEST(ApproachRetraction, G460ApproachFindsNoIntersection) {
 namespace cutcom::test {
 namespace {
 
-// covers: TRC-EDGE-6 TRC-KONT-1
-TEST(ApproachRetraction, KontFromBehindWithATooShortEndBlockIsNotSupportedYet) {
+// covers: TRC-EDGE-6 TRC-KONT-1 TRC-KONT-2 TRC-LOOK-3
+TEST(ApproachRetraction, KontFromBehindAfterATooShortLastBlockMeetsTheInsertedCircle) {
+  // r = 5, G41: N30 along y = 0 (equidistant y = 5), N40 3 mm up (x = 35) is too short. The end
+  // (60,20) lies behind N40's line x = 40, 26.2 mm from E = (40,3): the circle r about E is
+  // inserted (G450, 49.6 deg) whatever G462 says. N30's equidistant meets it first at
+  // (40 - sqrt21, 5); the rest of the circle, clockwise, runs to R = E + 5 (-17,20)/sqrt689;
+  // N40 is skipped; then the line to (60,20).
+  Runs r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F100\nN30 X40\n"
+      "N40 Y3\nN50 G40 KONT X60 Y20\n");
+  const double s21 = std::sqrt(21.0), s689 = std::sqrt(689.0);
+  PathPoint x{40 - s21, 5, 0}, rp{40 - 85 / s689, 3 + 100 / s689, 0};
+  expect_both(r,
+              {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 5, 0}),
+               line(K::kOffset, {0, 5, 0}, x), arc(x, rp, {40, 3, 0}, false), line(K::kRetraction, rp, {60, 20, 0})});
+  for (const RunResult* run : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*run, "TRC-EDGE-6", "circle"));
+    EXPECT_TRUE(has_decision(*run, "TRC-LOOK-3", "skipped"));
+  }
+}
+
+// covers: TRC-EDGE-7
+TEST(ApproachRetraction, KontFromBehindNotSupportedYetWithG451OrOnApproach) {
   const std::string tool10 = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=10\n";
   const std::pair<std::string, int> cases[] = {
-      // Retraction: N40 (3 mm up at x = 40, compensation on -X) is too short; the end (60,20) lies behind.
+      // Retraction as above with G451: the intersection variant is not built.
       {"$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F100\nN30 X40\nN40 Y3\n"
-       "N50 G40 KONT X60 Y20\n",
+       "N50 G40 KONT G451 X60 Y20\n",
        7},
       // Approach: from (80,20), behind N60's line x = 50 (G42: compensation on -X); N60 is too short.
       {tool10 + "N30 X0 Y0 F10000 T1 D1\nN40 X80 Y20\nN50 G42 KONT X50 Y5\nN60 Y0\nN70 X30\nN80 X20 Y-5\n"

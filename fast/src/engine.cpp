@@ -301,7 +301,7 @@ struct Engine::State {
       // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
       if (approach_pending && candidate) return approach_edge(*candidate), false;
       if (kont_first && candidate)
-        throw UnsupportedError(  // TRC-EDGE-6 (planned)
+        throw UnsupportedError(  // TRC-EDGE-7 (planned)
             selection.line, "KONT approach from behind the contour before a too-short first block");
       raise(10751, alarm_line, alarm_block);
       return false;
@@ -777,12 +777,12 @@ struct Engine::State {
         last_block = &k;
     Element last = element_of(*last_block);
     decide("TRC-DESEL-1", d.line, "deselected");
-    if (d.kont) {  // TRC-KONT-1
-      std::optional<int> sign;
-      if (!last.arc) sign = exact_cross_sign(last_block->delta, d.delta, 1);
-      if (kont_side(d, last.end, ab(d.end), last.end_tangent(), sign))
-        throw UnsupportedError(  // TRC-EDGE-6 (planned)
-            b.words.line, "KONT retraction from behind the contour after a too-short last block");
+    if (d.kont) {  // TRC-KONT-1/2, then TRC-EDGE-6
+      Vec2 p = ab(d.end);
+      Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt};
+      if (!last.arc) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
+      if (kont_behind(d, k, k.d1, 10756)) return retract_edge_around(d, *last_block, k);
+      if (stopped) return;
     }
     decide("TRC-EDGE-1", d.line, g_code(d.edge_strategy));
     Vec2 normal_end = Element::offset(last.end, last.end_tangent(), s * r);
@@ -1185,6 +1185,39 @@ struct Engine::State {
   }
 
   // TRC-KONT-3 / TRC-KONT-4 on retraction: the retraction line meets the last block at an outer corner.
+  // TRC-EDGE-6 (digest §2.5 rule 3): KONT from behind after a too-short last block: the open
+  // element meets the inserted circle about the last block's end point (the first point along it)
+  // and the rest of the circle is traversed; if it misses the circle, it meets the retraction line.
+  void retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k) {
+    if (!kont_circle(d, k))
+      throw UnsupportedError(  // TRC-EDGE-7 (planned)
+          d.line, "KONT retraction from behind by intersection (G451) after a too-short last block");
+    Vec2 rp = Element::offset(k.vertex, (1.0 / norm(k.d2)) * k.d2, s * r);
+    EdgeCurve circle;
+    circle.carrier.circle = true, circle.carrier.point = k.vertex, circle.carrier.radius = r;
+    Vec2 x;
+    double margin = 0;
+    bool on_circle = edge_hit(circle, open_el, open_radius, s * r, &open_start, false, x, margin);
+    decide("TRC-EDGE-6", d.line, on_circle ? "circle" : "line", margin);
+    if (!on_circle) {
+      EdgeCurve line;
+      line.bound = EdgeCurve::Bound::kSegment, line.carrier.point = rp, line.carrier.direction = k.point - rp;
+      bool found = edge_hit(line, open_el, open_radius, s * r, &open_start, false, x, margin);
+      decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
+      if (!found) return raise(10751, d.line, d.number);
+    }
+    looking = false;
+    if (!close_open(x, d.line, d.number)) return;
+    for (BlockCopy& k2 : skipped) skip_at(k2, x);
+    skipped.clear();
+    if (!on_circle) return retraction_line(d, x);
+    Origin corner = origin(last_block, OriginKind::kTransitionCircle);
+    corner.next_line = d.line, corner.next_block = d.number;
+    double hv = h(d.start);
+    arc(d, xyz(x, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);
+    retraction_line(d, rp);
+  }
+
   void retract_around(BlockCopy& last, const Kont& k) {
     Vec2 rp = Element::offset(k.vertex, (1.0 / norm(k.d2)) * k.d2, s * r);
     bool circle = kont_circle(last, k);

@@ -508,7 +508,7 @@ class Reference {
       // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
       if (approach_ && candidate) return approach_edge(*candidate), false;
       if (kont_first_ && candidate)
-        throw UnsupportedError(  // TRC-EDGE-6 (planned)
+        throw UnsupportedError(  // TRC-EDGE-7 (planned)
             selection_->words.line, "KONT approach from behind the contour before a too-short first block");
       raise(10751, reporting);
       return false;
@@ -767,10 +767,11 @@ class Reference {
       if (d->moves_in_plane()) last_block = d;
     ContourElement last = element_of(*last_block);
     decide("TRC-DESEL-1", b.words.line, "deselected");
-    if (b.state.approach == ApproachMode::kKont &&
-        kont_side(b, last.b, plane_point(b.end, comp_->axes), last.end_dir))  // TRC-KONT-1
-      throw UnsupportedError(                                                 // TRC-EDGE-6 (planned)
-          b.words.line, "KONT retraction from behind the contour after a too-short last block");
+    if (b.state.approach == ApproachMode::kKont) {  // TRC-KONT-1/2, then TRC-EDGE-6
+      KontCorner k = retraction_corner(b, last);
+      if (kont_behind(b, k, k.d1, 10756)) return retract_edge_around(b, *last_block, k);
+      if (stopped_) return;
+    }
     decide("TRC-EDGE-1", b.words.line, g_code(b.state.edge_strategy));
     Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
     EdgeCurve curve =
@@ -1186,15 +1187,7 @@ class Reference {
           b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
     decide("TRC-DESEL-1", b.words.line, "deselected");
     if (b.state.approach == ApproachMode::kKont) {
-      const ContourElement& last = *open_;
-      KontCorner k;
-      k.vertex = last.b, k.point = plane_point(b.end, comp_->axes);
-      k.d1 = last.end_dir, k.d2 = k.point - k.vertex;
-      if (last.rational)
-        k.r1 = last.end_tangent,
-        k.r2 = RationalVector{
-            mpq_class(units_of(coord(b.end, comp_->axes.abscissa)) - units_of(coord(last.end3, comp_->axes.abscissa))),
-            mpq_class(units_of(coord(b.end, comp_->axes.ordinate)) - units_of(coord(last.end3, comp_->axes.ordinate)))};
+      KontCorner k = retraction_corner(b, *open_);
       if (kont_behind(b, k, k.d1, 10756)) return retract_around(b, k);
       if (stopped_) return;
     }
@@ -1202,6 +1195,53 @@ class Reference {
     if (!close_open(end, b, true)) return;
     run_held_back(end);
     retraction_line(b, end);
+  }
+
+  // The corner the retraction line (to b's end) makes with the last block at its end point.
+  KontCorner retraction_corner(const Block& b, const ContourElement& last) const {
+    KontCorner k;
+    k.vertex = last.b, k.point = plane_point(b.end, comp_->axes);
+    k.d1 = last.end_dir, k.d2 = k.point - k.vertex;
+    if (last.rational)
+      k.r1 = last.end_tangent,
+      k.r2 = RationalVector{
+          mpq_class(units_of(coord(b.end, comp_->axes.abscissa)) - units_of(coord(last.end3, comp_->axes.abscissa))),
+          mpq_class(units_of(coord(b.end, comp_->axes.ordinate)) - units_of(coord(last.end3, comp_->axes.ordinate)))};
+    return k;
+  }
+
+  // TRC-EDGE-6 (digest §2.5 rule 3): KONT from behind after a too-short last block. The
+  // travel-around circle about the last block's end point is inserted whatever G460-G462 say: the
+  // open element ends where it meets the circle (the first point along it, as G461 would find)
+  // and the rest of the circle is traversed; if it misses the circle, where it meets the
+  // retraction line. The blocks after the open element are skipped (TRC-LOOK-3).
+  void retract_edge_around(const Block& b, const Block& last_block, const KontCorner& k) {
+    if (!kont_circle(b, k))
+      throw UnsupportedError(  // TRC-EDGE-7 (planned)
+          b.words.line, "KONT retraction from behind by intersection (G451) after a too-short last block");
+    Point r_point = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d2), comp_->side_radius);
+    EdgeCurve circle;
+    circle.carrier.circle = true, circle.carrier.point = k.vertex, circle.carrier.radius = leaf(comp_->radius);
+    EdgeHit hit = edge_hit(circle, *open_, open_radius_, open_start_, false);
+    decide("TRC-EDGE-6", b.words.line, hit.point ? "circle" : "line", hit.margin);
+    bool on_circle = hit.point.has_value();
+    if (!on_circle) {
+      EdgeCurve line;
+      line.bound = EdgeCurve::Bound::kSegment, line.carrier.point = r_point, line.carrier.direction = k.point - r_point;
+      hit = edge_hit(line, *open_, open_radius_, open_start_, false);
+      decide("TRC-EDGE-5", b.words.line, hit.point ? "hit" : "none", hit.margin);
+      if (!hit.point) return raise(10751, b);
+    }
+    const Point x = *hit.point;
+    looking_ = false;
+    if (!close_open(x, b)) return;
+    run_skipped(x);
+    if (!on_circle) return retraction_line(b, x);
+    Origin corner = origin(last_block, OriginKind::kTransitionCircle);
+    corner.next_line = b.words.line, corner.next_block = b.words.number;
+    Decimal h = coord(b.start, comp_->axes.applicate);
+    emit_arc(b, at({x, h}), at({r_point, h}), at({k.vertex, h}), comp_->side_radius, comp_->s < 0, corner, comp_->axes);
+    retraction_line(b, r_point);
   }
 
   // TRC-RETR-NORM-1: the straight line to the programmed end point, a tool-centre position.
