@@ -1,0 +1,242 @@
+// fast: collision detection CDON (TRC-CD-*): a block's entry against the held-back output and the
+// cut there. Geometry in bottleneck.cpp.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "engine_state.hpp"
+
+namespace cutcom::fast {
+
+bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
+  en.element = element_of(m);
+  en.before_line = before.line, en.before_number = before.number;
+  const Element& next = en.element;
+  double sr = s * r;
+  if (next.arc) {
+    en.radius = next.equidistant_radius(sr);
+    if (!(en.radius > 0)) return decide("TRC-CD-2", m.line, "collapsed", en.radius), false;
+  }
+  en.normal_start = Element::offset(next.start, next.start_tangent(), sr);
+  Vec2 end = Element::offset(next.end, next.end_tangent(), sr);
+  auto equidistant_from = [&](Vec2 from, bool full) {
+    return next.arc ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
+                    : PathPiece::segment(from, end);
+  };
+  en.before_element = element_of(before);
+  const Element& prev = en.before_element;
+  double prev_radius = prev.arc ? prev.equidistant_radius(sr) : 0;
+  en.before_radius = prev_radius;
+  en.vertex = prev.end;
+  en.own_start = en.normal_start;
+  Corner c = classify_corner(prev.end_tangent(), next.start_tangent(), s);
+  if (!prev.arc && !next.arc) decide_kind_exactly(before, m, c);
+  if (prev.arc && !(prev_radius > 0)) {
+    decide("TRC-CD-2", m.line, "after-collapse", prev_radius);
+    c.kind = Corner::Kind::kTangent;
+  } else {
+    static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
+    decide("TRC-CD-2", m.line, kKind[static_cast<int>(c.kind)], c.sine);
+  }
+  en.count = 0;
+  Vec2 prev_end = Element::offset(prev.end, prev.end_tangent(), sr);
+  if (c.kind == Corner::Kind::kOuter && !outer_corner_circle(m.line, m.g451, c, false)) {
+    // G451 (TRC-G451-1, TRC-ARC-CORNER-1): both equidistants extended to their intersection;
+    // none found (circles) is the circle (TRC-ARC-CORNER-2).
+    Vec2 x;
+    bool found = true;
+    if (!prev.arc && !next.arc)
+      x = Element::offset(prev.end, prev.unit, sr) - corner_trim(c, s, r) * prev.unit;
+    else
+      found = nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.end,
+                                   next.start_tangent(), x);
+    if (found) {
+      en.own_start = x;
+      en.lead = Entry::Lead::kExtension;
+      en.pieces[en.count++] = prev.arc ? PathPiece::circle(prev_end, x, prev.centre, prev_radius, prev.sense)
+                                       : PathPiece::segment(prev_end, x);
+      en.pieces[en.count++] = equidistant_from(x, false);
+      return true;
+    }
+  }
+  if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) {
+    en.pieces[en.count++] = PathPiece::circle(prev_end, en.normal_start, prev.end, r, -s);
+    en.lead = Entry::Lead::kCircle;
+  }
+  if (c.kind != Corner::Kind::kInner) {
+    en.pieces[en.count++] = equidistant_from(en.normal_start, next.full);
+    return true;
+  }
+  Carrier u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
+  Vec2 x;
+  if (!nearest_intersection(u, v, prev.end, next.start_tangent(), x)) {
+    decide("TRC-CD-2", m.line, "no-entry",
+           u.circle || v.circle ? carrier_gap(u, v) : -std::numeric_limits<double>::infinity());
+    return false;
+  }
+  double left = extent_of(next, en.radius, x).left;
+  decide("TRC-CD-2", m.line, left < 0 ? "no-entry" : "entry", left);
+  if (left < 0) return false;
+  en.own_start = x;
+  en.pieces[en.count++] = equidistant_from(x, false);
+  return true;
+}
+
+PathPiece Engine::State::piece_of(const HeldRecord& rec) const {
+  const PathElement& e = rec.element;
+  Vec2 a = ab(e.start), b = ab(e.end);
+  if (e.type == ElementType::kLine) return PathPiece::segment(a, b);
+  return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
+}
+
+PathPiece Engine::State::open_piece() const {
+  Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+  if (!open_el.arc) return PathPiece::segment(open_start, end);
+  Vec2 normal_start = Element::offset(open_el.start, open_el.start_tangent(), s * r);
+  bool full = open_el.full && open_start.a == normal_start.a && open_start.b == normal_start.b;
+  return PathPiece::circle(open_start, end, open_el.centre, open_radius, open_el.sense, full);
+}
+
+bool Engine::State::is_candidate(const HeldRecord& rec) {
+  return rec.is_element &&
+         (rec.element.origin.kind == OriginKind::kOffset || rec.element.origin.kind == OriginKind::kTransitionCircle);
+}
+
+bool Engine::State::bottleneck(const BlockCopy& m, const BlockCopy& before) {
+  if (r == 0) return false;  // no width: nothing to collide
+  int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
+  Entry entry;
+  int state = 0;  // 0: not built, 1: built, -1: none
+  bool has_near = false;
+  double near = 0;
+  // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
+  // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
+  auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
+    if (state == 0) state = entry_of(m, before, entry) ? 1 : -1;
+    if (state < 0) return false;
+    bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
+    c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0);
+    if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
+    return c.entry_piece >= 0;
+  };
+  PieceCrossing c;
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    const HeldRecord& rec = held[i];
+    if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
+    if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, has_near, near), true;
+    if (state < 0) return false;
+  }
+  if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
+    return cut(m, entry, -1, c, has_near, near), true;
+  if (state > 0) decide("TRC-CD-3", m.line, "none", has_near ? near : -std::numeric_limits<double>::infinity());
+  return false;
+}
+
+void Engine::State::cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, bool has_near,
+                        double near) {
+  const Vec2 x = c.point;
+  double margin = has_near ? std::min(c.slack, -near) : c.slack;
+  decide("TRC-CD-3", m.line, "cut", margin);
+  if (!cut_at(record, x, c.along, m.line, m.number)) return;
+  continue_entry(m, en, c.entry_piece, x);
+}
+
+bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number) {
+  int last_run = -1;  // the last block run again from held records
+  if (record >= 0) {
+    HeldRecord& rec = held[static_cast<std::size_t>(record)];
+    const HeldRecord crossed = rec;
+    rec.element.end = xyz(x, h(rec.element.end));
+    const PathPoint end = rec.element.end;
+    held_scratch.assign(held.begin() + record + 1, held.end());
+    held.erase(held.begin() + record + 1, held.end());
+    // Cut at (or, rounded, next to) its start: nothing is left of it; an arc from a point to
+    // itself would read as a full circle.
+    double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
+    if (along <= 64 * std::numeric_limits<double>::epsilon() * scale) held.erase(held.begin() + record);
+    bool rest = open.line == crossed.owner_line;  // its equidistant was still open
+    for (const HeldRecord& k : held_scratch) rest = rest || k.owner_line == crossed.owner_line;
+    if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
+    for (std::size_t i = 0; i < held_scratch.size(); ++i) {
+      const HeldRecord& k = held_scratch[i];
+      if (k.owner_line == crossed.owner_line) continue;
+      if (k.owner_line != last_run) {
+        if (last_run >= 0) infeed_of(held_scratch[i - 1], x);
+        decide("TRC-LOOK-3", k.owner_line, "skipped");
+        last_run = k.owner_line;
+      }
+      if (!k.is_element) {
+        HeldRecord a = k;
+        a.action.at = xyz(x, h(k.owner_start));
+        held.push_back(a);
+      }
+    }
+    if (last_run >= 0) infeed_of(held_scratch.back(), x);
+    if (open.line != crossed.owner_line && open.line != last_run) skip_at(open, x);
+  } else {
+    looking = false;
+    if (!close_open(x, line_no, number)) return false;
+  }
+  for (BlockCopy& k : skipped) skip_at(k, x);
+  skipped.clear();
+  for (int i = 0; i < dummy_count; ++i) skip_at(dummies[static_cast<std::size_t>(i)], x);
+  dummy_count = 0;
+  looking = false;
+  kont_first = false;
+  return true;
+}
+
+void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
+  bool on_lead = en.lead != Entry::Lead::kNone && entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
+  if (!on_lead) return open_element(m, en.element, x, en.radius);
+  double hv = h(m.start);
+  BlockCopy owner = m;
+  Origin named;
+  named.line = en.before_line, named.block = en.before_number;
+  if (en.lead == Entry::Lead::kCircle) {
+    named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
+    arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
+    return open_element(owner, en.element, en.normal_start, en.radius);
+  }
+  // The rest of the predecessor's extended equidistant, at m's applicate, named after it.
+  named.kind = OriginKind::kOffset;
+  const Element& p = en.before_element;
+  if (p.arc)
+    arc(owner, xyz(x, hv), xyz(en.own_start, hv), xyz(p.centre, hv), p.sense > 0, named);
+  else
+    line(owner, xyz(x, hv), xyz(en.own_start, hv), named, owner.rapid);
+  open_element(owner, en.element, en.own_start, en.radius);
+}
+
+bool Engine::State::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
+  PathPiece aux = curve_piece(curve);
+  int lo = d.seq - md.cutcom_maxnum_check_blocks, hi = d.seq - 2;
+  bool compared = false, has_near = false;
+  double near = 0;
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    const HeldRecord& rec = held[i];
+    if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
+    compared = true;
+    PieceCrossing c = piece_crossing(piece_of(rec), &aux, 1);
+    if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
+    if (c.entry_piece < 0) continue;
+    decide("TRC-CD-5", d.line, "earlier-block", has_near ? std::min(c.slack, -near) : c.slack);
+    if (!cut_at(static_cast<int>(i), c.point, c.along, d.line, d.number)) return true;
+    retraction_line(d, c.point);
+    return true;
+  }
+  if (compared) decide("TRC-CD-5", d.line, "open-element", has_near ? near : -std::numeric_limits<double>::infinity());
+  return false;
+}
+
+PathPiece Engine::State::curve_piece(const EdgeCurve& curve) {
+  const Carrier& k = curve.carrier;
+  if (k.circle) {
+    Vec2 a{k.point.a + k.radius, k.point.b};
+    return PathPiece::circle(a, a, k.point, k.radius, 1, true);
+  }
+  if (curve.bound == EdgeCurve::Bound::kSegment) return PathPiece::segment(k.point, k.point + k.direction);
+  return PathPiece::segment(k.point, k.point + (1e13 / norm(k.direction)) * k.direction);
+}
+
+}  // namespace cutcom::fast

@@ -1,0 +1,330 @@
+// fast: the ends of compensation - approach and retraction: NORM, KONT travelling around the
+// start or end point (TRC-KONT-*), G460/G461/G462 (TRC-EDGE-*) and the end of the program.
+#include <cmath>
+#include <limits>
+
+#include "engine_state.hpp"
+
+namespace cutcom::fast {
+
+void Engine::State::approach(const Block& b) {
+  if (b.state.side == Side::kOff) {
+    // TRC-SEL-8: deselected before any traversing block: no selection takes place.
+    decide("TRC-SEL-8", selection.line, "deselected-before-contour");
+    line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
+    run_dummies_uncompensated();
+    phase = Phase::kOff;
+    return off(b);
+  }
+  if (!check_active_block(b)) return;
+  if (b.state.side != side)
+    throw UnsupportedError(  // TRC-UNSUP-1
+        b.words.line, "change of compensation side G41/G42 before the first contour block");
+  if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
+  prev_slot ^= 1;
+  prev_blocks[static_cast<std::size_t>(prev_slot)] = copy_of(b);
+  const BlockCopy& first = prev_blocks[static_cast<std::size_t>(prev_slot)];
+  has_prev = true;
+  Element e = element_of(first);
+  double radius = 0;
+  if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
+  if (selection.kont) {
+    // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
+    Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt};
+    if (!selection_from_tool && !e.arc) k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
+    if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
+    if (stopped) return;
+  }
+  // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
+  Vec2 q = Element::offset(e.start, e.start_tangent(), s * r);
+  PathPoint to = xyz(q, h(selection.end));
+  double length = std::sqrt((to.x - selection.start.x) * (to.x - selection.start.x) +
+                            (to.y - selection.start.y) * (to.y - selection.start.y) +
+                            (to.z - selection.start.z) * (to.z - selection.start.z));
+  decide("TRC-APPR-NORM-1", selection.line, length == 0 ? "zero-length" : "line", length);
+  // Output waits until the first element's end is known (TRC-EDGE-* may replace it).
+  approach_pending = true;
+  approach_to = to;
+  for (int i = 0; i < dummy_count; ++i)
+    approach_dummies[static_cast<std::size_t>(i)] = dummies[static_cast<std::size_t>(i)];
+  approach_dummy_count = dummy_count;
+  dummy_count = 0;
+  open_element(first, e, q, radius);
+  phase = Phase::kActive;
+}
+
+void Engine::State::flush_approach() {
+  if (!approach_pending) return;
+  approach_pending = false;
+  line(selection, selection.start, approach_to, OriginKind::kApproach, selection.rapid);
+  for (int i = 0; i < approach_dummy_count; ++i) {
+    BlockCopy& d = approach_dummies[static_cast<std::size_t>(i)];
+    line(d, xyz(ab(approach_to), h(d.start)), xyz(ab(approach_to), h(d.end)), OriginKind::kInfeed, d.rapid);
+  }
+  approach_dummy_count = 0;
+}
+
+std::optional<int> Engine::State::exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u,
+                                                   int k) const {
+  std::optional<ExactProducts> p = exact_products(t, u);
+  if (!p) return std::nullopt;
+  return k * ((p->cross > 0) - (p->cross < 0));
+}
+
+bool Engine::State::kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent,
+                              std::optional<int> exact_sign) {
+  double cr = cross(tangent, point - vertex);
+  int sign = exact_sign ? *exact_sign : (cr > 0) - (cr < 0);
+  double margin = sign == 0 ? 0.0 : s * cr / norm(tangent);
+  bool behind = s * sign < 0;
+  decide("TRC-KONT-1", at_block.line, behind ? "behind" : "in-front", margin);
+  return behind;
+}
+
+bool Engine::State::kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm) {
+  if (!kont_side(at_block, k.vertex, k.point, tangent, k.exact_sign)) return false;
+  Vec2 off = k.point - k.vertex;
+  double distance = norm(off);
+  bool inside = distance < r;
+  decide("TRC-KONT-2", at_block.line, inside ? "inside" : "room", distance - r);
+  if (inside) raise(alarm, at_block.line, at_block.number, "TRC-KONT-2");
+  return !inside;
+}
+
+bool Engine::State::kont_intersection(const BlockCopy& at_block, const Kont& k, const Element& e, double e_radius,
+                                      Vec2 on_line, Vec2 d, Vec2& x) {
+  Vec2 u1 = (1.0 / norm(k.d1)) * k.d1;
+  if (!e.arc) {
+    Corner c = classify_corner(u1, (1.0 / norm(k.d2)) * k.d2, s);
+    x = Element::offset(k.vertex, u1, s * r) - corner_trim(c, s, r) * u1;
+    return true;
+  }
+  Carrier line_carrier;
+  line_carrier.point = on_line, line_carrier.direction = (1.0 / norm(d)) * d;
+  Carrier cu = carrier_of(e, e_radius);
+  bool found = nearest_intersection(cu, line_carrier, k.vertex, k.d2, x);
+  decide("TRC-ARC-CORNER-1", at_block.line, found ? "intersection" : "none", carrier_gap(cu, line_carrier));
+  return found;
+}
+
+bool Engine::State::kont_circle(const BlockCopy& at_block, const Kont& k) {
+  Corner c = classify_corner((1.0 / norm(k.d1)) * k.d1, (1.0 / norm(k.d2)) * k.d2, s);
+  return outer_corner_circle(at_block.line, at_block.g451, c);
+}
+
+void Engine::State::approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k) {
+  kont_first = true;
+  Vec2 a = Element::offset(k.vertex, (1.0 / norm(k.d1)) * k.d1, s * r);
+  bool circle = kont_circle(selection, k);
+  Vec2 x;
+  bool found = !circle && kont_intersection(selection, k, e, radius, a, k.d1, x);
+  double hv = h(selection.end);
+  if (!found) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
+    decide("TRC-KONT-3", selection.line, "circle");
+    line(selection, selection.start, xyz(a, hv), OriginKind::kApproach, selection.rapid);
+    run_dummies(a);
+    Vec2 q = Element::offset(k.vertex, e.start_tangent(), s * r);
+    Origin corner = origin(selection, OriginKind::kTransitionCircle);
+    corner.next_line = first.line, corner.next_block = first.number;
+    open_element(first, e, q, radius);
+    double h1 = h(first.start);                                                      // after the held-back blocks
+    if (r > 0) arc(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
+  } else {                                                                           // TRC-KONT-4
+    decide("TRC-KONT-4", selection.line, "intersection");
+    line(selection, selection.start, xyz(x, hv), OriginKind::kApproach, selection.rapid);
+    run_dummies(x);
+    open_element(first, e, x, radius);
+  }
+  phase = Phase::kActive;
+}
+
+void Engine::State::retract_edge(const Block& b) {
+  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+    throw UnsupportedError(  // TRC-UNSUP-1
+        b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+  BlockCopy d = copy_of(b);
+  const BlockCopy* last_block = nullptr;
+  for (const BlockCopy& k : skipped)
+    if (k.delta[static_cast<std::size_t>(axes.abscissa)] != 0 ||
+        k.delta[static_cast<std::size_t>(axes.ordinate)] != 0 || k.arc)
+      last_block = &k;
+  Element last = element_of(*last_block);
+  decide("TRC-DESEL-1", d.line, "deselected");
+  if (d.kont) {  // TRC-KONT-1/2, then TRC-EDGE-6
+    Vec2 p = ab(d.end);
+    Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt};
+    if (!last.arc) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
+    if (kont_behind(d, k, k.d1, 10756)) return retract_edge_around(d, *last_block, k);
+    if (stopped) return;
+  }
+  decide("TRC-EDGE-1", d.line, g_code(d.edge_strategy));
+  Vec2 normal_end = Element::offset(last.end, last.end_tangent(), s * r);
+  EdgeCurve curve = edge_curve(d.edge_strategy, r, last.end, normal_end, last.end_tangent(), ab(d.end), false);
+  Vec2 hit;
+  double margin = 0;
+  bool found = edge_hit(curve, open_el, open_radius, s * r, &open_start, false, hit, margin);
+  decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
+  if (d.cdon && search_further_back(d, curve)) return;
+  if (!found) return raise(10751, d.line, d.number);
+  looking = false;
+  if (!close_open(hit, d.line, d.number)) return;
+  for (BlockCopy& k : skipped) skip_at(k, hit);
+  skipped.clear();
+  retraction_line(d, hit);
+}
+
+void Engine::State::retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k) {
+  if (!kont_circle(d, k))
+    throw UnsupportedError(  // TRC-EDGE-7 (planned)
+        d.line, "KONT retraction from behind by intersection (G451) after a too-short last block");
+  Vec2 rp = Element::offset(k.vertex, (1.0 / norm(k.d2)) * k.d2, s * r);
+  EdgeCurve circle;
+  circle.carrier.circle = true, circle.carrier.point = k.vertex, circle.carrier.radius = r;
+  Vec2 x;
+  double margin = 0;
+  bool on_circle = edge_hit(circle, open_el, open_radius, s * r, &open_start, false, x, margin);
+  decide("TRC-EDGE-6", d.line, on_circle ? "circle" : "line", margin);
+  if (!on_circle) {
+    EdgeCurve line;
+    line.bound = EdgeCurve::Bound::kSegment, line.carrier.point = rp, line.carrier.direction = k.point - rp;
+    bool found = edge_hit(line, open_el, open_radius, s * r, &open_start, false, x, margin);
+    decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
+    if (!found) return raise(10751, d.line, d.number);
+  }
+  looking = false;
+  if (!close_open(x, d.line, d.number)) return;
+  for (BlockCopy& k2 : skipped) skip_at(k2, x);
+  skipped.clear();
+  if (!on_circle) return retraction_line(d, x);
+  Origin corner = origin(last_block, OriginKind::kTransitionCircle);
+  corner.next_line = d.line, corner.next_block = d.number;
+  double hv = h(d.start);
+  arc(d, xyz(x, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);
+  retraction_line(d, rp);
+}
+
+void Engine::State::approach_edge(const Candidate& c) {
+  decide("TRC-EDGE-1", selection.line, g_code(selection.edge_strategy));
+  const Element& first = open_el;
+  EdgeCurve curve = edge_curve(selection.edge_strategy, r, first.start, open_start, -1.0 * first.start_tangent(),
+                               ab(selection.start), true);
+  Vec2 hit;
+  double margin = 0;
+  bool found = edge_hit(curve, *c.element, c.radius, s * r, nullptr, true, hit, margin);
+  decide("TRC-EDGE-5", selection.line, found ? "hit" : "none", margin);
+  if (!found) return raise(10751, c.block->line, c.block->number);
+  approach_pending = false;
+  line(selection, selection.start, xyz(hit, h(selection.end)), OriginKind::kApproach, selection.rapid);
+  for (int i = 0; i < approach_dummy_count; ++i) skip_at(approach_dummies[static_cast<std::size_t>(i)], hit);
+  approach_dummy_count = 0;
+  skip_at(open, hit);
+  for (int i = 0; i < dummy_count; ++i) skip_at(dummies[static_cast<std::size_t>(i)], hit);
+  dummy_count = 0;
+  for (BlockCopy& k : skipped) skip_at(k, hit);
+  skipped.clear();
+  looking = false;
+  BlockCopy block = *c.block;
+  Element element = *c.element;
+  open_element(block, element, hit, c.radius);
+  // TRC-CD-6: with CDON the later blocks of the window are searched too.
+  if (selection.cdon) approach_curve = curve, approach_until = selection.seq + md.cutcom_maxnum_check_blocks;
+}
+
+bool Engine::State::approach_further_ahead(const Block& b, const BlockCopy& m) {
+  if (m.seq > approach_until || !m.cdon) {
+    approach_until = -1;
+    return false;
+  }
+  Element e = element_of(m);
+  double radius = 0;
+  if (e.arc) {
+    radius = e.equidistant_radius(s * r);
+    if (!(radius > 0)) return false;
+  }
+  Vec2 hit;
+  double margin = 0;
+  bool found = edge_hit(approach_curve, e, radius, s * r, nullptr, true, hit, margin);
+  decide("TRC-CD-6", b.words.line, found ? "later-block" : "none", margin);
+  if (!found) return false;
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    if (!held[i].is_element || held[i].element.origin.kind != OriginKind::kApproach) continue;
+    if (!cut_at(static_cast<int>(i), hit, std::numeric_limits<double>::infinity(), m.line, m.number)) return true;
+    open_element(m, e, hit, radius);
+    return true;
+  }
+  return false;
+}
+
+void Engine::State::deselect(const Block& b) {
+  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+    throw UnsupportedError(  // TRC-UNSUP-1
+        b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+  decide("TRC-DESEL-1", b.words.line, "deselected");
+  BlockCopy last = copy_of(b);
+  if (last.kont) {
+    Vec2 p = ab(last.end);
+    Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt};
+    if (!open_el.arc) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
+    if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
+    if (stopped) return;
+  }
+  Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+  if (!close_open(end, last.line, last.number)) return;
+  run_dummies(end);
+  retraction_line(last, end);
+}
+
+void Engine::State::retraction_line(BlockCopy& last, Vec2 from_point) {
+  PathPoint from = xyz(from_point, h(last.start));
+  double length =
+      std::sqrt((last.end.x - from.x) * (last.end.x - from.x) + (last.end.y - from.y) * (last.end.y - from.y) +
+                (last.end.z - from.z) * (last.end.z - from.z));
+  decide("TRC-RETR-NORM-1", last.line, length == 0 ? "zero-length" : "line", length);
+  line(last, from, last.end, OriginKind::kRetraction, last.rapid);
+  phase = Phase::kOff;
+}
+
+void Engine::State::retract_around(BlockCopy& last, const Kont& k) {
+  Vec2 rp = Element::offset(k.vertex, (1.0 / norm(k.d2)) * k.d2, s * r);
+  bool circle = kont_circle(last, k);
+  Vec2 x;
+  bool found = !circle && kont_intersection(last, k, open_el, open_radius, rp, k.d2, x);
+  if (!found) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
+    decide("TRC-KONT-3", last.line, "circle");
+    Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
+    Origin corner = origin(open, OriginKind::kTransitionCircle);
+    corner.next_line = last.line, corner.next_block = last.number;
+    if (!close_open(from, last.line, last.number)) return;
+    run_dummies(from);
+    double hv = h(last.start);
+    if (r > 0) arc(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
+    return retraction_line(last, rp);
+  }
+  decide("TRC-KONT-4", last.line, "intersection");
+  if (!close_open(x, last.line, last.number)) return;
+  run_dummies(x);
+  retraction_line(last, x);
+}
+
+void Engine::State::end_of_program() {
+  if (looking) {  // the program ends before an intersection was found
+    const BlockCopy& last = skipped.back();
+    decide("TRC-LOOK-2", last.line, "none");
+    return raise(10751, last.line, last.number);
+  }
+  if (phase == Phase::kApproach) {
+    decide("TRC-END-1", selection.line, "no-contour");
+    sink.notice({selection.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
+    line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
+    run_dummies_uncompensated();
+  } else if (phase == Phase::kActive) {
+    decide("TRC-END-1", open.line, "active-at-end");
+    sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
+    Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+    if (!close_open(end, open.line, open.number)) return;
+    run_dummies(end);
+  }
+  phase = Phase::kOff;
+}
+
+}  // namespace cutcom::fast

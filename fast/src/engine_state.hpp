@@ -1,0 +1,429 @@
+// fast's engine state: the TRC state machine, block by block. Its member functions live in
+// engine.cpp (selection, corners, look-ahead, output), ends.cpp (approach and retraction: NORM,
+// KONT, G460-G462) and collision.cpp (CDON: entry, crossing, cut). Private to fast.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "bottleneck.hpp"
+#include "cutcom/fast/engine.hpp"
+#include "edge_strategy.hpp"
+#include "plane_geometry.hpp"
+
+namespace cutcom::fast {
+
+// What fast keeps of a block: converted once, copied into fixed slots (no allocation).
+struct BlockCopy {
+  int line = 0;
+  std::optional<std::int64_t> number;
+  PathPoint start, end;  // programmed, workpiece coordinates
+  bool rapid = false;
+  bool arc = false;  // G2/G3 with I/J/K
+  int sense = 1;     // +1 G3, -1 G2
+  PathPoint centre;  // programmed centre (I/J/K arcs)
+  bool has_centre = false;
+  double cr = 0;                  // CR= arcs
+  std::array<Int128, 3> delta{};  // exact programmed displacement X Y Z, units of 1e-9 mm
+  Decimal feed;
+  std::array<AuxFunction, BlockWords::kMaxAux> aux{};
+  int aux_count = 0;
+  bool actions_done = false;
+  bool kont = false;  // KONT in force (approach and retraction)
+  bool g451 = false;  // G451 in force
+  bool cdon = false;  // CDON in force
+  int seq = 0;        // ordinal of the last traversing block up to this one (TRC-CD-1 window)
+  EdgeStrategy edge_strategy = EdgeStrategy::kG462;
+
+  static BlockCopy of(const Block& b) {
+    BlockCopy c;
+    c.line = b.words.line;
+    c.number = b.words.number;
+    c.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
+    c.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
+    c.rapid = b.state.motion == Motion::kRapid;
+    c.arc = b.is_arc();
+    c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
+    c.has_centre = b.centre.has_value();
+    if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
+    if (b.words.cr) c.cr = b.words.cr->to_double();
+    c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
+    c.feed = b.state.feed;
+    c.aux = b.words.aux;
+    c.aux_count = b.words.aux_count;
+    c.kont = b.state.approach == ApproachMode::kKont;
+    c.g451 = b.state.corner == CornerMode::kG451;
+    c.cdon = b.state.collision == CollisionMode::kCdon;
+    c.edge_strategy = b.state.edge_strategy;
+    return c;
+  }
+};
+
+inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
+struct Engine::State {
+  enum class Phase { kOff, kApproach, kActive };
+
+  State(const MachineData& m, PathSink& out) : md(m), sink(out) {
+    // TRC-CD-1: what the window can hold: MD20240 + 2 traversing blocks, each with up to MD20250
+    // blocks without plane motion, each block at most three elements and its actions.
+    std::size_t capacity = static_cast<std::size_t>(m.cutcom_maxnum_check_blocks + 2) *
+                           static_cast<std::size_t>(m.cutcom_maxnum_dummy_blocks + 1) * (3 + BlockWords::kMaxAux);
+    held.reserve(capacity);
+    held_scratch.reserve(capacity);
+  }
+
+  const MachineData& md;
+  PathSink& sink;
+  Phase phase = Phase::kOff;
+  bool stopped = false;
+  bool d0_noticed = false;
+
+  // Compensation in force (set at selection).
+  PlaneAxes axes{0, 1, 2};
+  Plane plane = Plane::kG17;
+  Side side = Side::kOff;
+  int s = 0;     // +1 left, -1 right (after TRC-RADIUS-2)
+  double r = 0;  // |effective radius|
+  ActiveEdge edge;
+
+  BlockCopy selection;               // kApproach: the selection block
+  bool selection_from_tool = false;  // its start is the tool after a side change (TRC-SIDE-1)
+  // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
+  // output once the first element's end is known.
+  bool approach_pending = false;
+  PathPoint approach_to;
+  std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> approach_dummies;
+  int approach_dummy_count = 0;
+  bool kont_first = false;  // the open element is the first after a KONT travel-around
+  // kActive: the open element, whose end waits for the next traversing block.
+  BlockCopy open;
+  Element open_el;
+  Vec2 open_start;         // start point of its equidistant (after the previous corner)
+  double open_radius = 0;  // arcs: radius of its equidistant
+  // Blocks without motion in the plane since the last traversing block (fixed capacity).
+  std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
+  int dummy_count = 0;
+  // Look-ahead (TRC-LOOK-*): blocks passed over while trying later blocks (fixed capacity: at most
+  // MD20240 traversing blocks, each after at most MD20250 blocks without plane motion).
+  bool looking = false;
+  // Reserved once, at the first look-ahead: never reallocated, nothing allocated per block.
+  static constexpr std::size_t kSkippedCapacity = MachineData::kMaxCheckBlocks * (MachineData::kMaxDummyBlocks + 1);
+  std::vector<BlockCopy> skipped;
+  int examined = 0, dummy_run = 0;
+
+  // TRC-CD-1: output waits here, in path order, until the MD20240 window has passed it (under
+  // CDON); a bottleneck cut removes what follows the cut point. Reserved once.
+  struct HeldRecord {
+    int seq = 0;  // the owner's traversing ordinal
+    bool is_element = false;
+    PathElement element;
+    double radius = 0;  // arcs: radius in the plane
+    ActionEvent action;
+    int owner_line = 0;  // the block it belongs to, to run it again at a cut
+    std::optional<std::int64_t> owner_number;
+    PathPoint owner_start, owner_end;
+    bool owner_rapid = false;
+    Decimal owner_feed;
+  };
+  std::vector<HeldRecord> held, held_scratch;
+  bool holding = false;  // CDON in force for the block being processed: output waits in `held`
+  int traversing = 0;
+  std::array<BlockCopy, 2> prev_blocks;  // the last traversing block with compensation and the one before
+  int prev_slot = 0;
+  bool has_prev = false;
+  EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until
+  int approach_until = -1;
+
+  BlockCopy copy_of(const Block& b) const {
+    BlockCopy c = BlockCopy::of(b);
+    c.seq = traversing;
+    return c;
+  }
+  HeldRecord record_of(const BlockCopy& owner) const {
+    HeldRecord k;
+    k.seq = owner.seq, k.owner_line = owner.line, k.owner_number = owner.number, k.owner_start = owner.start;
+    k.owner_end = owner.end, k.owner_rapid = owner.rapid, k.owner_feed = owner.feed;
+    return k;
+  }
+  // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
+  bool direct() const { return !holding && held.empty(); }
+  // Releases the records of traversing blocks before `seq`.
+  void release_before(int seq);
+  void release_all() { release_before(std::numeric_limits<int>::max()); }
+  // With CDON in force the output of the last MD20240 traversing blocks waits; otherwise it goes
+  // out block by block.
+  void release_window(const Block& b);
+
+  // --- plane <-> workpiece coordinates -------------------------------------------------------
+  Vec2 ab(const PathPoint& p) const { return {pick(p, axes.abscissa), pick(p, axes.ordinate)}; }
+  double h(const PathPoint& p) const { return pick(p, axes.applicate); }
+  PathPoint xyz(Vec2 v, double applicate) const {
+    PathPoint p;
+    double* c[3] = {&p.x, &p.y, &p.z};
+    *c[axes.abscissa] = v.a, *c[axes.ordinate] = v.b, *c[axes.applicate] = applicate;
+    return p;
+  }
+
+  // --- output ----------------------------------------------------------------------------------
+  void decide(std::string_view clause, int line, std::string_view branch) {
+    Decision d;
+    d.clause = clause, d.line = line, d.branch = branch;
+    sink.decision(d);
+  }
+  void decide(std::string_view clause, int line, std::string_view branch, double margin) {
+    Decision d;
+    d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin = margin;
+    sink.decision(d);
+  }
+  void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
+    flush_approach();  // ALARM-1: what was decided before the alarm is output
+    release_all();
+    sink.alarm(make_alarm(number, line, block, clause));
+    stopped = true;
+  }
+  void actions(BlockCopy& b, const PathPoint& at);
+  Origin origin(const BlockCopy& b, OriginKind kind) const {
+    Origin o;
+    o.kind = kind, o.line = b.line, o.block = b.number;
+    return o;
+  }
+  void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, OriginKind kind, bool rapid) {
+    line(owner, from, to, origin(owner, kind), rapid);
+  }
+  void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const Origin& named, bool rapid) {
+    actions(owner, from);
+    if (from.x == to.x && from.y == to.y && from.z == to.z) return;  // PATH-ELEMENT-1: no zero-length element
+    PathElement e;
+    e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
+    e.origin = named;
+    if (direct()) return sink.element(e);
+    HeldRecord rec = record_of(owner);
+    rec.is_element = true, rec.element = e;
+    held.push_back(rec);
+  }
+
+  void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
+           const Origin& from_what);
+
+  Element element_of(const BlockCopy& c) const {
+    if (!c.arc) return Element::line(ab(c.start), ab(c.end));
+    if (c.has_centre) return Element::circle(ab(c.start), ab(c.end), ab(c.centre), c.sense);
+    return Element::circle_by_radius(ab(c.start), ab(c.end), c.cr, c.sense);
+  }
+
+  // TRC-DUMMY-1: blocks without motion in the plane run at the corner point P*.
+  void run_dummies(Vec2 at);
+  void run_dummies_uncompensated();
+  // TRC-DUMMY-2: at most MD20250 of them between two traversing blocks.
+  void queue_dummy(const Block& b);
+
+  // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
+  // not run backwards; it is output unless its length is 0. The alarm names `alarm_line`: the
+  // block whose preparation found the problem. False when an alarm stopped the program.
+  // `candidate`: the block whose equidistant fixed this end (for TRC-EDGE-* on approach).
+  struct Candidate {
+    const BlockCopy* block;
+    const Element* element;
+    double radius;
+  };
+  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block,
+                  const Candidate* candidate = nullptr);
+
+  // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
+  // 1e-9 mm, and while each component stays below 2^62 the cross and dot products fit in 128 bits.
+  // Tangency and reversal are then seen as ref sees them, not as a 1e-17 remainder.
+  struct ExactProducts {
+    Int128 cross, dot;
+  };
+  std::optional<ExactProducts> exact_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u) const;
+
+  void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const;
+
+  // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; a collapsed one is passed
+  // over by the look-ahead.
+  bool equidistant_exists(const Block& b, const Element& e, double& radius);
+
+  void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius);
+
+  // --- checks shared by the phases with compensation in force --------------------------------
+  // Returns false if the block ended the program with an alarm.
+  bool check_active_block(const Block& b);
+
+  // --- phase: compensation off -----------------------------------------------------------------
+  void off(const Block& b);
+
+  // TRC-SIDE-1 (ruling 30): G41 <-> G42 without G40: the old side's last element ends at its normal
+  // end point; the first new-side block with a plane axis is a selection block from the tool.
+  void change_side(const Block& b);
+
+  void select(const Block& b);
+
+  // --- phase: selection block waiting for the first contour block --------------------------
+  void approach(const Block& b);
+
+  void flush_approach();
+
+  // --- KONT: travelling around the start or end point (TRC-KONT-*) -----------------------------
+  // The corner a KONT move makes with the contour at `vertex`: d1 runs into it, d2 out of it;
+  // `point` is the tool centre off the contour (approach: start, retraction: end).
+  struct Kont {
+    Vec2 vertex, point, d1, d2;
+    std::optional<int> exact_sign;  // sign of cross(contour tangent, point - vertex), if decided in integers
+  };
+
+  // The sign of cross(t, k * u) for exact integer displacements t and u (k = +-1), if they are in range.
+  std::optional<int> exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u, int k) const;
+
+  // TRC-KONT-1: behind = strictly on the far side of the contour's tangent line from the
+  // compensation side; TRC-KONT-2: then not inside the circle of radius r about the vertex.
+  bool kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent, std::optional<int> exact_sign);
+  bool kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm);
+
+  // Where the equidistant of the KONT line (through `on_line`, direction `d`) meets the element's
+  // carrier, nearest the vertex; false if they do not meet (circles only).
+  bool kont_intersection(const BlockCopy& at_block, const Kont& k, const Element& e, double e_radius, Vec2 on_line,
+                         Vec2 d, Vec2& x);
+
+  // TRC-KONT-3/4 with TRC-CORNER-3/4: circle or intersection, switched like any outer corner.
+  bool kont_circle(const BlockCopy& at_block, const Kont& k);
+
+  // TRC-KONT-3 / TRC-KONT-4 on approach: the approach line meets the first block at an outer corner.
+  void approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k);
+
+  // --- phase: compensation active --------------------------------------------------------------
+  void active(const Block& b);
+
+  Carrier carrier_of(const Element& e, double radius) const { return fast::carrier_of(e, radius, s * r); }
+
+  void corner(const Block& b, const BlockCopy& copy);
+
+  // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
+  // deciding block's G450/G451, switched by the contour angle (TRC-CORNER-2, degrees).
+  bool outer_corner_circle(int line_no, bool g451, const Corner& c, bool traced = true);
+
+  // Where a point lies on an element's equidistant: length from its normal start, left to its end.
+  struct Extent {
+    double along, left;
+  };
+  Extent extent_of(const Element& e, double radius, Vec2 p) const;
+
+  void skip(const BlockCopy& c);
+  // A candidate that does not do: passed over; alarm 10751 once MD20240 blocks were examined.
+  void pass_over(const BlockCopy& c);
+
+  // TRC-LOOK-2: the blocks after a too-short one are tried in turn, up to MD20240 examined.
+  void start_look_ahead(const Block& too_short);
+
+  void look_ahead(const Block& b, const BlockCopy* current);
+
+  // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*, edge_strategy.cpp) ------
+
+  // TRC-EDGE-1 on retraction: deselection while the look-ahead found no block to meet the open
+  // element; it ends at the hit, the blocks after it are skipped.
+  void retract_edge(const Block& b);
+
+  // TRC-CD-5: with CDON the retraction's search goes on over the held-back equidistants and circles
+  // of the blocks m-W ... m-2; the last hit found (the earliest block, on it the earliest point)
+  // is valid. True: the path was cut there and the retraction made.
+  bool search_further_back(BlockCopy& d, const EdgeCurve& curve);
+
+  // An auxiliary curve of TRC-EDGE-2..4 as a path piece: G460's segment, G461's whole circle,
+  // G462's ray as a segment reaching beyond any programmable coordinate (10^13 mm).
+  static PathPiece curve_piece(const EdgeCurve& curve);
+
+  // TRC-LOOK-3: a skipped block loses its plane motion; the rest runs at `at`.
+  void skip_at(BlockCopy& k, Vec2 at);
+
+  // TRC-EDGE-1 on approach: the first element would run backwards to meet c's equidistant; the
+  // approach line ends at the hit on c's equidistant, the first block and those between are skipped.
+  void approach_edge(const Candidate& c);
+
+  // TRC-CD-6: with CDON the approach's search goes on over the later blocks while the approach line
+  // is held back (up to MD20240 traversing blocks after the selection block); the last hit found
+  // is valid: the approach line ends there and the blocks between lose their plane motion.
+  bool approach_further_ahead(const Block& b, const BlockCopy& m);
+
+  // --- CDON: bottleneck detection (TRC-CD-*, bottleneck.cpp) ------------------------------------
+  // TRC-CD-2: block m's entry, built provisionally from its predecessor: the transition circle at an outer
+  // corner (whatever G450/G451 say), then its equidistant from its normal start (from the inner
+  // corner's intersection); none if that lies beyond its end or the equidistant collapses.
+  struct Entry {
+    Element element;
+    double radius = 0;
+    Vec2 vertex, normal_start;
+    Vec2 own_start;       // where m's own equidistant piece starts
+    int before_line = 0;  // the predecessor, which names the corner
+    std::optional<std::int64_t> before_number;
+    Element before_element;
+    double before_radius = 0;
+    // pieces[0] leads to m's equidistant: the transition circle, or (G451) the predecessor's
+    // equidistant extended to the intersection.
+    enum class Lead { kNone, kCircle, kExtension } lead = Lead::kNone;
+    PathPiece pieces[2];
+    int count = 0;
+  };
+  bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en);
+
+  PathPiece piece_of(const HeldRecord& rec) const;
+  PathPiece open_piece() const;
+  static bool is_candidate(const HeldRecord& rec);
+
+  // TRC-CD-3: block m's entry against the held-back elements of blocks m-W ... m-2 (W = MD20240)
+  // and, in the look-ahead, the open element; the earliest block crossed wins, on it the earliest
+  // point. True: the path was cut there.
+  bool bottleneck(const BlockCopy& m, const BlockCopy& before);
+
+  // TRC-CD-4 (with TRC-LOOK-3): the crossed block ends at the crossing; the blocks after it lose
+  // their plane motion (the rest runs there, in programmed order); block m goes on along its entry.
+  void cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, bool has_near, double near);
+
+  // TRC-CD-4: cuts the held-back path at x on `record` (-1: on the open element), `along` it from
+  // its start; the blocks after it lose their plane motion and run at x (TRC-LOOK-3). False: an
+  // alarm stopped the run.
+  bool cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number);
+
+  // TRC-CD-4: block m goes on from the crossing along its entry.
+  void continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x);
+  // A block run again at a cut, from its held record: its applicate motion at x (its actions were
+  // put back before).
+  void infeed_of(const HeldRecord& k, const PathPoint& from, const PathPoint& to) {
+    BlockCopy owner;
+    owner.line = k.owner_line, owner.number = k.owner_number, owner.rapid = k.owner_rapid, owner.feed = k.owner_feed;
+    owner.actions_done = true, owner.seq = k.seq;
+    line(owner, from, to, OriginKind::kInfeed, owner.rapid);
+  }
+  void infeed_of(const HeldRecord& k, Vec2 x) { infeed_of(k, xyz(x, h(k.owner_start)), xyz(x, h(k.owner_end))); }
+
+  // TRC-G450-1: circle of radius r about the programmed corner, joining the normal points; it
+  // belongs to the second block.
+  void transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v);
+
+  // TRC-DESEL-1: deselection; with KONT from behind the end point TRC-KONT-* travel around it,
+  // otherwise (NORM, KONT in front) TRC-RETR-NORM-1.
+  void deselect(const Block& b);
+
+  // TRC-RETR-NORM-1: the straight line to the programmed end point, a tool-centre position.
+  void retraction_line(BlockCopy& last, Vec2 from_point);
+
+  // TRC-KONT-3 / TRC-KONT-4 on retraction: the retraction line meets the last block at an outer corner.
+  // TRC-EDGE-6 (digest §2.5 rule 3): KONT from behind after a too-short last block: the open
+  // element meets the inserted circle about the last block's end point (the first point along it)
+  // and the rest of the circle is traversed; if it misses the circle, it meets the retraction line.
+  void retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k);
+
+  void retract_around(BlockCopy& last, const Kont& k);
+
+  // TRC-END-1: the program ends with compensation in force.
+  void end_of_program();
+
+  // ARC-CENTRE-2: the end point may miss the circle about the programmed centre by at most
+  // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
+  bool arc_is_consistent(const Block& b);
+};
+
+}  // namespace cutcom::fast
