@@ -139,9 +139,7 @@ void Engine::State::approach_around(const BlockCopy& first, const Element& e, do
 }
 
 void Engine::State::retract_edge(const Block& b) {
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+  reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   BlockCopy d = copy_of(b);
   const BlockCopy* last_block = nullptr;
   for (const BlockCopy& k : skipped)
@@ -256,9 +254,7 @@ bool Engine::State::approach_further_ahead(const Block& b, const BlockCopy& m) {
 }
 
 void Engine::State::deselect(const Block& b) {
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+  reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   decide("TRC-DESEL-1", b.words.line, "deselected");
   BlockCopy last = copy_of(b);
   if (last.kont) {

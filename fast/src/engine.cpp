@@ -54,9 +54,7 @@ void Engine::State::change_side(const Block& b) {
 }
 
 void Engine::State::select(const Block& b) {
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+  reject_kontc_kontt(b, false);  // TRC-UNSUP-1
   // TRC-SEL-1; TRC-SEL-3: a single plane axis was completed by the reader (NC-POS-1).
   decide("TRC-SEL-1", b.words.line, "selected");
   plane = b.state.plane;
@@ -90,15 +88,7 @@ bool Engine::State::check_active_block(const Block& b) {
     return false;
   }
   if (b.state.side != side) return true;  // TRC-SIDE-1, handled by the caller
-  if (b.words.side)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "re-selection of G41/G42 while compensation is active");
-  if (!(ActiveEdge::of(b.state) == edge))
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "change of tool, D number or OFFN while compensation is active");
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+  reject_change_while_active(b, edge);    // TRC-UNSUP-1
   return true;
 }
 

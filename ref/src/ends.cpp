@@ -120,9 +120,7 @@ void Reference::flush_approach() {
 }
 
 void Reference::retract_edge(const Block& b) {
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+  reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   const Block* last_block = nullptr;
   for (const Block* d : skipped_)
     if (d->moves_in_plane()) last_block = d;
@@ -202,9 +200,7 @@ bool Reference::approach_further_ahead(const Block& m) {
 }
 
 void Reference::deselect(const Block& b) {
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT retraction (needs polynomial output)");
+  reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   decide("TRC-DESEL-1", b.words.line, "deselected");
   if (b.state.approach == ApproachMode::kKont) {
     KontCorner k = retraction_corner(b, *open_);

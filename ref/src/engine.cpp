@@ -81,9 +81,7 @@ void Reference::change_side(const Block& b) {
 
 void Reference::select(const Block& b) {
   selection_from_.reset();
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+  reject_kontc_kontt(b, false);  // TRC-UNSUP-1
   // TRC-SEL-3: a single programmed plane axis was completed by the reader (NC-POS-1).
   decide("TRC-SEL-1", b.words.line, "selected");
   Decimal effective = b.state.effective_radius();
@@ -113,15 +111,7 @@ bool Reference::still_compensable(const Block& b) {
     return false;
   }
   if (b.state.side != comp_->side) return true;  // TRC-SIDE-1, handled by the caller
-  if (b.words.side)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "re-selection of G41/G42 while compensation is active");
-  if (!(ActiveEdge::of(b.state) == comp_->edge))
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "change of tool, D number or OFFN while compensation is active");
-  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "KONTC/KONTT approach (needs polynomial output)");
+  reject_change_while_active(b, comp_->edge);    // TRC-UNSUP-1
   return true;
 }
 

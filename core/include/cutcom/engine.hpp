@@ -22,4 +22,20 @@ struct ActiveEdge {
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
 };
 
+// TRC-UNSUP-1: KONTC/KONTT need polynomial output; the block is rejected, naming it.
+inline void reject_kontc_kontt(const Block& b, bool retraction) {
+  if (b.state.approach == ApproachMode::kKontC || b.state.approach == ApproachMode::kKontT)
+    throw UnsupportedError(b.words.line, retraction ? "KONTC/KONTT retraction (needs polynomial output)"
+                                                    : "KONTC/KONTT approach (needs polynomial output)");
+}
+
+// TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
+// (ruling 30): re-select G41/G42, change the tool edge, or ask for KONTC/KONTT.
+inline void reject_change_while_active(const Block& b, const ActiveEdge& active) {
+  if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
+  if (!(ActiveEdge::of(b.state) == active))
+    throw UnsupportedError(b.words.line, "change of tool, D number or OFFN while compensation is active");
+  reject_kontc_kontt(b, false);
+}
+
 }  // namespace cutcom
