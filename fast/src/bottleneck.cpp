@@ -77,7 +77,7 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
     int n = carrier_intersections(h, c, xs);
     if (!h.circle && !c.circle && n == 0) {  // parallel: collinear is the knife edge of crossing
       double gap = std::fabs(cross(h.direction, c.point - h.point)) / norm(h.direction);
-      if (!out.has_near_miss || -gap > out.near_miss) out.near_miss = -gap, out.has_near_miss = true;
+      out.near_miss = std::max(out.near_miss, -gap);
     }
     for (int k = 0; k < n; ++k) {
       OnPiece on_held = locate(held, xs[k]), on_entry = locate(e, xs[k]);
@@ -85,7 +85,7 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
       bool on = on_held.on && on_entry.on;
       if (on && has_depth) slack = std::min(slack, depth);
       if (!on) {
-        if (!out.has_near_miss || slack > out.near_miss) out.near_miss = slack, out.has_near_miss = true;
+        out.near_miss = std::max(out.near_miss, slack);
         continue;
       }
       if (found && on_held.position >= best) continue;

@@ -2,6 +2,8 @@
 // crosses a held-back piece (see ref/src/bottleneck.hpp for the rule; no code is shared).
 #pragma once
 
+#include <limits>
+
 #include "plane_geometry.hpp"
 
 namespace cutcom::fast {
@@ -19,15 +21,14 @@ struct PathPiece {
 };
 
 // The earliest point along `held` on one of the entry's `count` pieces: `entry_piece` its index
-// (-1: none), `slack` its least slack; `near_miss` (if has_near_miss) the largest slack of the
+// (-1: none), `slack` its least slack; `near_miss` (-inf: none) the largest slack of the
 // carriers' common points off a piece.
 struct PieceCrossing {
   Vec2 point;
   int entry_piece = -1;
   double slack = 0;
   double along = 0;  // how far along the held piece (length; rotation times radius at a circle)
-  bool has_near_miss = false;
-  double near_miss = 0;
+  double near_miss = -std::numeric_limits<double>::infinity();
 };
 // `from`: the first entry piece compared (see ref).
 PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count, int from = 0);

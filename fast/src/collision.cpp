@@ -106,9 +106,8 @@ bool Engine::State::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (r == 0) return false;  // no width: nothing to collide
   int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
   Entry entry;
-  int state = 0;  // 0: not built, 1: built, -1: none
-  bool has_near = false;
-  double near = 0;
+  int state = 0;                                           // 0: not built, 1: built, -1: none
+  double near = -std::numeric_limits<double>::infinity();  // the largest near miss
   // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
   // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
   auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
@@ -116,26 +115,25 @@ bool Engine::State::bottleneck(const BlockCopy& m, const BlockCopy& before) {
     if (state < 0) return false;
     bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
     c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0);
-    if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
+    near = std::max(near, c.near_miss);
     return c.entry_piece >= 0;
   };
   PieceCrossing c;
   for (std::size_t i = 0; i < held.size(); ++i) {
     const HeldRecord& rec = held[i];
     if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
-    if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, has_near, near), true;
+    if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, near), true;
     if (state < 0) return false;
   }
   if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
-    return cut(m, entry, -1, c, has_near, near), true;
-  if (state > 0) decide("TRC-CD-3", m.line, "none", has_near ? near : -std::numeric_limits<double>::infinity());
+    return cut(m, entry, -1, c, near), true;
+  if (state > 0) decide("TRC-CD-3", m.line, "none", near);
   return false;
 }
 
-void Engine::State::cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, bool has_near,
-                        double near) {
+void Engine::State::cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, double near) {
   const Vec2 x = c.point;
-  double margin = has_near ? std::min(c.slack, -near) : c.slack;
+  double margin = std::min(c.slack, -near);  // lowered to a nearer miss before it
   decide("TRC-CD-3", m.line, "cut", margin);
   if (!cut_at(record, x, c.along, m.line, m.number)) return;
   continue_entry(m, en, c.entry_piece, x);
@@ -211,21 +209,21 @@ void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entr
 bool Engine::State::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
   PathPiece aux = curve_piece(curve);
   int lo = d.seq - md.cutcom_maxnum_check_blocks, hi = d.seq - 2;
-  bool compared = false, has_near = false;
-  double near = 0;
+  bool compared = false;
+  double near = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < held.size(); ++i) {
     const HeldRecord& rec = held[i];
     if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
     compared = true;
     PieceCrossing c = piece_crossing(piece_of(rec), &aux, 1);
-    if (c.has_near_miss && (!has_near || c.near_miss > near)) near = c.near_miss, has_near = true;
+    near = std::max(near, c.near_miss);
     if (c.entry_piece < 0) continue;
-    decide("TRC-CD-5", d.line, "earlier-block", has_near ? std::min(c.slack, -near) : c.slack);
+    decide("TRC-CD-5", d.line, "earlier-block", std::min(c.slack, -near));
     if (!cut_at(static_cast<int>(i), c.point, c.along, d.line, d.number)) return true;
     retraction_line(d, c.point);
     return true;
   }
-  if (compared) decide("TRC-CD-5", d.line, "open-element", has_near ? near : -std::numeric_limits<double>::infinity());
+  if (compared) decide("TRC-CD-5", d.line, "open-element", near);
   return false;
 }
 

@@ -380,7 +380,7 @@ struct Engine::State {
 
   // TRC-CD-4 (with TRC-LOOK-3): the crossed block ends at the crossing; the blocks after it lose
   // their plane motion (the rest runs there, in programmed order); block m goes on along its entry.
-  void cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, bool has_near, double near);
+  void cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, double near);
 
   // TRC-CD-4: cuts the held-back path at x on `record` (-1: on the open element), `along` it from
   // its start; the blocks after it lose their plane motion and run at x (TRC-LOOK-3). False: an

@@ -43,6 +43,14 @@ struct PieceCrossing {
 // bits, which costs CORE a root-bound evaluation wherever an inner difference is exactly zero.
 inline double rough(const FT& x) { return x.Rep()->ffVal.getValue(); }
 
+// The largest near miss so far; a crossing's margin, lowered to a nearer miss before it.
+inline void keep_largest(std::optional<FT>& near, const std::optional<FT>& miss) {
+  if (miss && (!near || rough(*near) < rough(*miss))) near = miss;
+}
+inline FT lowered(const FT& slack, const std::optional<FT>& near) {
+  return near && rough(-*near) < rough(slack) ? -*near : slack;
+}
+
 PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from = 0);
 
 }  // namespace cutcom::ref

@@ -119,7 +119,7 @@ bool Reference::bottleneck(const Block& m, const Block& before) {
     bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi && !looking_;
     PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0);
     // The largest near miss (picked by the filter's value: see bottleneck.hpp).
-    if (c.near_miss && (!near || rough(*near) < rough(*c.near_miss))) near = c.near_miss;
+    keep_largest(near, c.near_miss);
     if (!c.point) return std::nullopt;
     return c;
   };
@@ -140,8 +140,7 @@ bool Reference::bottleneck(const Block& m, const Block& before) {
 void Reference::cut(const Block& m, const Entry& en, std::optional<std::size_t> record, const PieceCrossing& c,
                     const std::optional<FT>& near) {
   const Point x = *c.point;
-  FT margin = c.slack;
-  if (near && rough(-*near) < rough(margin)) margin = -*near;
+  FT margin = lowered(c.slack, near);
   decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
   if (!cut_at(m, record, x)) return;
   continue_entry(m, en, c.entry_piece, x);
@@ -231,10 +230,9 @@ bool Reference::search_further_back(const Block& b, const EdgeCurve& curve) {
     if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
     compared = true;
     PieceCrossing c = piece_crossing(piece_of(r), aux);
-    if (c.near_miss && (!near || rough(*near) < rough(*c.near_miss))) near = c.near_miss;
+    keep_largest(near, c.near_miss);
     if (!c.point) continue;
-    FT margin = c.slack;
-    if (near && rough(-*near) < rough(margin)) margin = -*near;
+    FT margin = lowered(c.slack, near);
     decide("TRC-CD-5", b.words.line, "earlier-block", exact_mm(margin));
     const Point x = *c.point;
     if (!cut_at(b, i, x)) return true;
