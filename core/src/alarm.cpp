@@ -9,6 +9,14 @@ namespace cutcom {
 
 namespace {
 constexpr std::array kCatalogue = {
+    AlarmInfo{10740, "too many empty blocks with SAR programming", "SAR-P4-1", false},
+    AlarmInfo{10741, "direction reversal with SAR infeed movement", "SAR-DISCL-3", false},
+    AlarmInfo{10742, "SAR distance invalid or not programmed", "SAR-DISR-1", false},
+    AlarmInfo{10743, "SAR programmed several times", "SAR-AGAIN-1", false},
+    AlarmInfo{10744, "no valid SAR direction defined", "SAR-TANGENT-1", false},
+    AlarmInfo{10746, "block preprocessing stop with SAR", "SAR-STOP-1", false},
+    AlarmInfo{10747, "retraction direction for SAR not defined", "SAR-SIDE-3", false},
+    AlarmInfo{10748, "illegal retraction plane with SAR", "SAR-DISRP-2", false},
     AlarmInfo{10750, "tool radius compensation activated without tool number", "TRC-SEL-6", false},
     AlarmInfo{10751, "danger of collision due to tool radius compensation", "TRC-ELEMENT-1", true},
     AlarmInfo{10753, "selection of tool radius compensation only possible in linear block", "TRC-SEL-2", false},

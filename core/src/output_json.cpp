@@ -41,9 +41,11 @@ void JsonWriter::element(const PathElement& e) {
   o["kind"] = origin_kind_name(e.origin.kind);
   o["line"] = e.origin.line;
   if (e.origin.kind == OriginKind::kTransitionCircle) o["next_line"] = e.origin.next_line;
+  if (e.origin.sar != SarMove::kNone) o["sar"] = sar_move_name(e.origin.sar);
   o["text"] = describe(e.origin);
   j["origin"] = o;
   if (!e.rapid) j["feed"] = e.feed.to_string();
+  if (!e.rapid && e.feed_type == FeedType::kG95) j["feed_type"] = "G95";
   out_ << (first_ ? "\n    " : ",\n    ") << j.dump();
   first_ = false;
 }
@@ -79,6 +81,14 @@ void JsonWriter::notice(const Notice& n) {
   append(notices_, json{{"line", n.line}, {"clause", n.clause}, {"text", n.text}});
 }
 
+void JsonWriter::sar_variables(const SarVariables& v) {
+  append(variables_, json{{"line", v.line},
+                          {"block", block_ref(v.block)},
+                          {"$P_APR", point(v.p_apr)},
+                          {"$P_AEP", point(v.p_aep)},
+                          {"$P_APDV", v.p_apdv}});
+}
+
 void JsonWriter::finish() {
   out_ << (first_ ? "]" : "\n  ]");
   auto list = [&](const char* key, const std::string& items) {
@@ -87,6 +97,7 @@ void JsonWriter::finish() {
   list("actions", actions_);
   list("alarms", alarms_);
   list("notices", notices_);
+  list("variables", variables_);
   if (with_trace_) list("decisions", decisions_);
   out_ << "\n}\n";
 }

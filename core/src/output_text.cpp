@@ -21,7 +21,7 @@ void TextWriter::element(const PathElement& e) {
   ++count_;
   std::string type = e.type == ElementType::kLine ? "line" : (e.ccw ? "arc+" : "arc-");
   out_ << fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}", count_, e.origin.line, type,
-                      e.rapid ? "rapid" : "feed", pt(e.start), pt(e.end), describe(e.origin));
+                      e.rapid ? "rapid" : e.feed_type == FeedType::kG95 ? "feed/r" : "feed", pt(e.start), pt(e.end), describe(e.origin));
   if (e.type == ElementType::kArc) out_ << fmt::format("  centre {} {}", pt(e.center), e.ccw ? "ccw" : "cw");
   out_ << "\n";
 }
@@ -41,6 +41,10 @@ void TextWriter::decision(const Decision& d) {
 void TextWriter::alarm(const Alarm& a) { out_ << fmt::format("ALARM {} {} [{}]\n", a.number, a.text, a.clause); }
 
 void TextWriter::notice(const Notice& n) { out_ << fmt::format("note  line {}: {} [{}]\n", n.line, n.text, n.clause); }
+
+void TextWriter::sar_variables(const SarVariables& v) {
+  out_ << fmt::format("     {:>5} $P_APR={} $P_AEP={} $P_APDV={}\n", v.line, pt(v.p_apr), pt(v.p_aep), v.p_apdv);
+}
 
 void TextWriter::finish() { out_ << fmt::format("{} path elements\n", count_); }
 

@@ -22,13 +22,39 @@ std::string origin_kind_name(OriginKind k) {
   return "?";
 }
 
+std::string describe_kind(const Origin& o);
+
 namespace {
 std::string block_name(int line, const std::optional<std::int64_t>& n) {
   return n ? fmt::format("N{}", *n) : fmt::format("line {}", line);
 }
 }  // namespace
 
+std::string sar_move_name(SarMove m) {
+  switch (m) {
+    case SarMove::kNone:
+      return "";
+    case SarMove::kLead:
+      return "lead";
+    case SarMove::kFastInfeed:
+      return "fast_infeed";
+    case SarMove::kSlowInfeed:
+      return "slow_infeed";
+    case SarMove::kElement:
+      return "element";
+    case SarMove::kEndPath:
+      return "end_path";
+  }
+  return "?";
+}
+
 std::string describe(const Origin& o) {
+  std::string text = describe_kind(o);
+  if (o.sar != SarMove::kNone) text += fmt::format(" (SAR {})", sar_move_name(o.sar));
+  return text;
+}
+
+std::string describe_kind(const Origin& o) {
   std::string b = block_name(o.line, o.block);
   switch (o.kind) {
     case OriginKind::kProgrammed:

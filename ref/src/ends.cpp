@@ -16,7 +16,7 @@ void Reference::approach(const Block& first_block) {
     KontCorner k;
     k.vertex = first.a, k.point = from.plane(comp_->axes);
     k.d1 = k.vertex - k.point, k.d2 = first.start_dir;
-    if (!selection_from_ && first.rational)
+    if (!selection_from_ && first.rational && !overrides_.count(selection_->index))
       k.r1 = RationalVector{mpq_class(units_of(coord(selection_->end, comp_->axes.abscissa)) -
                                       units_of(coord(selection_->start, comp_->axes.abscissa))),
                             mpq_class(units_of(coord(selection_->end, comp_->axes.ordinate)) -
@@ -134,7 +134,7 @@ void Reference::retract_edge(const Block& b) {
   decide("TRC-EDGE-1", b.words.line, g_code(b.state.edge_strategy));
   Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
   EdgeCurve curve =
-      edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_point(b.end, comp_->axes), false);
+      edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_end(b), false);
   EdgeHit edge = edge_hit(curve, *open_, open_radius_, open_start_, false);
   std::optional<Point> hit = edge.point;
   decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", edge.margin);
@@ -215,9 +215,9 @@ void Reference::deselect(const Block& b) {
 
 Reference::KontCorner Reference::retraction_corner(const Block& b, const ContourElement& last) const {
   KontCorner k;
-  k.vertex = last.b, k.point = plane_point(b.end, comp_->axes);
+  k.vertex = last.b, k.point = plane_end(b);
   k.d1 = last.end_dir, k.d2 = k.point - k.vertex;
-  if (last.rational)
+  if (last.rational && !overrides_.count(b.index))
     k.r1 = last.end_tangent,
     k.r2 = RationalVector{
         mpq_class(units_of(coord(b.end, comp_->axes.abscissa)) - units_of(coord(last.end3, comp_->axes.abscissa))),
@@ -256,7 +256,7 @@ void Reference::retract_edge_around(const Block& b, const Block& last_block, con
 
 void Reference::retraction_line(const Block& b, const Point& from_point) {
   ExactPoint from = at({from_point, coord(b.start, comp_->axes.applicate)});
-  ExactPoint to = at(b.end);
+  ExactPoint to = end_of(b);
   FT length = path.distance(from, to);
   decide("TRC-RETR-NORM-1", b.words.line, CGAL::sign(length) == CGAL::ZERO ? "zero-length" : "line", exact_mm(length));
   emit_line(b, from, to, OriginKind::kRetraction);
@@ -297,7 +297,7 @@ void Reference::end_of_program() {
     decide("TRC-END-1", selection_->words.line, "no-contour");
     sink_.notice(
         {selection_->words.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
-    emit_line(*selection_, selection_start(), at(selection_->end), OriginKind::kProgrammed);
+    emit_line(*selection_, selection_start(), end_of(*selection_), OriginKind::kProgrammed);
     run_held_back_uncompensated();
   } else if (phase_ == Phase::kActive) {
     decide("TRC-END-1", open_->line, "active-at-end");

@@ -9,7 +9,7 @@ namespace cutcom::ref::detail {
 void Reference::step(const Block& b) {
   if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
     throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
-  if (b.is_arc() && !arc_is_consistent(b)) return;
+  if (b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b)) return;
   switch (phase_) {
     case Phase::kOff:
       return compensation_off(b);
@@ -35,12 +35,12 @@ bool Reference::arc_is_consistent(const Block& b) {
 }
 
 void Reference::run_uncompensated(const Block& b) {
-  if (!b.is_arc()) return emit_line(b, at(b.start), at(b.end), OriginKind::kProgrammed);
-  // A programmed circle, about its (corrected, ARC-CENTRE-1) centre.
+  if (!b.is_arc()) return emit_line(b, start_of(b), end_of(b), OriginKind::kProgrammed);
+  // A programmed circle, about its (corrected, ARC-CENTRE-1) centre; or a SAR circle.
   PlaneAxes axes = plane_axes(b.state.plane);
-  ContourElement arc = ContourElement::of_arc(b, axes);
+  ContourElement arc = element_of(b);
   Decimal h = coord(b.start, axes.applicate);
-  emit_arc(b, at(b.start), at(b.end), ExactPoint::in_plane(arc.centre, h, axes), arc.radius, arc.sense > 0,
+  emit_arc(b, start_of(b), end_of(b), ExactPoint::in_plane(arc.centre, h, axes), arc.radius, arc.sense > 0,
            origin(b, OriginKind::kProgrammed), axes);
 }
 
@@ -128,7 +128,7 @@ void Reference::run_held_back(const Point& corner_point) {
 }
 
 void Reference::run_held_back_uncompensated() {
-  for (const Block* d : dummies_) emit_line(*d, at(d->start), at(d->end), OriginKind::kProgrammed);
+  for (const Block* d : dummies_) emit_line(*d, start_of(*d), end_of(*d), OriginKind::kProgrammed);
   dummies_.clear();
 }
 
@@ -136,7 +136,7 @@ void Reference::waiting_for_contour(const Block& b) {
   if (b.state.side == Side::kOff) {
     // TRC-SEL-8: deselected before any block moved in the plane: no selection took place.
     decide("TRC-SEL-8", selection_->words.line, "deselected-before-contour");
-    emit_line(*selection_, selection_start(), at(selection_->end), OriginKind::kProgrammed);
+    emit_line(*selection_, selection_start(), end_of(*selection_), OriginKind::kProgrammed);
     run_held_back_uncompensated();
     phase_ = Phase::kOff;
     comp_.reset();
@@ -433,6 +433,7 @@ void Reference::emit_line(const Block& owner, const ExactPoint& from, const Exac
   if (path.same(from, to)) return;
   PathElement e;
   e.type = ElementType::kLine, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
+  e.feed_type = owner.state.feed_type;
   e.start = a, e.end = b, e.origin = origin(named ? *named : owner, kind);
   hold(owner, e,
        ExactPath::line_element(owner.words.line, from, to, offset_of, comp_ ? comp_->side_radius : FT(0),
@@ -445,6 +446,7 @@ void Reference::emit_arc(const Block& owner, const ExactPoint& from, const Exact
   run_actions(owner, a);
   PathElement e;
   e.type = ElementType::kArc, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
+  e.feed_type = owner.state.feed_type;
   e.start = a, e.end = path.output(to), e.center = path.output(centre), e.ccw = ccw;
   e.origin = from_what;
   hold(owner, e, ExactPath::circle_element(owner.words.line, from, to, centre, radius, axes));

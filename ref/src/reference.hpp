@@ -6,18 +6,23 @@
 #include <algorithm>
 #include <climits>
 #include <deque>
+#include <map>
 #include <optional>
+#include <span>
 
 #include "bottleneck.hpp"
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
 #include "cutcom/ref/engine.hpp"
+#include "cutcom/sar_layout.hpp"
+#include "cutcom/sar_sequence.hpp"
 #include "edge_strategy.hpp"
 #include "equidistant.hpp"
 #include "exact_angle.hpp"
 #include "exact_path.hpp"
 #include "exact_root.hpp"
 #include "held_output.hpp"
+#include "sar_shape.hpp"
 
 namespace cutcom::ref::detail {
 
@@ -27,25 +32,28 @@ struct CentrePoint {
   Decimal applicate;
 };
 
+// Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3): exact values.
+struct PlaneOverride {
+  std::optional<Point> start, end;
+  std::optional<SarShape> shape;  // the SAR element
+};
+
 class Reference {
  public:
-  Reference(const MachineData& md, PathSink& sink) : md_(md), sink_(sink), held_(sink, path) {}
+  Reference(const MachineData& md, PathSink& sink) : md_(md), sink_(sink), held_(sink, path), sar_seq_(md) {}
 
   // Blocks are read one by one, as a control reads them, and kept: ref may look back at any of
-  // them (a deque keeps references to earlier blocks valid).
+  // them (a deque keeps references to earlier blocks valid). SAR blocks are expanded into their
+  // sub-blocks first (sar.cpp).
   bool run(ProgramReader& reader) {
+    reader_ = &reader;
     Block b;
-    while (!stopped_ && reader.next(b)) {
-      program_.push_back(b);
-      actions_done_.push_back(false);
-      if (b.moves_in_plane()) ++traversing_;
-      seq_.push_back(traversing_);
-      step(program_.back());
-      release_window(program_.back());
-    }
+    while (!stopped_ && reader.next(b)) take(b);
     // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
     while (stopped_ && reader.next(b)) {
     }
+    if (!stopped_ && sar_seq_.finish() == SarSequence::Step::kAlarm)
+      raise(sar_seq_.alarm(), sar_seq_.alarm_block(), "SAR-TANGENT-1");
     if (!stopped_) end_of_program();
     held_.release_before(INT_MAX);
     return !stopped_;
@@ -99,7 +107,7 @@ class Reference {
 
   Origin origin(const Block& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.words.line, o.block = b.words.number;
+    o.kind = kind, o.line = b.words.line, o.block = b.words.number, o.sar = b.sar.move;
     return o;
   }
 
@@ -115,6 +123,38 @@ class Reference {
   ExactPoint at(const CentrePoint& p) const { return ExactPoint::in_plane(p.plane, p.applicate, comp_->axes); }
   static ExactPoint at(const Point3& p) { return ExactPoint::programmed(p); }
 
+  // --- SAR: smooth approach and retraction (sar.cpp) ---------------------------------------------
+  // A programmed block: through the SAR sequence (SAR-P4-1 ...), then run.
+  void take(Block b);
+  // Runs one block (programmed or a SAR sub-block); `over` gives its exact in-plane points where
+  // they are not its decimals.
+  void push(Block b, const std::optional<PlaneOverride>& over = std::nullopt);
+  // SAR-POINTS-1, SAR-SIDE-*, SAR-DISR-*, SAR-DISCL-*, SAR-SUB-1 ...: expands an approach.
+  void sar_approach(std::span<const Block> gathered, int p4_index);
+  // SAR-POINTS-2, SAR-END-*: expands a retraction; `last` is the contour's last block.
+  void sar_retraction(const Block& r, const Block& last);
+  struct SarTrc {
+    bool on;
+    int s;              // side of the compensation (negative radius swapped), +1 without
+    Decimal effective;  // signed effective radius (0 without)
+    Decimal r;          // its magnitude
+  };
+  static SarTrc sar_trc(const ModalState& state);
+  // SAR-SIDE-1/2/3: the side of a circle; 0 after an alarm.
+  int sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4, const std::optional<Point>& p0);
+  // SAR-DISR-1/2: L or R in units; empty after an alarm.
+  std::optional<FT> sar_size(const Block& b, const SarTrc& trc, int s);
+  // SAR-DISCL-1..3, SAR-DISRP-1/2, SAR-SEG-1/2: the levels; false after an alarm.
+  bool sar_levels(const Block& b, SarLevels& h, bool approach, SarEndCase end_case);
+  // Pushes the sub-blocks with their exact points.
+  void push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape, const std::optional<Point>& tool_centre);
+  // SAR-END-3: a programmed block after a retraction that ended without end point starts there.
+  std::optional<PlaneOverride> after_sar_end(const Block& b);
+
+  ExactPoint start_of(const Block& b) const;
+  ExactPoint end_of(const Block& b) const;
+  Point plane_end(const Block& b) const { return end_of(b).plane(plane_axes(b.state.plane)); }
+
   // --- one block ---------------------------------------------------------------------------------
   void step(const Block& b);
 
@@ -122,9 +162,7 @@ class Reference {
   // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
   bool arc_is_consistent(const Block& b);
 
-  ContourElement element_of(const Block& b) const {
-    return b.is_arc() ? ContourElement::of_arc(b, comp_->axes) : ContourElement::of_line(b, comp_->axes);
-  }
+  ContourElement element_of(const Block& b) const;
 
   void run_uncompensated(const Block& b);
 
@@ -137,7 +175,7 @@ class Reference {
   void change_side(const Block& b);
 
   // Where the selection block starts: its programmed start, or the tool after a side change.
-  ExactPoint selection_start() const { return selection_from_ ? *selection_from_ : at(selection_->start); }
+  ExactPoint selection_start() const { return selection_from_ ? *selection_from_ : start_of(*selection_); }
 
   // TRC-SEL-1: the selection block; TRC-RADIUS-1/2: effective radius and side.
   void select(const Block& b);
@@ -380,6 +418,7 @@ class Reference {
 
   std::deque<Block> program_;
   const MachineData& md_;
+  ProgramReader* reader_ = nullptr;
   PathSink& sink_;
   std::vector<int> seq_;  // per block: the ordinal of the last traversing block up to it (TRC-CD-1)
   int traversing_ = 0;
@@ -411,6 +450,15 @@ class Reference {
   std::vector<const Block*> skipped_;
   int examined_ = 0;
   int dummy_run_ = 0;
+  // SAR
+  SarSequence sar_seq_;
+  std::map<int, PlaneOverride> overrides_;  // by block index
+  int last_contour_ = -1;                   // index of the last programmed block moving in the plane
+  struct SarEnd {
+    Point at;
+    Plane plane;
+  };
+  std::optional<SarEnd> sar_end_;  // SAR-END-3
 };
 
 }  // namespace cutcom::ref::detail

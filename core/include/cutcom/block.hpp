@@ -153,6 +153,26 @@ constexpr PlaneAxes plane_axes(Plane p) {
 
 constexpr const Decimal& coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
+// SAR sub-blocks (spec SAR-SUB-1): which movement of a smooth approach or retraction a block
+// generated from a SAR block is. Its in-plane points at the SAR point P3 (and, for SAR-END-2,
+// the tool centre there) are not decimals: each engine keeps them in its own number model, and
+// the block's decimal coordinates there are only a rounded picture.
+enum class SarMove : std::uint8_t {
+  kNone,        // a programmed block
+  kLead,        // P0 -> P1 (approach) / P1 -> P0 (retraction): parallel to the plane unless DISRP
+  kFastInfeed,  // P1 <-> P2
+  kSlowInfeed,  // P2 <-> P3 (G341)
+  kElement,     // P3 <-> P4: the straight line, quadrant or semicircle (helix with G340)
+  kEndPath,     // SAR-END-2: P1 -> P0 added when G40 deselects in a retraction without end point
+};
+struct SarTag {
+  SarMove move = SarMove::kNone;
+  bool plane_motion = false;  // decided by the engine that generated the block
+  bool start_at_p3 = false, end_at_p3 = false;
+  bool end_at_tool_centre = false;  // SAR-END-2: the end is the tool centre at P1
+  int sar_line = 0;                 // source line of the SAR block
+};
+
 // A resolved block: its words, the modal state in force, and exact programmed start/end points.
 struct Block {
   BlockWords words;
@@ -164,14 +184,18 @@ struct Block {
   int index = 0;        // 0-based block index in the program
   bool circle = false;  // set by the reader: see is_arc()
 
+  SarTag sar;           // a SAR sub-block (engines only; the reader leaves it empty)
+
   // Any geometry axis of the active plane written in the block (spec TRC-SEL-3/4).
   bool programs_plane_axis() const {
+    if (sar.move != SarMove::kNone) return sar.plane_motion;
     PlaneAxes a = plane_axes(state.plane);
     return words.axis[a.abscissa].present || words.axis[a.ordinate].present;
   }
   // In-plane displacement is non-zero (exact comparison of programmed decimals).
   // A circle always does: with equal start and end it is a full circle.
   bool moves_in_plane() const {
+    if (sar.move != SarMove::kNone) return sar.plane_motion;
     if (is_arc()) return true;
     PlaneAxes a = plane_axes(state.plane);
     return coord(start, a.abscissa) != coord(end, a.abscissa) || coord(start, a.ordinate) != coord(end, a.ordinate);
@@ -180,6 +204,7 @@ struct Block {
   // A circle: G2/G3 in force and the block programs an axis or circle data (NC-ARC-2). A block
   // without them (only M8, say) moves nowhere, whatever the modal motion.
   bool is_arc() const { return circle; }
+  bool is_sar_block() const { return words.sar_contour.has_value(); }
 };
 
 }  // namespace cutcom

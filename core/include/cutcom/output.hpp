@@ -19,13 +19,14 @@ class JsonWriter : public PathSink {
   void decision(const Decision& d) override;
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
+  void sar_variables(const SarVariables& v) override;
   void finish();
 
  private:
   std::ostream& out_;
   bool with_trace_;
   bool first_ = true;
-  std::string actions_, decisions_, alarms_, notices_;  // serialized JSON array items
+  std::string actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
 };
 
 class TextWriter : public PathSink {
@@ -36,6 +37,7 @@ class TextWriter : public PathSink {
   void decision(const Decision& d) override;
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
+  void sar_variables(const SarVariables& v) override;
   void finish();
 
  private:

@@ -32,6 +32,7 @@ struct Origin {
   std::optional<std::int64_t> block;  // its N number
   int next_line = 0;                  // transition circle: line of the second corner block
   std::optional<std::int64_t> next_block;
+  SarMove sar = SarMove::kNone;  // the element belongs to this movement of a SAR block
 };
 
 struct PathElement {
@@ -40,6 +41,7 @@ struct PathElement {
   PathPoint start, end, center;  // center: arcs only
   bool ccw = false;              // arcs: counter-clockwise seen from the positive applicate axis
   Decimal feed;                  // modal feed of the block the element belongs to
+  FeedType feed_type = FeedType::kG94;  // G95 for revolutional feed (FAD=PR())
   Origin origin;
 };
 
@@ -53,5 +55,6 @@ struct ActionEvent {
 
 std::string origin_kind_name(OriginKind k);  // "offset", "transition_circle", ...
 std::string describe(const Origin& o);       // "transition circle at corner N30/N40"
+std::string sar_move_name(SarMove m);         // "lead", "fast_infeed", ... ("" for kNone)
 
 }  // namespace cutcom

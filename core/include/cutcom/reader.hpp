@@ -50,6 +50,9 @@ class ProgramReader {
   explicit ProgramReader(std::istream& in, ModalState initial = {});
   // Next block, or false at the end of the text or after M2/M30. Throws InputError.
   bool next(Block& out);
+  // SAR-END-3: after a SAR retraction without end point the tool is where the retraction ended;
+  // blocks read after it start there (the engines give the in-plane position exactly).
+  void set_position(const Point3& p) { position_ = p; }
 
  private:
   void resolve(Block& b);

@@ -10,6 +10,15 @@
 
 namespace cutcom {
 
+// SAR-VAR-1: $P_APR (P3) and $P_AEP (P4) of a SAR approach block, programmed-contour positions in
+// workpiece coordinates (ruling 16); $P_APDV = 1: they belong to the last SAR approach programmed.
+struct SarVariables {
+  int line = 0;
+  std::optional<std::int64_t> block;
+  PathPoint p_apr, p_aep;
+  int p_apdv = 1;
+};
+
 class PathSink {
  public:
   virtual ~PathSink() = default;
@@ -18,6 +27,7 @@ class PathSink {
   virtual void decision(const Decision&) {}
   virtual void alarm(const Alarm&) {}
   virtual void notice(const Notice&) {}
+  virtual void sar_variables(const SarVariables&) {}
 };
 
 struct RunResult {
@@ -26,6 +36,7 @@ struct RunResult {
   std::vector<Decision> decisions;
   std::vector<Alarm> alarms;
   std::vector<Notice> notices;
+  std::vector<SarVariables> variables;  // one per SAR approach, in program order
 };
 
 class CollectingSink : public PathSink {
@@ -35,6 +46,7 @@ class CollectingSink : public PathSink {
   void decision(const Decision& d) override { result.decisions.push_back(d); }
   void alarm(const Alarm& a) override { result.alarms.push_back(a); }
   void notice(const Notice& n) override { result.notices.push_back(n); }
+  void sar_variables(const SarVariables& v) override { result.variables.push_back(v); }
   RunResult result;
 };
 

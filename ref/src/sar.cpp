@@ -1,0 +1,348 @@
+// ref: smooth approach and retraction (spec sar.md). The SAR block is expanded into sub-blocks
+// that run through the compensation as if programmed (SAR-TRC-1); their points are exact: P3
+// has one square root (the unit tangent), the applicates are decimals.
+#include "reference.hpp"
+
+namespace cutcom::ref::detail {
+
+namespace {
+FT mm_units(const Decimal& d) { return leaf(d); }
+std::string mm(const Decimal& d) { return exact_mm(leaf(d)); }
+}  // namespace
+
+void Reference::take(Block b) {
+  std::optional<PlaneOverride> over = after_sar_end(b);
+  if (stopped_) return;
+  switch (sar_seq_.take(b)) {
+    case SarSequence::Step::kPass:
+      return push(b, over);
+    case SarSequence::Step::kHold:
+      return;
+    case SarSequence::Step::kApproach:
+      sar_approach(sar_seq_.gathered(), sar_seq_.p4_index());
+      return sar_seq_.release();
+    case SarSequence::Step::kRetraction:
+      if (last_contour_ < 0) return raise(10744, b, "SAR-TANGENT-1");
+      return sar_retraction(b, program_[static_cast<std::size_t>(last_contour_)]);
+    case SarSequence::Step::kAlarm: {
+      const AlarmInfo* info = find_alarm(sar_seq_.alarm());
+      return raise(sar_seq_.alarm(), sar_seq_.alarm_block(), info ? info->clause : std::string_view{});
+    }
+  }
+}
+
+void Reference::push(Block b, const std::optional<PlaneOverride>& over) {
+  if (stopped_) return;
+  b.index = static_cast<int>(program_.size());
+  if (over) overrides_[b.index] = *over;
+  program_.push_back(b);
+  actions_done_.push_back(false);
+  const Block& kept = program_.back();
+  if (kept.moves_in_plane()) ++traversing_;
+  if (kept.sar.move == SarMove::kNone && kept.moves_in_plane()) last_contour_ = kept.index;
+  seq_.push_back(traversing_);
+  step(kept);
+  release_window(kept);
+}
+
+ExactPoint Reference::start_of(const Block& b) const {
+  auto it = overrides_.find(b.index);
+  if (it == overrides_.end() || !it->second.start) return at(b.start);
+  return ExactPoint::in_plane(*it->second.start, coord(b.start, plane_axes(b.state.plane).applicate),
+                              plane_axes(b.state.plane));
+}
+
+ExactPoint Reference::end_of(const Block& b) const {
+  auto it = overrides_.find(b.index);
+  if (it == overrides_.end() || !it->second.end) return at(b.end);
+  return ExactPoint::in_plane(*it->second.end, coord(b.end, plane_axes(b.state.plane).applicate),
+                              plane_axes(b.state.plane));
+}
+
+ContourElement Reference::element_of(const Block& b) const {
+  PlaneAxes axes = comp_ ? comp_->axes : plane_axes(b.state.plane);
+  auto it = overrides_.find(b.index);
+  if (it == overrides_.end()) return b.is_arc() ? ContourElement::of_arc(b, axes) : ContourElement::of_line(b, axes);
+  if (it->second.shape) return sar_element(*it->second.shape, b);
+  return exact_line(b, start_of(b).plane(axes), end_of(b).plane(axes));
+}
+
+// SAR-END-3: after a retraction that ended without end point (cases 1 and 2) the tool stands at
+// an exact point off the decimal grid. Blocks without plane axes stay there; the next block
+// must program both plane axes absolutely (one, incremental, or a circle is not supported).
+std::optional<PlaneOverride> Reference::after_sar_end(const Block& b) {
+  if (!sar_end_) return std::nullopt;
+  if (b.is_sar_block() && SarSequence::is_approach(b))
+    throw UnsupportedError(b.words.line, "SAR approach from where a SAR retraction without end point ended "
+                                         "(program both plane axes before it)");
+  PlaneAxes a = plane_axes(sar_end_->plane);
+  const AxisWord& u = b.words.axis[static_cast<std::size_t>(a.abscissa)];
+  const AxisWord& v = b.words.axis[static_cast<std::size_t>(a.ordinate)];
+  PlaneOverride over;
+  over.start = sar_end_->at;
+  if (!u.present && !v.present && b.state.plane == sar_end_->plane && !b.is_arc()) {
+    over.end = sar_end_->at;
+    return over;
+  }
+  auto absolute = [&](const AxisWord& w) {
+    return w.mode == ValueMode::kAbsolute || (w.mode == ValueMode::kModal && b.state.absolute);
+  };
+  if (!u.present || !v.present || !absolute(u) || !absolute(v) || b.is_arc() || b.state.plane != sar_end_->plane)
+    throw UnsupportedError(b.words.line, "after a SAR retraction without end point the next move in the plane "
+                                         "must program both plane axes absolutely, in a straight block");
+  sar_end_.reset();
+  return over;
+}
+
+Reference::SarTrc Reference::sar_trc(const ModalState& st) {
+  SarTrc t{false, 1, Decimal{}, Decimal{}};
+  if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return t;
+  t.on = true;
+  t.effective = st.effective_radius();
+  t.s = st.side == Side::kLeft ? 1 : -1;
+  if (t.effective.sign() < 0) t.s = -t.s;  // TRC-RADIUS-2, ruling 2
+  t.r = t.effective.sign() < 0 ? -t.effective : t.effective;
+  return t;
+}
+
+int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4,
+                        const std::optional<Point>& p0) {
+  SarSide mode = b.state.sar_side;
+  if (mode == SarSide::kG141) return decide("SAR-SIDE-1", b.words.line, "G141-left"), 1;
+  if (mode == SarSide::kG142) return decide("SAR-SIDE-1", b.words.line, "G142-right"), -1;
+  if (mode == SarSide::kG140 && trc.on) return decide("SAR-SIDE-1", b.words.line, trc.s > 0 ? "G140-left" : "G140-right"), trc.s;
+  // SAR-SIDE-2: G143 (or G140 without compensation): the side of the tangent P0 lies on.
+  if (!p0) {
+    decide("SAR-SIDE-3", b.words.line, "implicit-end-point");
+    raise(10747, b, "SAR-SIDE-3");
+    return 0;
+  }
+  Vector off = *p0 - p4;
+  FT cross = t.x() * off.y() - t.y() * off.x();
+  CGAL::Sign sign = CGAL::sign(cross);
+  decide("SAR-SIDE-2", b.words.line, sign == CGAL::POSITIVE ? "left" : sign == CGAL::NEGATIVE ? "right" : "on-tangent",
+         exact_mm(cross / exact_root(t.squared_length())));
+  if (sign == CGAL::ZERO) {
+    raise(10744, b, "SAR-SIDE-2");
+    return 0;
+  }
+  return sign == CGAL::POSITIVE ? 1 : -1;
+}
+
+std::optional<FT> Reference::sar_size(const Block& b, const SarTrc& trc, int s) {
+  SarContour c = *b.words.sar_contour;
+  bool line = c == SarContour::kG147 || c == SarContour::kG148;
+  if (!b.words.disr) {
+    decide(line ? "SAR-DISR-1" : "SAR-DISR-2", b.words.line, "missing");
+    raise(10742, b, line ? "SAR-DISR-1" : "SAR-DISR-2");
+    return std::nullopt;
+  }
+  Decimal disr = *b.words.disr;
+  Decimal size;
+  if (line) {
+    // SAR-DISR-1: L = DISR + r (only a positive effective radius counts).
+    size = disr + (trc.on && trc.effective.sign() > 0 ? trc.effective : Decimal{});
+    decide("SAR-DISR-1", b.words.line, size.sign() > 0 ? "valid" : "not-positive", mm(size));
+  } else {
+    // SAR-DISR-2: DISR > 0, R = DISR + r with the tool inside the circle, DISR - r outside.
+    if (disr.sign() <= 0) {
+      decide("SAR-DISR-2", b.words.line, "not-positive", mm(disr));
+      raise(10742, b, "SAR-DISR-2");
+      return std::nullopt;
+    }
+    size = !trc.on ? disr : s == trc.s ? disr + trc.r : disr - trc.r;
+    decide("SAR-DISR-2", b.words.line, size.sign() > 0 ? "valid" : "not-positive", mm(size));
+  }
+  if (size.sign() <= 0) {
+    raise(10742, b, line ? "SAR-DISR-1" : "SAR-DISR-2");
+    return std::nullopt;
+  }
+  return mm_units(size);
+}
+
+bool Reference::sar_levels(const Block& b, SarLevels& h, bool approach, SarEndCase end_case) {
+  PlaneAxes ax = plane_axes(b.state.plane);
+  const BlockWords& w = b.words;
+  auto level = [&](const AxisWord& word) {  // SAR-DISCL-1 / SAR-DISRP-1: AC() or from P4's plane
+    return word.mode == ValueMode::kAbsolute ? word.value : h.h4 + word.value;
+  };
+  bool g340 = b.state.sar_segmentation == SarSegmentation::kG340;
+  if (approach) {
+    h.h0 = coord(b.start, ax.applicate);
+    h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
+  } else if (end_case == SarEndCase::kNoAxis ||
+             (end_case == SarEndCase::kPlaneAxis && !w.axis[static_cast<std::size_t>(ax.applicate)].present)) {
+    // SAR-END-1 cases 1 and 3 without the applicate: the retraction ends at the level of P2.
+    if (w.disrp.present) throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P2");
+    h.h0 = h.h1 = w.discl.present ? level(w.discl) : h.h4;
+    h.h2 = h.h1;
+  } else {
+    h.h0 = coord(b.end, ax.applicate);
+    if (end_case == SarEndCase::kApplicateOnly && w.disrp.present)
+      throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P1 (the programmed applicate)");
+    h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
+  }
+  if (approach || end_case == SarEndCase::kApplicateOnly ||
+      (end_case == SarEndCase::kPlaneAxis && w.axis[static_cast<std::size_t>(ax.applicate)].present)) {
+    h.h2 = w.discl.present ? level(w.discl) : h.h1;  // ruling 7: no DISCL, no fast infeed
+  }
+  // SAR-SEG-1 (ruling 12): G340 with DISCL=0 or without DISCL: one spatial element from P1.
+  if (g340 && (!w.discl.present || (w.discl.mode != ValueMode::kAbsolute && w.discl.value.is_zero()))) h.h2 = h.h1;
+  // SAR-DISRP-2: the retraction plane P1 on the other side of P4's plane than P2.
+  if (w.disrp.present && w.discl.present) {
+    int s1 = (h.h1 - h.h4).sign(), s2 = (h.h2 - h.h4).sign();
+    decide("SAR-DISRP-2", w.line, s1 * s2 < 0 ? "opposite-sides" : "same-side");
+    if (s1 * s2 < 0) return raise(10748, b, "SAR-DISRP-2"), false;
+  }
+  // SAR-DISCL-3 (ruling 9): h(P1), h(P2), h(P4) monotone; within MD20204 outside, P2 is clamped.
+  Decimal lo = std::min(h.h1, h.h4), hi = std::max(h.h1, h.h4);
+  Decimal excess = h.h2 < lo ? lo - h.h2 : h.h2 > hi ? h.h2 - hi : Decimal{};
+  Decimal slack = md_.wab_clearance_tolerance - excess;
+  if (excess.is_zero()) {
+    decide("SAR-DISCL-3", w.line, "between", mm(slack));
+  } else if (slack.sign() >= 0) {
+    decide("SAR-DISCL-3", w.line, "clamped", mm(slack));
+    h.h2 = h.h2 < lo ? lo : hi;
+  } else {
+    decide("SAR-DISCL-3", w.line, "reversal", mm(slack));
+    return raise(10741, b, "SAR-DISCL-3"), false;
+  }
+  h.h3 = g340 ? h.h2 : h.h4;  // SAR-SEG-1 / SAR-SEG-2
+  return true;
+}
+
+void Reference::sar_approach(std::span<const Block> g, int p4_index) {
+  const Block& a = g[0];
+  const Block& m = g[static_cast<std::size_t>(p4_index)];
+  const Block& d = g.back();
+  PlaneAxes ax = plane_axes(a.state.plane);
+  for (int k = 1; k < p4_index; ++k)
+    if (g[static_cast<std::size_t>(k)].words.programs_any_axis())
+      throw UnsupportedError(g[static_cast<std::size_t>(k)].words.line,
+                             "axis motion between a SAR block and the block that gives P4");
+  if (d.state.plane != a.state.plane)
+    throw UnsupportedError(d.words.line, "plane change between a SAR block and its direction block");
+  if (d.is_arc() && !arc_is_consistent(d)) return;
+  // SAR-TANGENT-1: the start tangent of the first element that starts at P4.
+  ContourElement de = d.is_arc() ? ContourElement::of_arc(d, ax) : ContourElement::of_line(d, ax);
+  Vector t = de.start_dir;
+  decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
+  Point p4 = plane_point(m.end, ax), p0 = plane_point(a.start, ax);
+  SarTrc trc = sar_trc(a.state);
+  SarContour c = *a.words.sar_contour;
+  int s = trc.s;
+  if (c != SarContour::kG147) s = sar_side(a, trc, t, p4, p0);
+  if (s == 0) return;
+  std::optional<FT> size = sar_size(a, trc, s);
+  if (!size) return;
+  SarShape shape = sar_shape(c, p4, t, s, *size);
+  SarPlan plan;
+  plan.approach = true;
+  plan.h.h4 = coord(m.end, ax.applicate);
+  if (!sar_levels(a, plan.h, true, SarEndCase::kApproach)) return;
+  plan.p0 = a.start, plan.p4 = m.end;
+  plan.p3_a = nearest_decimal(CGAL::to_double(shape.p3.x()));
+  plan.p3_b = nearest_decimal(CGAL::to_double(shape.p3.y()));
+  plan.lead_moves = p0 != shape.p3;
+  plan.sense = shape.sense;
+  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead");
+  SarSubBlocks subs;
+  sar_sub_blocks(a, m, plan, subs);
+  // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
+  SarVariables v;
+  v.line = a.words.line, v.block = a.words.number;
+  v.p_apr = path.output(ExactPoint::in_plane(shape.p3, plan.h.h3, ax));
+  v.p_aep = path.output(at(m.end));
+  sink_.sar_variables(v);
+  push_sub_blocks(subs, shape, std::nullopt);
+  for (std::size_t k = 1; k < g.size() && !stopped_; ++k) {
+    if (static_cast<int>(k) == p4_index && subs.element_in_p4_block) {
+      PlaneOverride over;
+      over.start = shape.p3, over.shape = shape;
+      push(subs.p4_element, over);
+    } else {
+      push(g[k]);
+    }
+  }
+}
+
+void Reference::sar_retraction(const Block& r, const Block& last) {
+  PlaneAxes ax = plane_axes(r.state.plane);
+  if (last.state.plane != r.state.plane)
+    throw UnsupportedError(r.words.line, "plane change between the contour and its SAR retraction");
+  // SAR-TANGENT-1: the end tangent of the contour's last block.
+  Vector t = element_of(last).end_dir;
+  decide("SAR-TANGENT-1", r.words.line, "end-of-contour");
+  SarEndCase end_case = sar_end_case(r);
+  decide("SAR-END-1", r.words.line,
+         end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
+         : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
+                                                  : "programmed-p0");
+  Point p4 = plane_end(last);
+  std::optional<Point> p0;
+  if (end_case == SarEndCase::kPlaneAxis) p0 = plane_point(r.end, ax);
+  SarTrc trc = sar_trc(r.previous.side != Side::kOff ? r.previous : r.state);
+  SarContour c = *r.words.sar_contour;
+  int s = trc.s;
+  if (c != SarContour::kG148) s = sar_side(r, trc, t, p4, p0);
+  if (s == 0) return;
+  std::optional<FT> size = sar_size(r, trc, s);
+  if (!size) return;
+  SarShape shape = sar_shape(c, p4, t, s, *size);
+  SarPlan plan;
+  plan.approach = false;
+  plan.end_case = end_case;
+  plan.h.h4 = coord(r.start, ax.applicate);
+  if (!sar_levels(r, plan.h, false, end_case)) return;
+  plan.p4 = r.start;
+  plan.p0 = r.end;
+  plan.p3_a = nearest_decimal(CGAL::to_double(shape.p3.x()));
+  plan.p3_b = nearest_decimal(CGAL::to_double(shape.p3.y()));
+  plan.lead_moves = p0 && *p0 != shape.p3;
+  plan.sense = shape.sense;
+  // SAR-END-2: G40 without end point: P0 is the tool centre at P1 (normal end of the element).
+  std::optional<Point> tool_centre;
+  bool deselects = r.state.side == Side::kOff && r.previous.side != Side::kOff;
+  if (end_case != SarEndCase::kPlaneAxis && deselects && trc.on) {
+    Vector n = unit_left_normal(shape.end_dir);
+    tool_centre = shape.p3 + n * (FT(trc.s) * leaf(trc.r));
+    plan.tc_a = nearest_decimal(CGAL::to_double(tool_centre->x()));
+    plan.tc_b = nearest_decimal(CGAL::to_double(tool_centre->y()));
+  } else if (end_case != SarEndCase::kPlaneAxis && deselects) {
+    tool_centre = shape.p3;
+    plan.tc_a = plan.p3_a, plan.tc_b = plan.p3_b;
+  }
+  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead");
+  SarSubBlocks subs;
+  sar_sub_blocks(r, r, plan, subs);
+  push_sub_blocks(subs, shape, tool_centre);
+  if (stopped_ || end_case == SarEndCase::kPlaneAxis) return;
+  // SAR-END-3: the next blocks start where the retraction ended.
+  Point end = tool_centre ? *tool_centre : shape.p3;
+  sar_end_ = SarEnd{end, r.state.plane};
+  Point3 picture = r.end;
+  Decimal* cs[3] = {&picture.x, &picture.y, &picture.z};
+  *cs[ax.abscissa] = tool_centre ? plan.tc_a : plan.p3_a;
+  *cs[ax.ordinate] = tool_centre ? plan.tc_b : plan.p3_b;
+  *cs[ax.applicate] = plan.h.h0;
+  reader_->set_position(picture);
+}
+
+void Reference::push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape,
+                                const std::optional<Point>& tool_centre) {
+  for (int k = 0; k < subs.count && !stopped_; ++k) {
+    const Block& b = subs.blocks[static_cast<std::size_t>(k)];
+    PlaneOverride over;
+    if (b.sar.start_at_p3) over.start = shape.p3;
+    if (b.sar.end_at_p3) over.end = shape.p3;
+    if (b.sar.move == SarMove::kElement) {
+      over.shape = shape;
+      (shape.approach ? over.start : over.end) = shape.p3;
+      (shape.approach ? over.end : over.start) = shape.p4;
+    }
+    if (b.sar.end_at_tool_centre) over.end = *tool_centre;
+    push(b, over);
+  }
+}
+
+}  // namespace cutcom::ref::detail
