@@ -60,7 +60,8 @@ std::string helix_path(const View& v, const PathElement& e) {
     double f = static_cast<double>(k) / n, ang = a0 + (e.ccw ? 1 : -1) * sweep * f;
     PathPoint q;
     double* c[3] = {&q.x, &q.y, &q.z};
-    *c[p.abscissa] = ca + r * std::cos(ang), *c[p.ordinate] = cb + r * std::sin(ang), *c[p.applicate] = h0 + (h1 - h0) * f;
+    *c[p.abscissa] = ca + r * std::cos(ang), *c[p.ordinate] = cb + r * std::sin(ang),
+    *c[p.applicate] = h0 + (h1 - h0) * f;
     d += fmt::format(" L {:.3f} {:.3f}", v.sx(q), v.sy(q));
   }
   return d;
@@ -73,9 +74,9 @@ std::vector<ProgrammedSegment> programmed_contour(const std::vector<Block>& bloc
   bool p4_pending = false;  // SAR-P4-2: the next traversing block's motion is the SAR element
   for (const Block& b : blocks) {
     if (b.is_sar_block()) {  // its contour is generated, not programmed (drawn as path)
-      p4_pending = !b.programs_plane_axis() && (*b.words.sar_contour == SarContour::kG147 ||
-                                                *b.words.sar_contour == SarContour::kG247 ||
-                                                *b.words.sar_contour == SarContour::kG347);
+      p4_pending = !b.programs_plane_axis() &&
+                   (*b.words.sar_contour == SarContour::kG147 || *b.words.sar_contour == SarContour::kG247 ||
+                    *b.words.sar_contour == SarContour::kG347);
       continue;
     }
     if (p4_pending && b.moves_in_plane()) {
@@ -116,9 +117,10 @@ void draw_panel(std::ostream& out, const View& v, const std::vector<ProgrammedSe
     out << fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#666\" font-size=\"10\">L{}</text>\n", v.sx(s.end) + 3,
                        v.sy(s.end) - 3, s.line);
   for (const auto& e : result.path) {
-    std::string d = e.type == ElementType::kArc ? (v.side ? helix_path(v, e) : arc_path(v, e.start, e.end, e.center, e.ccw))
-                                                : fmt::format("M {:.3f} {:.3f} L {:.3f} {:.3f}", v.sx(e.start),
-                                                              v.sy(e.start), v.sx(e.end), v.sy(e.end));
+    std::string d =
+        e.type == ElementType::kArc
+            ? (v.side ? helix_path(v, e) : arc_path(v, e.start, e.end, e.center, e.ccw))
+            : fmt::format("M {:.3f} {:.3f} L {:.3f} {:.3f}", v.sx(e.start), v.sy(e.start), v.sx(e.end), v.sy(e.end));
     const char* colour = e.rapid ? "#d62728" : e.origin.kind == OriginKind::kTransitionCircle ? "#ff8c00" : "#1f5fbf";
     out << fmt::format(
         "<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} marker-end=\"url(#arrow)\">"

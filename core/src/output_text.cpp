@@ -21,7 +21,10 @@ void TextWriter::element(const PathElement& e) {
   ++count_;
   std::string type = e.type == ElementType::kLine ? "line" : (e.ccw ? "arc+" : "arc-");
   out_ << fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}", count_, e.origin.line, type,
-                      e.rapid ? "rapid" : e.feed_type == FeedType::kG95 ? "feed/r" : "feed", pt(e.start), pt(e.end), describe(e.origin));
+                      e.rapid                         ? "rapid"
+                      : e.feed_type == FeedType::kG95 ? "feed/r"
+                                                      : "feed",
+                      pt(e.start), pt(e.end), describe(e.origin));
   if (e.type == ElementType::kArc) out_ << fmt::format("  centre {} {}", pt(e.center), e.ccw ? "ccw" : "cw");
   out_ << "\n";
 }

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "cutcom/engine.hpp"
+
 namespace cutcom {
 
 SarEndCase sar_end_case(const Block& sar) {
@@ -10,6 +12,57 @@ SarEndCase sar_end_case(const Block& sar) {
   PlaneAxes a = plane_axes(sar.state.plane);
   return sar.words.axis[static_cast<std::size_t>(a.applicate)].present ? SarEndCase::kApplicateOnly
                                                                        : SarEndCase::kNoAxis;
+}
+
+SarLevels sar_levels(const Block& b, SarEndCase end_case, const Decimal& h4) {
+  PlaneAxes ax = plane_axes(b.state.plane);
+  const BlockWords& w = b.words;
+  SarLevels h;
+  h.h4 = h4;
+  auto level = [&](const AxisWord& word) {  // SAR-DISCL-1 / SAR-DISRP-1: AC() or from P4's plane
+    return word.mode == ValueMode::kAbsolute ? word.value : h4 + word.value;
+  };
+  bool applicate = w.axis[static_cast<std::size_t>(ax.applicate)].present;
+  if (end_case == SarEndCase::kApproach) {
+    h.h0 = coord(b.start, ax.applicate);
+    h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
+    h.h2 = w.discl.present ? level(w.discl) : h.h1;  // SAR-DISCL-2 (ruling 7)
+  } else if (end_case == SarEndCase::kNoAxis || (end_case == SarEndCase::kPlaneAxis && !applicate)) {
+    // SAR-END-1, case 1 (and case 3 without the applicate): the retraction ends at P2's level.
+    if (w.disrp.present) throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P2");
+    h.h0 = h.h1 = h.h2 = w.discl.present ? level(w.discl) : h4;
+  } else {
+    // Case 2 (ends at P1, the programmed level) and case 3 with the applicate.
+    if (end_case == SarEndCase::kApplicateOnly && w.disrp.present)
+      throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P1 (the programmed applicate)");
+    h.h0 = coord(b.end, ax.applicate);
+    h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
+    h.h2 = w.discl.present ? level(w.discl) : h.h1;
+  }
+  // SAR-DISCL-2 (ruling 12): G340 with DISCL=0 or without DISCL: one spatial element from P1.
+  bool g340 = b.state.sar_segmentation == SarSegmentation::kG340;
+  if (g340 && (!w.discl.present || (w.discl.mode != ValueMode::kAbsolute && w.discl.value.is_zero()))) h.h2 = h.h1;
+  return h;
+}
+
+bool keeps_sar_end(const Block& b, Plane plane) {
+  if (b.is_sar_block() && (*b.words.sar_contour == SarContour::kG147 || *b.words.sar_contour == SarContour::kG247 ||
+                           *b.words.sar_contour == SarContour::kG347))
+    throw UnsupportedError(b.words.line,
+                           "SAR approach from where a SAR retraction without end point ended (program both plane axes "
+                           "before it)");
+  PlaneAxes a = plane_axes(plane);
+  const AxisWord& u = b.words.axis[static_cast<std::size_t>(a.abscissa)];
+  const AxisWord& v = b.words.axis[static_cast<std::size_t>(a.ordinate)];
+  if (!u.present && !v.present && b.state.plane == plane && !b.is_arc()) return true;
+  auto absolute = [&](const AxisWord& w) {
+    return w.mode == ValueMode::kAbsolute || (w.mode == ValueMode::kModal && b.state.absolute);
+  };
+  if (!u.present || !v.present || !absolute(u) || !absolute(v) || b.is_arc() || b.state.plane != plane)
+    throw UnsupportedError(b.words.line,
+                           "after a SAR retraction without end point the next move in the plane must program both "
+                           "plane axes absolutely, in a straight block");
+  return false;
 }
 
 Decimal nearest_decimal(double units) { return Decimal::from_units(static_cast<Int128>(std::llround(units))); }
@@ -25,7 +78,9 @@ Point3 point(PlaneAxes a, const Decimal& ab, const Decimal& ord, const Decimal& 
 
 Decimal feed_of(const Block& sar, FeedType& type) {
   const BlockWords& w = sar.words;
-  type = w.fad_mode == FadMode::kPm ? FeedType::kG94 : w.fad_mode == FadMode::kPr ? FeedType::kG95 : sar.state.feed_type;
+  type = w.fad_mode == FadMode::kPm   ? FeedType::kG94
+         : w.fad_mode == FadMode::kPr ? FeedType::kG95
+                                      : sar.state.feed_type;
   return *w.fad;
 }
 

@@ -1,6 +1,8 @@
 // SAR-P4-1, SAR-STOP-1, SAR-AGAIN-1, SAR-TANGENT-1: gathering the blocks of a SAR sequence.
 #include "cutcom/sar_sequence.hpp"
 
+#include "cutcom/engine.hpp"
+
 namespace cutcom {
 
 SarSequence::Step SarSequence::fail(int number, const Block& at) {
@@ -20,6 +22,9 @@ SarSequence::Step SarSequence::take(const Block& b) {
     if (!is_approach(b)) {
       // SAR-TANGENT-1: the retraction leaves the end tangent of the last traversing block.
       if (!last_traversing_) return fail(10744, b);
+      if (last_traversing_->state.plane != b.state.plane)
+        throw UnsupportedError(b.words.line, "plane change between the contour and its SAR retraction");
+      last_traversing_.reset();  // a second retraction has no contour to leave
       return Step::kRetraction;
     }
     held_[0] = b;
@@ -32,6 +37,8 @@ SarSequence::Step SarSequence::take(const Block& b) {
   // An approach is waiting for its direction block.
   if (b.is_sar_block()) return fail(10743, b);  // SAR-AGAIN-1
   if (b.words.stopre) return fail(10746, b);    // SAR-STOP-1
+  if (p4_index_ < 0 && !b.moves_in_plane() && b.words.programs_any_axis())
+    throw UnsupportedError(b.words.line, "axis motion between a SAR block and the block that gives P4");
   held_[static_cast<std::size_t>(count_++)] = b;
   if (!b.moves_in_plane()) {
     if (++dummies_ > md_.wab_maxnum_dummy_blocks) return fail(10740, b);  // SAR-P4-1
@@ -42,6 +49,8 @@ SarSequence::Step SarSequence::take(const Block& b) {
     p4_index_ = count_ - 1;
     return Step::kHold;
   }
+  if (b.state.plane != held_[0].state.plane)
+    throw UnsupportedError(b.words.line, "plane change between a SAR block and its direction block");
   return Step::kApproach;  // SAR-TANGENT-1: the first block moving in the plane after P4
 }
 

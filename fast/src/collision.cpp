@@ -30,7 +30,7 @@ bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry&
   en.vertex = prev.end;
   en.own_start = en.normal_start;
   Corner c = classify_corner(prev.end_tangent(), next.start_tangent(), s);
-  if (!prev.arc && !next.arc) decide_kind_exactly(before, m, c);
+  decide_kind_exactly(before, m, c);
   if (prev.arc && !(prev_radius > 0)) {
     decide("TRC-CD-2", m.line, "after-collapse", prev_radius);
     c.kind = Corner::Kind::kTangent;

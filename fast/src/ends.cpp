@@ -31,7 +31,7 @@ void Engine::State::approach(const Block& b) {
   if (selection.kont) {
     // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
     Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt};
-    if (!selection_from_tool && !e.arc) k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
+    if (!selection_from_tool && !e.arc && first.exact && selection.exact) k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
     if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
     if (stopped) return;
   }
@@ -143,15 +143,13 @@ void Engine::State::retract_edge(const Block& b) {
   BlockCopy d = copy_of(b);
   const BlockCopy* last_block = nullptr;
   for (const BlockCopy& k : skipped)
-    if (k.delta[static_cast<std::size_t>(axes.abscissa)] != 0 ||
-        k.delta[static_cast<std::size_t>(axes.ordinate)] != 0 || k.arc)
-      last_block = &k;
+    if (k.moves) last_block = &k;
   Element last = element_of(*last_block);
   decide("TRC-DESEL-1", d.line, "deselected");
   if (d.kont) {  // TRC-KONT-1/2, then TRC-EDGE-6
     Vec2 p = ab(d.end);
     Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt};
-    if (!last.arc) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
+    if (!last.arc && last_block->exact && d.exact) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
     if (kont_behind(d, k, k.d1, 10756)) return retract_edge_around(d, *last_block, k);
     if (stopped) return;
   }
@@ -260,7 +258,7 @@ void Engine::State::deselect(const Block& b) {
   if (last.kont) {
     Vec2 p = ab(last.end);
     Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt};
-    if (!open_el.arc) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
+    if (!open_el.arc && open.exact && last.exact) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
     if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
     if (stopped) return;
   }

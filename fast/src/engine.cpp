@@ -152,6 +152,11 @@ bool Engine::State::close_open(Vec2 end_point, int alarm_line, std::optional<std
 }
 
 void Engine::State::decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
+  if (first.tangent_after || second.tangent_before) {  // SAR-POINTS-1/2: tangent by construction
+    c.kind = Corner::Kind::kTangent, c.sine = 0;
+    return;
+  }
+  if (first.arc || second.arc || !first.exact || !second.exact) return;
   std::optional<ExactProducts> p = exact_products(first.delta, second.delta);
   if (!p) return;
   Int128 cr = p->cross, dt = p->dot;
@@ -219,7 +224,7 @@ void Engine::State::corner(const Block& b, const BlockCopy& copy) {
   if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
   Vec2 v = open_el.end;
   Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
-  if (!open_el.arc && !next.arc) decide_kind_exactly(open, copy, c);
+  decide_kind_exactly(open, copy, c);
   static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
   decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
 
@@ -359,7 +364,7 @@ void Engine::State::arc(BlockCopy& owner, const PathPoint& from, const PathPoint
   actions(owner, from);
   PathElement e;
   e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
-  e.feed = owner.feed, e.origin = from_what;
+  e.feed = owner.feed, e.feed_type = owner.feed_type, e.origin = from_what;
   if (direct()) return sink.element(e);
   HeldRecord rec = record_of(owner);
   rec.is_element = true, rec.element = e, rec.radius = norm(ab(from) - ab(centre));
@@ -427,36 +432,57 @@ Engine::~Engine() = default;
 bool Engine::stopped() const { return state_->stopped; }
 
 void Engine::push(const Block& b) {
-  State& st = *state_;
-  if (st.stopped) return;
+  if (state_->stopped) return;
+  state_->take(b);
+}
+
+void Engine::State::step(const Block& b, const PlaneOverride* o) {
+  if (stopped) return;
   if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
     throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
-  if (b.moves_in_plane()) ++st.traversing;
-  st.holding = b.state.collision == CollisionMode::kCdon;
-  if (b.is_arc() && !st.arc_is_consistent(b)) return;
-  switch (st.phase) {
-    case State::Phase::kOff:
-      st.off(b);
-      break;
-    case State::Phase::kApproach:
-      st.approach(b);
-      break;
-    case State::Phase::kActive:
-      st.active(b);
-      break;
+  if (o) over = *o;
+  over_block = o ? &b : nullptr;
+  if (b.moves_in_plane()) ++traversing;
+  holding = b.state.collision == CollisionMode::kCdon;
+  if (b.sar.move == SarMove::kNone && b.moves_in_plane()) last_contour = copy_of(b), has_last_contour = true;
+  if (!(b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b))) {
+    switch (phase) {
+      case Phase::kOff:
+        off(b);
+        break;
+      case Phase::kApproach:
+        approach(b);
+        break;
+      case Phase::kActive:
+        active(b);
+        break;
+    }
+    release_window(b);
   }
-  st.release_window(b);
+  over_block = nullptr;
 }
 
 void Engine::finish() {
-  if (!state_->stopped) state_->end_of_program();
-  state_->release_all();
+  State& st = *state_;
+  if (!st.stopped && st.sar_seq.finish() == SarSequence::Step::kAlarm)
+    st.sar_alarm(st.sar_seq.alarm(), st.sar_seq.alarm_block());
+  if (!st.stopped) st.end_of_program();
+  st.release_all();
+}
+
+std::optional<Point3> Engine::take_reposition() {
+  std::optional<Point3> p = state_->reposition;
+  state_->reposition.reset();
+  return p;
 }
 
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink) {
   Engine engine(md, sink);
   Block b;
-  while (!engine.stopped() && reader.next(b)) engine.push(b);
+  while (!engine.stopped() && reader.next(b)) {
+    engine.push(b);
+    if (auto p = engine.take_reposition()) reader.set_position(*p);  // SAR-END-3
+  }
   // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
   while (engine.stopped() && reader.next(b)) {
   }

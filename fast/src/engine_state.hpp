@@ -8,12 +8,16 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "bottleneck.hpp"
 #include "cutcom/fast/engine.hpp"
+#include "cutcom/sar_layout.hpp"
+#include "cutcom/sar_sequence.hpp"
 #include "edge_strategy.hpp"
 #include "plane_geometry.hpp"
+#include "sar_shape.hpp"
 
 namespace cutcom::fast {
 
@@ -38,6 +42,13 @@ struct BlockCopy {
   bool cdon = false;  // CDON in force
   int seq = 0;        // ordinal of the last traversing block up to this one (TRC-CD-1 window)
   EdgeStrategy edge_strategy = EdgeStrategy::kG462;
+  FeedType feed_type = FeedType::kG94;
+  SarMove sar = SarMove::kNone;
+  bool moves = false;  // motion in the plane
+  bool exact = true;   // start and end are the programmed decimals (`delta` is valid)
+  // SAR-POINTS-1/2: a SAR element is tangent to the contour at P4 by construction: after it on
+  // approach, before it on retraction.
+  bool tangent_after = false, tangent_before = false;
 
   static BlockCopy of(const Block& b) {
     BlockCopy c;
@@ -59,6 +70,10 @@ struct BlockCopy {
     c.g451 = b.state.corner == CornerMode::kG451;
     c.cdon = b.state.collision == CollisionMode::kCdon;
     c.edge_strategy = b.state.edge_strategy;
+    c.feed_type = b.state.feed_type;
+    c.sar = b.sar.move;
+    c.moves = b.moves_in_plane();
+    c.exact = b.sar.move == SarMove::kNone;
     return c;
   }
 };
@@ -68,7 +83,7 @@ inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis
 struct Engine::State {
   enum class Phase { kOff, kApproach, kActive };
 
-  State(const MachineData& m, PathSink& out) : md(m), sink(out) {
+  State(const MachineData& m, PathSink& out) : md(m), sink(out), sar_seq(m) {
     // TRC-CD-1: what the window can hold: MD20240 + 2 traversing blocks, each with up to MD20250
     // blocks without plane motion, each block at most three elements and its actions.
     std::size_t capacity = static_cast<std::size_t>(m.cutcom_maxnum_check_blocks + 2) *
@@ -129,6 +144,8 @@ struct Engine::State {
     PathPoint owner_start, owner_end;
     bool owner_rapid = false;
     Decimal owner_feed;
+    FeedType owner_feed_type = FeedType::kG94;
+    SarMove owner_sar = SarMove::kNone;
   };
   std::vector<HeldRecord> held, held_scratch;
   bool holding = false;  // CDON in force for the block being processed: output waits in `held`
@@ -142,12 +159,54 @@ struct Engine::State {
   BlockCopy copy_of(const Block& b) const {
     BlockCopy c = BlockCopy::of(b);
     c.seq = traversing;
+    if (&b == over_block) apply(over, c);
     return c;
   }
+
+  // --- SAR: smooth approach and retraction (sar.cpp) -----------------------------------------
+  // Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3).
+  struct PlaneOverride {
+    bool start = false, end = false;
+    Vec2 start_ab, end_ab;
+    bool circle = false;  // the SAR element's circle
+    Vec2 centre;
+    int sense = 0;
+    bool tangent_after = false, tangent_before = false;
+  };
+  void apply(const PlaneOverride& o, BlockCopy& c) const;
+  // A programmed block: through the SAR sequence (SAR-P4-1 ...), then run.
+  void take(const Block& b);
+  // Runs one block (the former Engine::push); `o` gives its in-plane points where needed.
+  void step(const Block& b, const PlaneOverride* o = nullptr);
+  void sar_approach(std::span<const Block> gathered, int p4_index);
+  void sar_retraction(const Block& r);
+  struct SarTrc {
+    bool on = false;
+    int s = 1;
+    double effective = 0, r = 0;
+  };
+  static SarTrc sar_trc(const ModalState& st);
+  int sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0);
+  bool sar_size(const Block& b, const SarTrc& trc, int sd, double& size);
+  bool sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4);
+  void push_sub_blocks(const SarShape& shape, const std::optional<Vec2>& tool_centre);
+  void sar_alarm(int number, const Block& at);
+
+  SarSequence sar_seq;
+  SarSubBlocks sar_subs;  // reused: nothing allocated per SAR block
+  PlaneOverride over;
+  const Block* over_block = nullptr;
+  BlockCopy last_contour;  // the last programmed block moving in the plane, as run
+  bool has_last_contour = false;
+  bool at_sar_end = false;  // SAR-END-3: the tool stands at sar_end (in the plane)
+  Vec2 sar_end;
+  Plane sar_end_plane = Plane::kG17;
+  std::optional<Point3> reposition;  // for the reader (SAR-END-3)
   HeldRecord record_of(const BlockCopy& owner) const {
     HeldRecord k;
     k.seq = owner.seq, k.owner_line = owner.line, k.owner_number = owner.number, k.owner_start = owner.start;
     k.owner_end = owner.end, k.owner_rapid = owner.rapid, k.owner_feed = owner.feed;
+    k.owner_feed_type = owner.feed_type, k.owner_sar = owner.sar;
     return k;
   }
   // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
@@ -189,7 +248,7 @@ struct Engine::State {
   void actions(BlockCopy& b, const PathPoint& at);
   Origin origin(const BlockCopy& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.line, o.block = b.number;
+    o.kind = kind, o.line = b.line, o.block = b.number, o.sar = b.sar;
     return o;
   }
   void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, OriginKind kind, bool rapid) {
@@ -200,6 +259,7 @@ struct Engine::State {
     if (from.x == to.x && from.y == to.y && from.z == to.z) return;  // PATH-ELEMENT-1: no zero-length element
     PathElement e;
     e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
+    e.feed_type = owner.feed_type;
     e.origin = named;
     if (direct()) return sink.element(e);
     HeldRecord rec = record_of(owner);
@@ -394,6 +454,7 @@ struct Engine::State {
   void infeed_of(const HeldRecord& k, const PathPoint& from, const PathPoint& to) {
     BlockCopy owner;
     owner.line = k.owner_line, owner.number = k.owner_number, owner.rapid = k.owner_rapid, owner.feed = k.owner_feed;
+    owner.feed_type = k.owner_feed_type, owner.sar = k.owner_sar;
     owner.actions_done = true, owner.seq = k.seq;
     line(owner, from, to, OriginKind::kInfeed, owner.rapid);
   }

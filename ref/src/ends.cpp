@@ -133,8 +133,7 @@ void Reference::retract_edge(const Block& b) {
   }
   decide("TRC-EDGE-1", b.words.line, g_code(b.state.edge_strategy));
   Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
-  EdgeCurve curve =
-      edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_end(b), false);
+  EdgeCurve curve = edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_end(b), false);
   EdgeHit edge = edge_hit(curve, *open_, open_radius_, open_start_, false);
   std::optional<Point> hit = edge.point;
   decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", edge.margin);

@@ -145,7 +145,7 @@ class Reference {
   // SAR-DISR-1/2: L or R in units; empty after an alarm.
   std::optional<FT> sar_size(const Block& b, const SarTrc& trc, int s);
   // SAR-DISCL-1..3, SAR-DISRP-1/2, SAR-SEG-1/2: the levels; false after an alarm.
-  bool sar_levels(const Block& b, SarLevels& h, bool approach, SarEndCase end_case);
+  bool sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4);
   // Pushes the sub-blocks with their exact points.
   void push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape, const std::optional<Point>& tool_centre);
   // SAR-END-3: a programmed block after a retraction that ended without end point starts there.

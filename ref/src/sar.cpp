@@ -6,7 +6,6 @@
 namespace cutcom::ref::detail {
 
 namespace {
-FT mm_units(const Decimal& d) { return leaf(d); }
 std::string mm(const Decimal& d) { return exact_mm(leaf(d)); }
 }  // namespace
 
@@ -68,29 +67,15 @@ ContourElement Reference::element_of(const Block& b) const {
 }
 
 // SAR-END-3: after a retraction that ended without end point (cases 1 and 2) the tool stands at
-// an exact point off the decimal grid. Blocks without plane axes stay there; the next block
-// must program both plane axes absolutely (one, incremental, or a circle is not supported).
+// an exact point off the decimal grid; the blocks after it start there.
 std::optional<PlaneOverride> Reference::after_sar_end(const Block& b) {
   if (!sar_end_) return std::nullopt;
-  if (b.is_sar_block() && SarSequence::is_approach(b))
-    throw UnsupportedError(b.words.line, "SAR approach from where a SAR retraction without end point ended "
-                                         "(program both plane axes before it)");
-  PlaneAxes a = plane_axes(sar_end_->plane);
-  const AxisWord& u = b.words.axis[static_cast<std::size_t>(a.abscissa)];
-  const AxisWord& v = b.words.axis[static_cast<std::size_t>(a.ordinate)];
   PlaneOverride over;
   over.start = sar_end_->at;
-  if (!u.present && !v.present && b.state.plane == sar_end_->plane && !b.is_arc()) {
+  if (keeps_sar_end(b, sar_end_->plane))
     over.end = sar_end_->at;
-    return over;
-  }
-  auto absolute = [&](const AxisWord& w) {
-    return w.mode == ValueMode::kAbsolute || (w.mode == ValueMode::kModal && b.state.absolute);
-  };
-  if (!u.present || !v.present || !absolute(u) || !absolute(v) || b.is_arc() || b.state.plane != sar_end_->plane)
-    throw UnsupportedError(b.words.line, "after a SAR retraction without end point the next move in the plane "
-                                         "must program both plane axes absolutely, in a straight block");
-  sar_end_.reset();
+  else
+    sar_end_.reset();
   return over;
 }
 
@@ -110,7 +95,8 @@ int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, cons
   SarSide mode = b.state.sar_side;
   if (mode == SarSide::kG141) return decide("SAR-SIDE-1", b.words.line, "G141-left"), 1;
   if (mode == SarSide::kG142) return decide("SAR-SIDE-1", b.words.line, "G142-right"), -1;
-  if (mode == SarSide::kG140 && trc.on) return decide("SAR-SIDE-1", b.words.line, trc.s > 0 ? "G140-left" : "G140-right"), trc.s;
+  if (mode == SarSide::kG140 && trc.on)
+    return decide("SAR-SIDE-1", b.words.line, trc.s > 0 ? "G140-left" : "G140-right"), trc.s;
   // SAR-SIDE-2: G143 (or G140 without compensation): the side of the tangent P0 lies on.
   if (!p0) {
     decide("SAR-SIDE-3", b.words.line, "implicit-end-point");
@@ -120,7 +106,10 @@ int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, cons
   Vector off = *p0 - p4;
   FT cross = t.x() * off.y() - t.y() * off.x();
   CGAL::Sign sign = CGAL::sign(cross);
-  decide("SAR-SIDE-2", b.words.line, sign == CGAL::POSITIVE ? "left" : sign == CGAL::NEGATIVE ? "right" : "on-tangent",
+  decide("SAR-SIDE-2", b.words.line,
+         sign == CGAL::POSITIVE   ? "left"
+         : sign == CGAL::NEGATIVE ? "right"
+                                  : "on-tangent",
          exact_mm(cross / exact_root(t.squared_length())));
   if (sign == CGAL::ZERO) {
     raise(10744, b, "SAR-SIDE-2");
@@ -157,37 +146,12 @@ std::optional<FT> Reference::sar_size(const Block& b, const SarTrc& trc, int s) 
     raise(10742, b, line ? "SAR-DISR-1" : "SAR-DISR-2");
     return std::nullopt;
   }
-  return mm_units(size);
+  return leaf(size);
 }
 
-bool Reference::sar_levels(const Block& b, SarLevels& h, bool approach, SarEndCase end_case) {
-  PlaneAxes ax = plane_axes(b.state.plane);
+bool Reference::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
+  h = cutcom::sar_levels(b, end_case, h4);
   const BlockWords& w = b.words;
-  auto level = [&](const AxisWord& word) {  // SAR-DISCL-1 / SAR-DISRP-1: AC() or from P4's plane
-    return word.mode == ValueMode::kAbsolute ? word.value : h.h4 + word.value;
-  };
-  bool g340 = b.state.sar_segmentation == SarSegmentation::kG340;
-  if (approach) {
-    h.h0 = coord(b.start, ax.applicate);
-    h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
-  } else if (end_case == SarEndCase::kNoAxis ||
-             (end_case == SarEndCase::kPlaneAxis && !w.axis[static_cast<std::size_t>(ax.applicate)].present)) {
-    // SAR-END-1 cases 1 and 3 without the applicate: the retraction ends at the level of P2.
-    if (w.disrp.present) throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P2");
-    h.h0 = h.h1 = w.discl.present ? level(w.discl) : h.h4;
-    h.h2 = h.h1;
-  } else {
-    h.h0 = coord(b.end, ax.applicate);
-    if (end_case == SarEndCase::kApplicateOnly && w.disrp.present)
-      throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P1 (the programmed applicate)");
-    h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
-  }
-  if (approach || end_case == SarEndCase::kApplicateOnly ||
-      (end_case == SarEndCase::kPlaneAxis && w.axis[static_cast<std::size_t>(ax.applicate)].present)) {
-    h.h2 = w.discl.present ? level(w.discl) : h.h1;  // ruling 7: no DISCL, no fast infeed
-  }
-  // SAR-SEG-1 (ruling 12): G340 with DISCL=0 or without DISCL: one spatial element from P1.
-  if (g340 && (!w.discl.present || (w.discl.mode != ValueMode::kAbsolute && w.discl.value.is_zero()))) h.h2 = h.h1;
   // SAR-DISRP-2: the retraction plane P1 on the other side of P4's plane than P2.
   if (w.disrp.present && w.discl.present) {
     int s1 = (h.h1 - h.h4).sign(), s2 = (h.h2 - h.h4).sign();
@@ -207,7 +171,7 @@ bool Reference::sar_levels(const Block& b, SarLevels& h, bool approach, SarEndCa
     decide("SAR-DISCL-3", w.line, "reversal", mm(slack));
     return raise(10741, b, "SAR-DISCL-3"), false;
   }
-  h.h3 = g340 ? h.h2 : h.h4;  // SAR-SEG-1 / SAR-SEG-2
+  set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }
 
@@ -216,12 +180,6 @@ void Reference::sar_approach(std::span<const Block> g, int p4_index) {
   const Block& m = g[static_cast<std::size_t>(p4_index)];
   const Block& d = g.back();
   PlaneAxes ax = plane_axes(a.state.plane);
-  for (int k = 1; k < p4_index; ++k)
-    if (g[static_cast<std::size_t>(k)].words.programs_any_axis())
-      throw UnsupportedError(g[static_cast<std::size_t>(k)].words.line,
-                             "axis motion between a SAR block and the block that gives P4");
-  if (d.state.plane != a.state.plane)
-    throw UnsupportedError(d.words.line, "plane change between a SAR block and its direction block");
   if (d.is_arc() && !arc_is_consistent(d)) return;
   // SAR-TANGENT-1: the start tangent of the first element that starts at P4.
   ContourElement de = d.is_arc() ? ContourElement::of_arc(d, ax) : ContourElement::of_line(d, ax);
@@ -238,8 +196,7 @@ void Reference::sar_approach(std::span<const Block> g, int p4_index) {
   SarShape shape = sar_shape(c, p4, t, s, *size);
   SarPlan plan;
   plan.approach = true;
-  plan.h.h4 = coord(m.end, ax.applicate);
-  if (!sar_levels(a, plan.h, true, SarEndCase::kApproach)) return;
+  if (!sar_levels(a, plan.h, SarEndCase::kApproach, coord(m.end, ax.applicate))) return;
   plan.p0 = a.start, plan.p4 = m.end;
   plan.p3_a = nearest_decimal(CGAL::to_double(shape.p3.x()));
   plan.p3_b = nearest_decimal(CGAL::to_double(shape.p3.y()));
@@ -268,8 +225,6 @@ void Reference::sar_approach(std::span<const Block> g, int p4_index) {
 
 void Reference::sar_retraction(const Block& r, const Block& last) {
   PlaneAxes ax = plane_axes(r.state.plane);
-  if (last.state.plane != r.state.plane)
-    throw UnsupportedError(r.words.line, "plane change between the contour and its SAR retraction");
   // SAR-TANGENT-1: the end tangent of the contour's last block.
   Vector t = element_of(last).end_dir;
   decide("SAR-TANGENT-1", r.words.line, "end-of-contour");
@@ -292,8 +247,7 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
   SarPlan plan;
   plan.approach = false;
   plan.end_case = end_case;
-  plan.h.h4 = coord(r.start, ax.applicate);
-  if (!sar_levels(r, plan.h, false, end_case)) return;
+  if (!sar_levels(r, plan.h, end_case, coord(r.start, ax.applicate))) return;
   plan.p4 = r.start;
   plan.p0 = r.end;
   plan.p3_a = nearest_decimal(CGAL::to_double(shape.p3.x()));

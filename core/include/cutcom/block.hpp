@@ -184,7 +184,7 @@ struct Block {
   int index = 0;        // 0-based block index in the program
   bool circle = false;  // set by the reader: see is_arc()
 
-  SarTag sar;           // a SAR sub-block (engines only; the reader leaves it empty)
+  SarTag sar;  // a SAR sub-block (engines only; the reader leaves it empty)
 
   // Any geometry axis of the active plane written in the block (spec TRC-SEL-3/4).
   bool programs_plane_axis() const {

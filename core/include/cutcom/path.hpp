@@ -38,9 +38,9 @@ struct Origin {
 struct PathElement {
   ElementType type = ElementType::kLine;
   bool rapid = false;
-  PathPoint start, end, center;  // center: arcs only
-  bool ccw = false;              // arcs: counter-clockwise seen from the positive applicate axis
-  Decimal feed;                  // modal feed of the block the element belongs to
+  PathPoint start, end, center;         // center: arcs only
+  bool ccw = false;                     // arcs: counter-clockwise seen from the positive applicate axis
+  Decimal feed;                         // modal feed of the block the element belongs to
   FeedType feed_type = FeedType::kG94;  // G95 for revolutional feed (FAD=PR())
   Origin origin;
 };
@@ -55,6 +55,6 @@ struct ActionEvent {
 
 std::string origin_kind_name(OriginKind k);  // "offset", "transition_circle", ...
 std::string describe(const Origin& o);       // "transition circle at corner N30/N40"
-std::string sar_move_name(SarMove m);         // "lead", "fast_infeed", ... ("" for kNone)
+std::string sar_move_name(SarMove m);        // "lead", "fast_infeed", ... ("" for kNone)
 
 }  // namespace cutcom

@@ -24,13 +24,28 @@ struct SarLevels {
   Decimal h0, h1, h2, h3, h4;
 };
 
+// SAR-DISCL-1/2, SAR-DISRP-1, SAR-END-1: the levels as programmed (decimal arithmetic, exact),
+// before the direction-reversal check of SAR-DISCL-3, which each engine decides; h3 is set by
+// set_p3_level once h2 is final. Throws UnsupportedError for DISRP on a retraction that ends at
+// P1 or P2.
+SarLevels sar_levels(const Block& sar, SarEndCase end_case, const Decimal& h4);
+// SAR-SEG-1 / SAR-SEG-2: P3 at the level of P2 (G340) or of P4 (G341).
+inline void set_p3_level(const Block& sar, SarLevels& h) {
+  h.h3 = sar.state.sar_segmentation == SarSegmentation::kG340 ? h.h2 : h.h4;
+}
+
+// SAR-END-3: a block after a retraction that ended without end point (the tool off the decimal
+// grid). True: it keeps the position in the plane; false: it leaves it (both plane axes
+// absolute, straight). Throws UnsupportedError for anything else.
+bool keeps_sar_end(const Block& b, Plane plane);
+
 struct SarPlan {
   bool approach = true;
   SarEndCase end_case = SarEndCase::kApproach;
   SarLevels h;
-  Point3 p0, p4;         // approach: P0 = the SAR block's start; retraction (case 3): its end
-  Decimal p3_a, p3_b;    // rounded picture of P3 in the plane (abscissa, ordinate)
-  Decimal tc_a, tc_b;    // SAR-END-2: rounded picture of the tool centre at P1
+  Point3 p0, p4;            // approach: P0 = the SAR block's start; retraction (case 3): its end
+  Decimal p3_a, p3_b;       // rounded picture of P3 in the plane (abscissa, ordinate)
+  Decimal tc_a, tc_b;       // SAR-END-2: rounded picture of the tool centre at P1
   bool lead_moves = false;  // P0 and P1 differ in the plane (decided by the engine)
   int sense = 0;            // the element: 0 straight, +1 counter-clockwise, -1 clockwise
 };

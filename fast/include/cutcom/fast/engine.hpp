@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "cutcom/engine.hpp"
 #include "cutcom/machine_data.hpp"
@@ -24,6 +25,9 @@ class Engine {
   void finish();
   // An alarm stopped the program; further blocks are ignored.
   bool stopped() const;
+  // SAR-END-3: after a SAR retraction without end point, where blocks read next start (the
+  // caller's ProgramReader::set_position); empty otherwise.
+  std::optional<Point3> take_reposition();
 
  private:
   struct State;

@@ -1,0 +1,282 @@
+// fast: smooth approach and retraction (spec sar.md), in double. The SAR block is expanded into
+// sub-blocks that run through the compensation as if programmed (SAR-TRC-1); their in-plane
+// points at P3 are doubles kept beside the block (PlaneOverride). ref decides the same clauses
+// exactly in ref/src/sar.cpp.
+#include <cmath>
+
+#include "engine_state.hpp"
+
+namespace cutcom::fast {
+
+namespace {
+Vec2 plane_of(const Point3& p, PlaneAxes a) {
+  return {coord(p, a.abscissa).to_double(), coord(p, a.ordinate).to_double()};
+}
+
+// Element computations in the SAR block's plane, whatever plane the compensation has.
+struct AxesScope {
+  PlaneAxes& axes;
+  PlaneAxes saved;
+  AxesScope(PlaneAxes& a, PlaneAxes use) : axes(a), saved(a) { axes = use; }
+  ~AxesScope() { axes = saved; }
+};
+}  // namespace
+
+void Engine::State::apply(const PlaneOverride& o, BlockCopy& c) const {
+  if (o.start) c.start = xyz(o.start_ab, h(c.start));
+  if (o.end) c.end = xyz(o.end_ab, h(c.end));
+  if (o.circle) c.arc = true, c.has_centre = true, c.centre = xyz(o.centre, h(c.start)), c.sense = o.sense;
+  c.tangent_after = o.tangent_after, c.tangent_before = o.tangent_before;
+}
+
+void Engine::State::sar_alarm(int number, const Block& at) {
+  const AlarmInfo* info = find_alarm(number);
+  raise(number, at.words.line, at.words.number, info ? info->clause : std::string_view{});
+}
+
+void Engine::State::take(const Block& b) {
+  // SAR-END-3: after a retraction that ended without end point the blocks start there.
+  PlaneOverride end_over;
+  bool use_end = false;
+  if (at_sar_end) {
+    end_over.start = true, end_over.start_ab = sar_end;
+    if (keeps_sar_end(b, sar_end_plane))
+      end_over.end = true, end_over.end_ab = sar_end;
+    else
+      at_sar_end = false;
+    use_end = true;
+  }
+  switch (sar_seq.take(b)) {
+    case SarSequence::Step::kPass:
+      if (use_end && phase == Phase::kOff) axes = plane_axes(sar_end_plane);  // where apply() works
+      return step(b, use_end ? &end_over : nullptr);
+    case SarSequence::Step::kHold:
+      return;
+    case SarSequence::Step::kApproach:
+      sar_approach(sar_seq.gathered(), sar_seq.p4_index());
+      return sar_seq.release();
+    case SarSequence::Step::kRetraction:
+      if (!has_last_contour) return sar_alarm(10744, b);
+      return sar_retraction(b);
+    case SarSequence::Step::kAlarm:
+      return sar_alarm(sar_seq.alarm(), sar_seq.alarm_block());
+  }
+}
+
+Engine::State::SarTrc Engine::State::sar_trc(const ModalState& st) {
+  SarTrc t;
+  if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return t;
+  t.on = true;
+  t.effective = st.effective_radius().to_double();
+  t.s = st.side == Side::kLeft ? 1 : -1;
+  if (t.effective < 0) t.s = -t.s;  // TRC-RADIUS-2, ruling 2
+  t.r = std::fabs(t.effective);
+  return t;
+}
+
+int Engine::State::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0) {
+  SarSide mode = b.state.sar_side;
+  int line_no = b.words.line;
+  if (mode == SarSide::kG141) return decide("SAR-SIDE-1", line_no, "G141-left"), 1;
+  if (mode == SarSide::kG142) return decide("SAR-SIDE-1", line_no, "G142-right"), -1;
+  if (mode == SarSide::kG140 && trc.on)
+    return decide("SAR-SIDE-1", line_no, trc.s > 0 ? "G140-left" : "G140-right"), trc.s;
+  if (!p0) {  // SAR-SIDE-3
+    decide("SAR-SIDE-3", line_no, "implicit-end-point");
+    sar_alarm(10747, b);
+    return 0;
+  }
+  double distance = cross(t, *p0 - p4);  // SAR-SIDE-2 (t is a unit vector)
+  decide("SAR-SIDE-2", line_no, distance > 0 ? "left" : distance < 0 ? "right" : "on-tangent", distance);
+  if (distance == 0) {
+    raise(10744, line_no, b.words.number, "SAR-SIDE-2");
+    return 0;
+  }
+  return distance > 0 ? 1 : -1;
+}
+
+bool Engine::State::sar_size(const Block& b, const SarTrc& trc, int sd, double& size) {
+  SarContour c = *b.words.sar_contour;
+  bool straight = c == SarContour::kG147 || c == SarContour::kG148;
+  std::string_view clause = straight ? "SAR-DISR-1" : "SAR-DISR-2";
+  if (!b.words.disr) {
+    decide(clause, b.words.line, "missing");
+    raise(10742, b.words.line, b.words.number, clause);
+    return false;
+  }
+  double disr = b.words.disr->to_double();
+  if (straight) {
+    size = disr + (trc.on && trc.effective > 0 ? trc.effective : 0.0);  // SAR-DISR-1
+  } else {
+    if (disr <= 0) {  // SAR-DISR-2
+      decide(clause, b.words.line, "not-positive", disr);
+      raise(10742, b.words.line, b.words.number, clause);
+      return false;
+    }
+    size = !trc.on ? disr : sd == trc.s ? disr + trc.r : disr - trc.r;
+  }
+  decide(clause, b.words.line, size > 0 ? "valid" : "not-positive", size);
+  if (size > 0) return true;
+  raise(10742, b.words.line, b.words.number, clause);
+  return false;
+}
+
+bool Engine::State::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
+  h = cutcom::sar_levels(b, end_case, h4);
+  const BlockWords& w = b.words;
+  double h1 = h.h1.to_double(), h2 = h.h2.to_double(), h4d = h.h4.to_double();
+  if (w.disrp.present && w.discl.present) {  // SAR-DISRP-2
+    bool opposite = (h1 - h4d) * (h2 - h4d) < 0;
+    decide("SAR-DISRP-2", w.line, opposite ? "opposite-sides" : "same-side");
+    if (opposite) return raise(10748, w.line, w.number, "SAR-DISRP-2"), false;
+  }
+  // SAR-DISCL-3 (ruling 9), in double: a DISCL exactly MD20204 outside is a knife edge here.
+  double lo = std::min(h1, h4d), hi = std::max(h1, h4d);
+  double excess = h2 < lo ? lo - h2 : h2 > hi ? h2 - hi : 0.0;
+  double slack = md.wab_clearance_tolerance.to_double() - excess;
+  if (excess == 0) {
+    decide("SAR-DISCL-3", w.line, "between", slack);
+  } else if (slack >= 0) {
+    decide("SAR-DISCL-3", w.line, "clamped", slack);
+    h.h2 = h2 < lo ? std::min(h.h1, h.h4) : std::max(h.h1, h.h4);
+  } else {
+    decide("SAR-DISCL-3", w.line, "reversal", slack);
+    return raise(10741, w.line, w.number, "SAR-DISCL-3"), false;
+  }
+  set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
+  return true;
+}
+
+void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
+  const Block& a = g[0];
+  const Block& m = g[static_cast<std::size_t>(p4_index)];
+  const Block& d = g.back();
+  PlaneAxes ax = plane_axes(a.state.plane);
+  if (d.is_arc() && !arc_is_consistent(d)) return;
+  Vec2 t;
+  {
+    AxesScope scope(axes, ax);
+    t = element_of(BlockCopy::of(d)).start_tangent();  // SAR-TANGENT-1
+  }
+  decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
+  Vec2 p4 = plane_of(m.end, ax), p0 = plane_of(a.start, ax);
+  SarTrc trc = sar_trc(a.state);
+  SarContour c = *a.words.sar_contour;
+  int sd = trc.s;
+  if (c != SarContour::kG147) sd = sar_side(a, trc, t, p4, p0);
+  if (sd == 0) return;
+  double size = 0;
+  if (!sar_size(a, trc, sd, size)) return;
+  SarShape shape = sar_shape(c, p4, t, sd, size);
+  SarPlan plan;
+  plan.approach = true;
+  if (!sar_levels(a, plan.h, SarEndCase::kApproach, coord(m.end, ax.applicate))) return;
+  plan.p0 = a.start, plan.p4 = m.end;
+  plan.p3_a = nearest_decimal(shape.p3.a * Decimal::kUnitsPerOne);
+  plan.p3_b = nearest_decimal(shape.p3.b * Decimal::kUnitsPerOne);
+  plan.lead_moves = p0.a != shape.p3.a || p0.b != shape.p3.b;
+  plan.sense = shape.sense;
+  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead");
+  sar_sub_blocks(a, m, plan, sar_subs);
+  // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
+  SarVariables v;
+  v.line = a.words.line, v.block = a.words.number;
+  {
+    AxesScope scope(axes, ax);
+    v.p_apr = xyz(shape.p3, plan.h.h3.to_double());
+    v.p_aep = xyz(p4, plan.h.h4.to_double());
+  }
+  sink.sar_variables(v);
+  push_sub_blocks(shape, std::nullopt);
+  for (std::size_t k = 1; k < g.size() && !stopped; ++k) {
+    if (static_cast<int>(k) == p4_index && sar_subs.element_in_p4_block) {
+      PlaneOverride o;
+      o.start = true, o.start_ab = shape.p3, o.end = true, o.end_ab = p4;
+      o.circle = shape.circle, o.centre = shape.centre, o.sense = shape.sense, o.tangent_after = true;
+      if (phase == Phase::kOff) axes = ax;  // where apply() works
+      step(sar_subs.p4_element, &o);
+    } else {
+      step(g[k]);
+    }
+  }
+}
+
+void Engine::State::sar_retraction(const Block& r) {
+  PlaneAxes ax = plane_axes(r.state.plane);
+  Vec2 t, p4;
+  {
+    AxesScope scope(axes, ax);
+    Element last = element_of(last_contour);
+    t = last.end_tangent(), p4 = last.end;  // SAR-TANGENT-1
+  }
+  decide("SAR-TANGENT-1", r.words.line, "end-of-contour");
+  SarEndCase end_case = sar_end_case(r);
+  decide("SAR-END-1", r.words.line,
+         end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
+         : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
+                                                  : "programmed-p0");
+  std::optional<Vec2> p0;
+  if (end_case == SarEndCase::kPlaneAxis) p0 = plane_of(r.end, ax);
+  SarTrc trc = sar_trc(r.previous.side != Side::kOff ? r.previous : r.state);
+  SarContour c = *r.words.sar_contour;
+  int sd = trc.s;
+  if (c != SarContour::kG148) sd = sar_side(r, trc, t, p4, p0);
+  if (sd == 0) return;
+  double size = 0;
+  if (!sar_size(r, trc, sd, size)) return;
+  SarShape shape = sar_shape(c, p4, t, sd, size);
+  SarPlan plan;
+  plan.approach = false;
+  plan.end_case = end_case;
+  if (!sar_levels(r, plan.h, end_case, coord(r.start, ax.applicate))) return;
+  plan.p4 = r.start, plan.p0 = r.end;
+  plan.p3_a = nearest_decimal(shape.p3.a * Decimal::kUnitsPerOne);
+  plan.p3_b = nearest_decimal(shape.p3.b * Decimal::kUnitsPerOne);
+  plan.lead_moves = p0 && (p0->a != shape.p3.a || p0->b != shape.p3.b);
+  plan.sense = shape.sense;
+  // SAR-END-2: G40 without end point: P0 is the tool centre at P1 (normal end of the element).
+  std::optional<Vec2> tool_centre;
+  bool deselects = r.state.side == Side::kOff && r.previous.side != Side::kOff;
+  if (end_case != SarEndCase::kPlaneAxis && deselects)
+    tool_centre = trc.on ? Element::offset(shape.p3, shape.end_unit, trc.s * trc.r) : shape.p3;
+  if (tool_centre) {
+    plan.tc_a = nearest_decimal(tool_centre->a * Decimal::kUnitsPerOne);
+    plan.tc_b = nearest_decimal(tool_centre->b * Decimal::kUnitsPerOne);
+  }
+  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead");
+  sar_sub_blocks(r, r, plan, sar_subs);
+  push_sub_blocks(shape, tool_centre);
+  if (stopped || end_case == SarEndCase::kPlaneAxis) return;
+  // SAR-END-3: the next blocks start where the retraction ended.
+  at_sar_end = true;
+  sar_end = tool_centre ? *tool_centre : shape.p3;
+  sar_end_plane = r.state.plane;
+  Point3 picture = r.end;
+  Decimal* cs[3] = {&picture.x, &picture.y, &picture.z};
+  *cs[ax.abscissa] = tool_centre ? plan.tc_a : plan.p3_a;
+  *cs[ax.ordinate] = tool_centre ? plan.tc_b : plan.p3_b;
+  *cs[ax.applicate] = plan.h.h0;
+  reposition = picture;
+}
+
+void Engine::State::push_sub_blocks(const SarShape& shape, const std::optional<Vec2>& tool_centre) {
+  PlaneAxes ax = plane_axes(sar_subs.blocks[0].state.plane);
+  for (int k = 0; k < sar_subs.count && !stopped; ++k) {
+    const Block& b = sar_subs.blocks[static_cast<std::size_t>(k)];
+    PlaneOverride o;
+    if (b.sar.start_at_p3) o.start = true, o.start_ab = shape.p3;
+    if (b.sar.end_at_p3) o.end = true, o.end_ab = shape.p3;
+    if (b.sar.move == SarMove::kElement) {
+      o.start = o.end = true;
+      o.start_ab = shape.approach ? shape.p3 : shape.p4;
+      o.end_ab = shape.approach ? shape.p4 : shape.p3;
+      o.circle = shape.circle, o.centre = shape.centre, o.sense = shape.sense;
+      (shape.approach ? o.tangent_after : o.tangent_before) = true;
+    }
+    if (b.sar.end_at_tool_centre) o.end = true, o.end_ab = *tool_centre;
+    if (phase == Phase::kOff) axes = ax;  // where apply() works; selection sets it again
+    step(b, &o);
+  }
+}
+
+}  // namespace cutcom::fast
