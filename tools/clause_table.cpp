@@ -28,7 +28,7 @@ struct Place {
   int line;
 };
 
-const std::regex kId(R"(\b(NC|TOOL|MD|TRC|ARC|PATH|ALARM|TRACE|CLI|PROP)-[A-Z0-9]+(-[A-Z0-9]+)*-[0-9]+\b)");
+const std::regex kId(R"(\b(NC|TOOL|MD|TRC|ARC|SAR|PATH|ALARM|TRACE|CLI|PROP)-[A-Z0-9]+(-[A-Z0-9]+)*-[0-9]+\b)");
 
 std::vector<std::string> lines_of(const fs::path& p) {
   std::ifstream in(p);

@@ -207,7 +207,10 @@ void retraction(const Block& r, const SarPlan& p, SarSubBlocks& out) {
   }
   if (p.end_case == SarEndCase::kPlaneAxis) {
     if (p.lead_moves || h.h1 != h.h0) {
-      Block b = sub(r, SarMove::kLead, p1, p.p0, after, r.state.feed, r.state.feed_type, p.lead_moves);
+      Point3 p0 = p.p0;
+      Decimal* c[3] = {&p0.x, &p0.y, &p0.z};
+      *c[ax.applicate] = h.h0;  // SAR-END-1: without the applicate, P0 is at P2's level
+      Block b = sub(r, SarMove::kLead, p1, p0, after, r.state.feed, r.state.feed_type, p.lead_moves);
       b.sar.start_at_p3 = true;
       push(out, b);
     }

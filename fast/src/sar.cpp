@@ -246,7 +246,17 @@ void Engine::State::sar_retraction(const Block& r) {
   decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead");
   sar_sub_blocks(r, r, plan, sar_subs);
   push_sub_blocks(shape, tool_centre);
-  if (stopped || end_case == SarEndCase::kPlaneAxis) return;
+  if (stopped) return;
+  if (end_case == SarEndCase::kPlaneAxis) {
+    // SAR-END-1: without the applicate the retraction ended at P2's level, not at the reader's.
+    if (plan.h.h0 != coord(r.end, ax.applicate)) {
+      Point3 p = r.end;
+      Decimal* c[3] = {&p.x, &p.y, &p.z};
+      *c[ax.applicate] = plan.h.h0;
+      reposition = p;
+    }
+    return;
+  }
   // SAR-END-3: the next blocks start where the retraction ended.
   at_sar_end = true;
   sar_end = tool_centre ? *tool_centre : shape.p3;

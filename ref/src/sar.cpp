@@ -6,7 +6,7 @@
 namespace cutcom::ref::detail {
 
 namespace {
-std::string mm(const Decimal& d) { return exact_mm(leaf(d)); }
+std::string mm(const Decimal& d) { return d.to_string(); }  // a decimal margin, written exactly
 }  // namespace
 
 void Reference::take(Block b) {
@@ -270,7 +270,17 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
   SarSubBlocks subs;
   sar_sub_blocks(r, r, plan, subs);
   push_sub_blocks(subs, shape, tool_centre);
-  if (stopped_ || end_case == SarEndCase::kPlaneAxis) return;
+  if (stopped_) return;
+  if (end_case == SarEndCase::kPlaneAxis) {
+    // SAR-END-1: without the applicate the retraction ended at P2's level, not at the reader's.
+    if (plan.h.h0 != coord(r.end, ax.applicate)) {
+      Point3 p = r.end;
+      Decimal* c[3] = {&p.x, &p.y, &p.z};
+      *c[ax.applicate] = plan.h.h0;
+      reader_->set_position(p);
+    }
+    return;
+  }
   // SAR-END-3: the next blocks start where the retraction ended.
   Point end = tool_centre ? *tool_centre : shape.p3;
   sar_end_ = SarEnd{end, r.state.plane};

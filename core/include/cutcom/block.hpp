@@ -204,7 +204,7 @@ struct Block {
   // A circle: G2/G3 in force and the block programs an axis or circle data (NC-ARC-2). A block
   // without them (only M8, say) moves nowhere, whatever the modal motion.
   bool is_arc() const { return circle; }
-  bool is_sar_block() const { return words.sar_contour.has_value(); }
+  bool is_sar_block() const { return words.sar_contour.has_value(); }  // SAR-BLOCK-1
 };
 
 }  // namespace cutcom
