@@ -30,6 +30,13 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
       c.size =
           std::max({c.size, std::fabs(p->x.to_double()), std::fabs(p->y.to_double()), std::fabs(p->z.to_double())});
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
+    if (b.is_sar_block() && b.words.disr) {
+      // SAR-DISR-1/2: the generated element is L = DISR + r long, or of radius DISR +- r.
+      double d = b.words.disr->to_double(), r = std::fabs(b.state.effective_radius().to_double());
+      for (double l : {std::fabs(d), std::fabs(d + r), std::fabs(d - r)})
+        if (l > 0) c.shortest = std::min(c.shortest, l);
+      continue;
+    }
     if (!b.moves_in_plane()) continue;
     auto at = [&](const Point3& p) {
       return std::pair{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()};
@@ -92,7 +99,8 @@ double Tolerance::band(std::string_view clause) const {
   if (clause == "TRC-ELEMENT-1" || clause == "TRC-ARC-ELEMENT-1" || clause == "TRC-APPR-NORM-1" ||
       clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-EDGE-5" ||
       clause == "TRC-LOOK-1" || clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" ||
-      clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1" || clause == "TRC-CD-3")
+      clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1" || clause == "TRC-CD-3" || clause == "SAR-SIDE-2" ||
+      clause == "SAR-DISR-1" || clause == "SAR-DISR-2" || clause == "SAR-DISCL-3" || clause == "SAR-SUB-1")
     return coordinate;
   return 0;  // decisions on exact decimals (block kinds, alarms) never diverge
 }

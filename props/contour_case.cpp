@@ -20,6 +20,21 @@ std::string side_word(const Step& s, bool right) {
 }
 }  // namespace
 
+namespace {
+std::string level(bool ac, std::int64_t v, int decimals) {
+  return ac ? "AC(" + fixed(v, decimals) + ")" : fixed(v, decimals);
+}
+
+// The words of a SAR block after its contour G code.
+std::string sar_words(int side, int seg, std::int64_t disr, bool discl, bool ac, std::int64_t v, bool fad,
+                      int decimals) {
+  std::string w = fmt::format("G{} G{} DISR={}", side, seg, fixed(disr, decimals));
+  if (discl) w += " DISCL=" + level(ac, v, decimals);
+  if (fad) w += " FAD=200";
+  return w;
+}
+}  // namespace
+
 std::string to_program(const ContourCase& c) {
   // Plane axes: abscissa / ordinate / applicate letters for G17, G18, G19.
   const char* a = c.plane == 17 ? "X" : c.plane == 18 ? "Z" : "Y";
@@ -27,12 +42,27 @@ std::string to_program(const ContourCase& c) {
   const char* h = c.plane == 17 ? "Z" : c.plane == 18 ? "Y" : "X";
   std::string p = fmt::format("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={}\n", fixed(c.radius_um, c.decimals));
   int n = 10;
-  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}0 T1 D1\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
-                   fixed(c.start_y, c.decimals), h);
+  const SarEnds& sar = c.sar;
+  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}{} T1 D1\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
+                   fixed(c.start_y, c.decimals), h, fixed(sar.approach ? sar.start_h : 0, c.decimals));
   n += 10;
-  p += fmt::format("N{} G1 {} {} {} G{} {} {}{} {}{} F500\n", n, c.right ? "G42" : "G41",
-                   c.kont_select ? "KONT" : "NORM", c.g451_select ? "G451" : "G450", c.edge_select,
-                   c.cdon ? "CDON" : "CDOF", a, fixed(c.first_x, c.decimals), b, fixed(c.first_y, c.decimals));
+  std::string modes = fmt::format("{} {} {} G{} {}", c.right ? "G42" : "G41", c.kont_select ? "KONT" : "NORM",
+                                  c.g451_select ? "G451" : "G450", c.edge_select, c.cdon ? "CDON" : "CDOF");
+  std::string first = fmt::format("{}{} {}{}", a, fixed(c.first_x, c.decimals), b, fixed(c.first_y, c.decimals));
+  if (!sar.approach) {
+    p += fmt::format("N{} G1 {} {} F500\n", n, modes, first);
+  } else {
+    std::string words = sar_words(sar.side_in, sar.seg_in, sar.disr_in, sar.discl_in, sar.discl_in_ac, sar.discl_in_v,
+                                  sar.fad_in, c.decimals);
+    // SAR-P4-1: P4 in the SAR block, or (the manual's E1 variants) from the next block.
+    if (sar.p4_mode == 0) {
+      p += fmt::format("N{} G1 G{} {} {} {} {}0 F500\n", n, sar.contour_in, words, modes, first, h);
+    } else if (sar.p4_mode == 1) {
+      p += fmt::format("N{} G1 G{} {} {} {}0 F500\nN{} {}\n", n, sar.contour_in, words, modes, h, n + 1, first);
+    } else {
+      p += fmt::format("N{} G1 G{} {} {} F500\nN{} {} {}0\n", n, sar.contour_in, words, modes, n + 1, first, h);
+    }
+  }
   std::int64_t x = c.first_x, y = c.first_y;
   bool right = c.right;
   int depth = 0;
@@ -60,9 +90,21 @@ std::string to_program(const ContourCase& c) {
     }
   }
   n += 10;
-  p += fmt::format("N{} G1 G40 {} {} G{} {}{} {}{}\n", n, c.kont_deselect ? "KONT" : "NORM",
-                   c.g451_deselect ? "G451" : "G450", c.edge_deselect, a, fixed(c.end_x, c.decimals), b,
-                   fixed(c.end_y, c.decimals));
+  std::string end = fmt::format("{}{} {}{}", a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));
+  std::string modes_out =
+      fmt::format("{} {} G{}", c.kont_deselect ? "KONT" : "NORM", c.g451_deselect ? "G451" : "G450", c.edge_deselect);
+  if (!sar.retraction) {
+    p += fmt::format("N{} G1 G40 {} {}\n", n, modes_out, end);
+  } else {
+    // SAR-END-1: the three ways the retraction block gives (or does not give) its end point.
+    std::string axes = sar.end_case == 3   ? end + " " + h + fixed(sar.end_h, c.decimals)
+                       : sar.end_case == 2 ? h + fixed(sar.end_h, c.decimals)
+                                           : "";
+    p += fmt::format("N{} G1 {} G{} {} {} {}\n", n, sar.deselect ? "G40" : "", sar.contour_out,
+                     sar_words(sar.side_out, sar.seg_out, sar.disr_out, sar.discl_out, sar.discl_out_ac,
+                               sar.discl_out_v, false, c.decimals),
+                     modes_out, axes);
+  }
   p += fmt::format("N{} M30\n", n + 10);
   return p;
 }

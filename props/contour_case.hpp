@@ -20,6 +20,25 @@ struct Step {
   bool flip = false;            // the block changes G41 <-> G42 (TRC-SIDE-1)
 };
 
+// A smooth approach in the selection block and/or a smooth retraction in the deselection block
+// (spec SAR-*). Levels are in the same units as the coordinates.
+struct SarEnds {
+  bool approach = false, retraction = false;
+  int contour_in = 147, contour_out = 148;  // 147/247/347, 148/248/348
+  int side_in = 140, side_out = 140;        // G140 ... G143
+  int seg_in = 340, seg_out = 340;          // G340 / G341
+  std::int64_t disr_in = 0, disr_out = 0;
+  bool discl_in = false, discl_out = false;
+  bool discl_in_ac = false, discl_out_ac = false;
+  std::int64_t discl_in_v = 0, discl_out_v = 0;
+  bool fad_in = false;
+  std::int64_t start_h = 0;  // applicate of the start position (P0 of the approach)
+  std::int64_t end_h = 0;    // applicate programmed in the retraction block (case 3)
+  int p4_mode = 0;           // approach: 0 P4 in the SAR block; 1 its Z there, X Y next block; 2 all next block
+  int end_case = 3;          // retraction: 1 no axis, 2 applicate only, 3 plane axes and applicate
+  bool deselect = true;      // G40 in the retraction block
+};
+
 struct ContourCase {
   std::int64_t radius_um = 2000;                    // $TC_DP6 in um (0 and negative values included)
   bool right = false;                               // G42 instead of G41
@@ -36,6 +55,7 @@ struct ContourCase {
   bool cdon = false;                                // CDON instead of CDOF in the G41/G42 block
   int md20240 = 3;                                  // blocks in the look-ahead / collision window
   std::string style;                                // which generator made it (for RC_TAG)
+  SarEnds sar;                                      // smooth approach / retraction (SAR-*)
 };
 
 std::string to_program(const ContourCase& c);

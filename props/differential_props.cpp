@@ -82,6 +82,19 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefAtApproachAndRetraction, ()) {
   check_agreement(c);
 }
 
+// covers: PROP-DIFF-1 PROP-SAR-5 SAR-TANGENT-1 SAR-SIDE-1 SAR-SIDE-2 SAR-SIDE-3 SAR-DISR-1 SAR-DISR-2
+// covers: SAR-DISCL-3 SAR-DISRP-2 SAR-SUB-1 SAR-END-1 SAR-END-2 SAR-END-3 SAR-TRC-1 SAR-FEED-1 SAR-FEED-2
+RC_GTEST_PROP(Differential, FastAgreesWithRefOnSarContours, ()) {
+  ContourCase c = *sar_contour();
+  CaseRuns r = run_case(c, false);
+  std::string reached = "no SAR decision";
+  for (const Decision& d : r.ref.decisions)
+    if (d.clause == "SAR-DISCL-3" || d.clause == "SAR-END-1")
+      reached = std::string(d.clause) + " " + std::string(d.branch);
+  RC_TAG(reached);
+  check_agreement(c);
+}
+
 // covers: PROP-CONT-1 PATH-CONT-1
 RC_GTEST_PROP(Fast, PathIsContinuousAndFinite, ()) {
   ContourCase c = *any_contour();

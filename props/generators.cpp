@@ -390,6 +390,76 @@ rc::Gen<ContourCase> bottleneck() {
   });
 }
 
+namespace {
+// SAR-DISCL-3: a level for P2 inside, exactly on, or just outside MD20204 (0.01 mm) beyond P1
+// (above) or P4 (below, at 0), or anywhere.
+std::int64_t p2_level(std::int64_t h1, int decimals) {
+  std::int64_t tol = 1;
+  for (int i = 2; i < decimals; ++i) tol *= 10;  // 0.01 mm in units of 10^-decimals mm
+  std::int64_t off = *element<std::int64_t>(tol / 2, tol, tol + 1, 0);
+  switch (*inRange(0, 4)) {
+    case 0:
+      return h1 + off;
+    case 1:
+      return -off;
+    default:
+      return *inRange<std::int64_t>(0, h1 + 1);
+  }
+}
+
+// SAR-DISR-1/2: mostly comfortable values; sometimes at the edge of alarm 10742.
+std::int64_t disr_for(bool line, std::int64_t r) {
+  switch (*inRange(0, 8)) {
+    case 0:
+      return line ? -(r - *element<std::int64_t>(-1, 0, 1)) : r + *element<std::int64_t>(-1, 0, 1);
+    case 1:
+      return line ? -*inRange<std::int64_t>(0, r + 1) : *inRange<std::int64_t>(0, 3);
+    default:
+      return *inRange<std::int64_t>(1, 20001);
+  }
+}
+
+void add_sar(ContourCase& c, bool approach, bool retraction) {
+  SarEnds& s = c.sar;
+  std::int64_t r = std::abs(c.radius_um);
+  s.approach = approach, s.retraction = retraction;
+  s.contour_in = *element(147, 247, 347), s.contour_out = *element(148, 248, 348);
+  s.side_in = *element(140, 140, 141, 142, 143), s.side_out = *element(140, 140, 141, 142, 143);
+  s.seg_in = *element(340, 341), s.seg_out = *element(340, 341);
+  s.disr_in = disr_for(s.contour_in == 147, r), s.disr_out = disr_for(s.contour_out == 148, r);
+  s.start_h = *inRange<std::int64_t>(0, 30001);
+  s.discl_in = *inRange(0, 4) != 0, s.discl_in_ac = *inRange(0, 4) == 0;
+  s.discl_in_v = p2_level(s.start_h, c.decimals);
+  s.fad_in = *inRange(0, 3) == 0;
+  s.p4_mode = *inRange(0, 3);
+  s.end_case = *element(1, 2, 3, 3);
+  s.end_h = *inRange<std::int64_t>(0, 30001);
+  s.discl_out = *inRange(0, 4) != 0, s.discl_out_ac = *inRange(0, 4) == 0;
+  s.discl_out_v = p2_level(s.end_case == 1 ? 30000 : s.end_h, c.decimals);
+  s.deselect = *inRange(0, 4) != 0;
+}
+}  // namespace
+
+rc::Gen<ContourCase> sar_contour() {
+  return rc::gen::exec([] {
+    ContourCase c = *rc::gen::weightedOneOf<ContourCase>(
+        {{3, random_walk()}, {2, grid_walk()}, {2, with_circles()}, {1, tiny_blocks()}, {1, around_ends()}});
+    c.style += "+sar";
+    int which = *inRange(0, 4);  // approach, retraction, both (twice)
+    add_sar(c, which != 1, which != 0);
+    return c;
+  });
+}
+
+rc::Gen<ContourCase> sar_approach_only() {
+  return rc::gen::exec([] {
+    ContourCase c = *rc::gen::weightedOneOf<ContourCase>({{3, random_walk()}, {2, grid_walk()}, {2, with_circles()}});
+    c.style += "+sar-approach";
+    add_sar(c, true, false);
+    return c;
+  });
+}
+
 rc::Gen<ContourCase> any_contour() {
   return rc::gen::weightedOneOf<ContourCase>({{4, random_walk()},
                                               {3, grid_walk()},

@@ -18,6 +18,8 @@ rc::Gen<ContourCase> notch();
 rc::Gen<ContourCase> tiny_blocks();          // many blocks shorter than the radius: look-ahead and its window
 rc::Gen<ContourCase> around_ends();          // start/end in front of, behind, on the tangent line, near the circle r
 rc::Gen<ContourCase> bottleneck();           // walls with recesses narrower/wider than 2r, CDON (TRC-CD-*)
+rc::Gen<ContourCase> sar_contour();          // SAR approach/retraction on any contour (SAR-*)
+rc::Gen<ContourCase> sar_approach_only();    // a SAR approach, its DISCL at the MD20204 boundary in half of them
 rc::Gen<ContourCase> circles_near_radius();  // circles whose radius is the tool radius within a few um          //
                                              // slots of width exactly 2r: elements of length 0
 

@@ -167,3 +167,30 @@ TEST(Collision, ApproachWithCdonSearchesFurtherAhead) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: TRC-CD-4 TRC-LOOK-3
+TEST(Collision, ASecondCutRunsTheSkippedBlocksInfeedsAgain) {
+  // Found by the SAR differential property: two CDON cuts on the same element (N60, then N80 cut
+  // N20's quadrant). The blocks without plane motion after it (N30, N50, N70 move X, the
+  // applicate in G19) run at the cut point both times; fast once lost N30's motion at the second
+  // cut (its record, run again at the first cut, no longer knew its start and end).
+  Runs r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4.986\nN10 G19 G90 G0 Y0 Z0 X0 T1 D1\n"
+      "N20 G1 G247 G140 G341 DISR=5.313 FAD=200 G42 NORM G451 G462 CDON Y0 Z0 X0 F500\nN30 G1 X-1\n"
+      "N40 G2 Y-2.026 Z-6.754 J2.364 K-4.390 G451\nN50 G1 X-2\nN60 G2 Y-1.026 Z-6.754 CR=-4.987 G451\nN70 G1 X-3\n"
+      "N80 G3 Y-1.030 Z-6.752 J0.000 K0.005 G451\nN90 G1 X-4\nN100 G2 Y-1.037 Z-6.750 J0 K0.005 G451 G41\n");
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    ASSERT_EQ(x->path.size(), 5u);
+    EXPECT_EQ(x->path[2].origin.line, 5);  // N30 at the cut point, from X0 to X-1
+    EXPECT_NEAR(x->path[2].start.x, 0, 1e-12);
+    EXPECT_NEAR(x->path[2].end.x, -1, 1e-12);
+    ASSERT_EQ(x->alarms.size(), 1u);
+    EXPECT_EQ(x->alarms[0].number, 10753);
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::test

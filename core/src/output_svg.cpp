@@ -144,7 +144,10 @@ void fit(View& v, const std::vector<ProgrammedSegment>& programmed, const RunRes
     lo_a = std::min(lo_a, v.a(p) - r), hi_a = std::max(hi_a, v.a(p) + r);
     lo_b = std::min(lo_b, v.b(p) - r), hi_b = std::max(hi_b, v.b(p) + r);
   };
-  for (const auto& s : programmed) grow(s.start, 0), grow(s.end, 0);
+  for (const auto& s : programmed) {
+    grow(s.start, 0), grow(s.end, 0);
+    if (s.arc && arcs_in_view) grow(s.center, std::hypot(v.a(s.start) - v.a(s.center), v.b(s.start) - v.b(s.center)));
+  }
   for (const auto& e : result.path) {
     grow(e.start, 0), grow(e.end, 0);
     if (e.type == ElementType::kArc && arcs_in_view)

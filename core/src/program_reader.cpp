@@ -102,7 +102,9 @@ void ProgramReader::resolve(Block& b) {
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
   bool has_centre = w.centre[0].present || w.centre[1].present || w.centre[2].present;
   b.centre.reset();
-  b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw) &&
+  // A SAR block is never a circle itself (SAR-BLOCK-1): its contour is generated, whatever G2/G3
+  // is modally in force.
+  b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw) && !w.sar_contour &&
              (w.programs_any_axis() || has_centre || w.cr.has_value());
   if (has_centre || w.cr) {
     if (!b.is_arc()) fail("I, J, K or CR= programmed in a block without G2/G3");

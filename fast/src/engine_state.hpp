@@ -455,6 +455,7 @@ struct Engine::State {
     BlockCopy owner;
     owner.line = k.owner_line, owner.number = k.owner_number, owner.rapid = k.owner_rapid, owner.feed = k.owner_feed;
     owner.feed_type = k.owner_feed_type, owner.sar = k.owner_sar;
+    owner.start = k.owner_start, owner.end = k.owner_end;  // a second cut runs it again from this record
     owner.actions_done = true, owner.seq = k.seq;
     line(owner, from, to, OriginKind::kInfeed, owner.rapid);
   }

@@ -176,7 +176,7 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
   plan.p3_b = nearest_decimal(shape.p3.b * Decimal::kUnitsPerOne);
   plan.lead_moves = p0.a != shape.p3.a || p0.b != shape.p3.b;
   plan.sense = shape.sense;
-  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead");
+  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead", norm(shape.p3 - p0));
   sar_sub_blocks(a, m, plan, sar_subs);
   // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
   SarVariables v;
@@ -243,7 +243,7 @@ void Engine::State::sar_retraction(const Block& r) {
     plan.tc_a = nearest_decimal(tool_centre->a * Decimal::kUnitsPerOne);
     plan.tc_b = nearest_decimal(tool_centre->b * Decimal::kUnitsPerOne);
   }
-  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead");
+  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead", p0 ? norm(shape.p3 - *p0) : 0.0);
   sar_sub_blocks(r, r, plan, sar_subs);
   push_sub_blocks(shape, tool_centre);
   if (stopped) return;

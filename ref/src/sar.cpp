@@ -200,9 +200,10 @@ void Reference::sar_approach(std::span<const Block> g, int p4_index) {
   plan.p0 = a.start, plan.p4 = m.end;
   plan.p3_a = nearest_decimal(CGAL::to_double(shape.p3.x()));
   plan.p3_b = nearest_decimal(CGAL::to_double(shape.p3.y()));
-  plan.lead_moves = p0 != shape.p3;
+  FT lead = exact_root((shape.p3 - p0).squared_length());
+  plan.lead_moves = CGAL::sign(lead) != CGAL::ZERO;
   plan.sense = shape.sense;
-  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead");
+  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead", exact_mm(lead));
   SarSubBlocks subs;
   sar_sub_blocks(a, m, plan, subs);
   // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
@@ -252,7 +253,8 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
   plan.p0 = r.end;
   plan.p3_a = nearest_decimal(CGAL::to_double(shape.p3.x()));
   plan.p3_b = nearest_decimal(CGAL::to_double(shape.p3.y()));
-  plan.lead_moves = p0 && *p0 != shape.p3;
+  FT lead = p0 ? exact_root((shape.p3 - *p0).squared_length()) : FT(0);
+  plan.lead_moves = CGAL::sign(lead) != CGAL::ZERO;
   plan.sense = shape.sense;
   // SAR-END-2: G40 without end point: P0 is the tool centre at P1 (normal end of the element).
   std::optional<Point> tool_centre;
@@ -266,7 +268,7 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
     tool_centre = shape.p3;
     plan.tc_a = plan.p3_a, plan.tc_b = plan.p3_b;
   }
-  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead");
+  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead", exact_mm(lead));
   SarSubBlocks subs;
   sar_sub_blocks(r, r, plan, subs);
   push_sub_blocks(subs, shape, tool_centre);

@@ -11,11 +11,14 @@ SarShape sar_shape(SarContour contour, const Point& p4, const Vector& t, int s, 
   Vector u = t / length, n(-u.y(), u.x());
   Vector perp(-t.y(), t.x());  // rational direction of n
   switch (contour) {
+    // Lines: the direction is the displacement itself, u L (ref's straight elements keep d as
+    // their tangent so that the corner trim can use |d|); the tangency at P4 is then an exact
+    // zero test of cross(u L, t).
     case SarContour::kG147:  // SAR-POINTS-1
-      sh.p3 = p4 - u * size, sh.start_dir = sh.end_dir = t;
+      sh.p3 = p4 - u * size, sh.start_dir = sh.end_dir = u * size;
       break;
     case SarContour::kG148:  // SAR-POINTS-2
-      sh.approach = false, sh.p3 = p4 + u * size, sh.start_dir = sh.end_dir = t;
+      sh.approach = false, sh.p3 = p4 + u * size, sh.start_dir = sh.end_dir = u * size;
       break;
     case SarContour::kG247:
       sh.centre = p4 + n * (FT(s) * size), sh.p3 = sh.centre - u * size;
@@ -50,8 +53,8 @@ ContourElement sar_element(const SarShape& sh, const Block& block) {
   e.start_dir = sh.start_dir, e.end_dir = sh.end_dir;
   if (!sh.circle) {
     e.kind = ContourElement::Kind::kLine;
-    e.d = e.b - e.a;
-    e.length = sh.size;  // |d| = L by construction, no root
+    e.d = sh.start_dir;  // = b - a = u L, by construction
+    e.length = sh.size;  // |d| = L, no root
     e.normal = Vector(-e.d.y(), e.d.x()) / sh.size;
     return e;
   }

@@ -5,7 +5,8 @@
 //   G247: C = P4 + s R n, P3 = C - R u      G248: C = P4 + s R n, P3 = C + R u
 //   G347 / G348: C = P4 + s R n, P3 = P4 + 2 s R n
 // Circles turn counter-clockwise for s = +1. The directions of travel at P3 and P4 are rational
-// multiples of t and perp(t), so the corners the element makes are decided without roots.
+// multiples of t and perp(t) for the circles (their corners are decided without roots); a
+// straight element's direction is its displacement u L, as for every straight element in ref.
 #pragma once
 
 #include "contour_element.hpp"
