@@ -66,6 +66,48 @@ class ZigZagProgram : public std::streambuf {
   std::string line_;
 };
 
+// Islands of 6 blocks each: a SAR approach (G247 G341), a rectangle, a SAR retraction (G248 G340
+// with G40 and its end point), produced line by line (spec SAR-*).
+class SarIslandsProgram : public std::streambuf {
+ public:
+  explicit SarIslandsProgram(long blocks) : total_(blocks) {}
+
+ protected:
+  int_type underflow() override {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    if (n_ > total_ + 1) return traits_type::eof();
+    int n = next_line();
+    setg(line_, line_, line_ + n);
+    return traits_type::to_int_type(*gptr());
+  }
+
+ private:
+  // Written into a fixed buffer: the lines are longer than a short string, and the generator
+  // must not allocate (the allocations counted are the engine's).
+  int next_line() {
+    long k = n_++;
+    if (k == 0) return std::snprintf(line_, sizeof line_, "$TC_DP6[1,1]=2\n");
+    if (k == 1) return std::snprintf(line_, sizeof line_, "N1 G0 X-70 Y-20 Z10 T1 D1\n");
+    long x = 100 * ((k - 2) / 6);
+    switch ((k - 2) % 6) {
+      case 0:
+        return std::snprintf(line_, sizeof line_, "G41 G247 G341 DISR=3 DISCL=2 FAD=200 X%ld Y0 Z-2 F500\n", x);
+      case 1:
+        return std::snprintf(line_, sizeof line_, "G1 Y20\n");
+      case 2:
+        return std::snprintf(line_, sizeof line_, "X%ld.5\n", x + 20);
+      case 3:
+        return std::snprintf(line_, sizeof line_, "Y0\n");
+      case 4:
+        return std::snprintf(line_, sizeof line_, "X%ld\n", x + 5);
+      default:
+        return std::snprintf(line_, sizeof line_, "G40 G248 G340 DISR=3 DISCL=2 X%ld Y-20 Z10 F2000\n", x + 30);
+    }
+  }
+  long total_, n_ = 0;
+  char line_[128];
+};
+
 // 0: examples/pocket.mpf (lines), 1: examples/contour.mpf (lines and circles).
 std::string example_text(long which = 0) {
   std::ifstream in(std::string(CUTCOM_EXAMPLES) + (which == 0 ? "/pocket.mpf" : "/contour.mpf"));
@@ -126,6 +168,25 @@ void BM_FastLongProgram(benchmark::State& state, bool cdon) {
 }
 BENCHMARK_CAPTURE(BM_FastLongProgram, cdof, false)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_FastLongProgram, cdon, true)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+// SAR: the same for programs made of SAR approaches and retractions (no allocation per SAR block).
+void BM_FastLongSarProgram(benchmark::State& state) {
+  MachineData md;
+  long allocations = 0;
+  for (auto _ : state) {
+    SarIslandsProgram text(state.range(0));
+    std::istream in(&text);
+    ProgramReader reader(in, md.initial_state());
+    NullSink sink;
+    long before = g_allocations.load();
+    fast::run(reader, md, sink);
+    allocations = g_allocations.load() - before;
+    benchmark::DoNotOptimize(sink.elements);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+  state.counters["allocations"] = static_cast<double>(allocations);
+}
+BENCHMARK(BM_FastLongSarProgram)->Arg(1200)->Arg(120000)->Arg(1200000)->Unit(benchmark::kMillisecond);
 
 void BM_RefLongProgram(benchmark::State& state) {
   MachineData md;

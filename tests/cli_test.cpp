@@ -110,3 +110,31 @@ TEST(Cli, StdinMachineDataAndSvg) {
 }
 
 }  // namespace
+
+namespace {
+// covers: SAR-VAR-1 CLI-1
+TEST(Cli, SarVariablesInEveryFormat) {
+  const std::string example = CUTCOM_SOURCE_DIR "/examples/sar-quadrant.mpf";
+  for (const char* engine : {"fast", "ref"}) {
+    Result j = sh(kCli + " run " + example + " --format json --engine " + engine);
+    ASSERT_EQ(j.status, 0) << engine;
+    auto doc = nlohmann::json::parse(j.out);
+    ASSERT_EQ(doc["variables"].size(), 1u);
+    const auto& v = doc["variables"][0];
+    EXPECT_EQ(v["line"], 12);
+    EXPECT_EQ(v["$P_APDV"], 1);
+    EXPECT_EQ(v["$P_APR"], nlohmann::json::array({5, 15, 0}));  // P3 of the manual's contour example 2
+    EXPECT_EQ(v["$P_AEP"], nlohmann::json::array({30, -10, 0}));
+    bool saw_element = false;
+    for (const auto& e : doc["path"]) saw_element = saw_element || e["origin"].value("sar", "") == "element";
+    EXPECT_TRUE(saw_element);
+  }
+  Result t = sh(kCli + " run " + example);
+  EXPECT_NE(t.out.find("$P_APR=(5.0000, 15.0000, 0.0000) $P_AEP=(30.0000, -10.0000, 0.0000) $P_APDV=1"),
+            std::string::npos);
+  Result s = sh(kCli + " run " + example + " --format svg");
+  EXPECT_NE(s.out.find(">P3 L12<"), std::string::npos);
+  EXPECT_NE(s.out.find(">P4 L12<"), std::string::npos);
+  EXPECT_NE(s.out.find("side view"), std::string::npos);
+}
+}  // namespace

@@ -393,5 +393,22 @@ TEST(Sar, SemicircleRetractionInG18) {
   }
 }
 
+// covers: SAR-P4-2 SAR-SUB-1 SAR-ACTION-1
+TEST(Sar, SarBlockWithoutMotionStillRunsItsActions) {
+  // P4 = (10,0) from N30, t = +X from N40, L = 10 (no TRC): P3 = (0,0) = P0 and no DISCL, so the
+  // SAR block N20 has no motion at all; its last sub-block still runs, with M8, at (0,0,0). The
+  // line P3 -> P4 runs in N30.
+  Runs r = run_both("N10 G0 X0 Y0 Z0\nN20 G147 DISR=10 F100 M8\nN30 G1 X10 Y0\nN40 X20\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {10, 0, 0}), line(K::kProgrammed, {10, 0, 0}, {20, 0, 0})});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    EXPECT_TRUE(has_decision(*x, "SAR-SUB-1", "no-lead"));
+    ASSERT_EQ(x->actions.size(), 1u);
+    EXPECT_EQ(x->actions[0].line, 2);
+    expect_point(x->actions[0].at, {0, 0, 0}, "M8");
+    EXPECT_EQ(x->path[0].origin.line, 3);
+    EXPECT_EQ(x->path[0].origin.sar, SarMove::kElement);
+  }
+}
+
 }  // namespace
 }  // namespace cutcom::test
