@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <sstream>
+#include <string>
 
 namespace cutcom {
 namespace {
@@ -34,6 +36,17 @@ TEST(Decimal, LiteralsAreExact) {
   EXPECT_FALSE(Decimal::parse(".").value);
   EXPECT_DOUBLE_EQ(dec("123.456").to_double(), 123.456);  // correctly rounded
   EXPECT_EQ(dec("-0.000000001").to_double(), -1e-9);
+  // The division shortcut below 2^53 units gives the correctly rounded double, as strtod of the
+  // exact text does: checked on values spread over the whole range, and at its edges.
+  std::uint64_t x = 88172645463325252ULL;
+  for (int i = 0; i < 200000; ++i) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;  // xorshift64
+    std::int64_t units = static_cast<std::int64_t>(x >> (11 + i % 40)) * (i % 2 == 0 ? 1 : -1);
+    std::string text = std::to_string(units) + "e-9";
+    ASSERT_EQ(Decimal::from_units(units).to_double(), std::strtod(text.c_str(), nullptr)) << units;
+  }
+  for (std::int64_t units : {(std::int64_t(1) << 53), (std::int64_t(1) << 53) + 1, -(std::int64_t(1) << 53) - 1})
+    EXPECT_EQ(Decimal::from_units(units).to_double(), std::strtod((std::to_string(units) + "e-9").c_str(), nullptr));
 }
 
 // covers: NC-LEX-1 NC-LEX-2 NC-LEX-3 NC-LEX-5

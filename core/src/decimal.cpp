@@ -71,6 +71,11 @@ std::optional<std::int64_t> Decimal::to_integer() const {
 }
 
 double Decimal::to_double() const {
+  // Up to 2^53 units both the units and 10^9 are exact doubles, and IEEE division of exact
+  // operands rounds correctly: the same result as the text conversion below, without it.
+  constexpr Int128 kExact = Int128(1) << 53;
+  if (units_ <= kExact && units_ >= -kExact)
+    return static_cast<double>(static_cast<std::int64_t>(units_)) / static_cast<double>(kUnitsPerOne);
   // strtod of the exact text "<units>e-9" rounds correctly; a stack buffer keeps it allocation-free.
   char buf[64];
   char* end = buf + sizeof buf;

@@ -16,15 +16,15 @@ SarSequence::Step SarSequence::fail(int number, const Block& at) {
 SarSequence::Step SarSequence::take(const Block& b) {
   if (count_ == 0) {
     if (!b.is_sar_block()) {
-      if (b.moves_in_plane()) last_traversing_ = b;
+      if (b.moves_in_plane()) has_traversing_ = true, traversing_plane_ = b.state.plane;
       return Step::kPass;
     }
     if (!is_approach(b)) {
       // SAR-TANGENT-1: the retraction leaves the end tangent of the last traversing block.
-      if (!last_traversing_) return fail(10744, b);
-      if (last_traversing_->state.plane != b.state.plane)
+      if (!has_traversing_) return fail(10744, b);
+      if (traversing_plane_ != b.state.plane)
         throw UnsupportedError(b.words.line, "plane change between the contour and its SAR retraction");
-      last_traversing_.reset();  // a second retraction has no contour to leave
+      has_traversing_ = false;  // a second retraction has no contour to leave
       return Step::kRetraction;
     }
     held_[0] = b;
@@ -44,7 +44,7 @@ SarSequence::Step SarSequence::take(const Block& b) {
     if (++dummies_ > md_.wab_maxnum_dummy_blocks) return fail(10740, b);  // SAR-P4-1
     return Step::kHold;
   }
-  last_traversing_ = b;
+  has_traversing_ = true, traversing_plane_ = b.state.plane;
   if (p4_index_ < 0) {
     p4_index_ = count_ - 1;
     return Step::kHold;

@@ -31,7 +31,8 @@ void Engine::State::approach(const Block& b) {
   if (selection.kont) {
     // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
     Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt};
-    if (!selection_from_tool && !e.arc && first.exact && selection.exact) k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
+    if (!selection_from_tool && !e.arc && first.exact && selection.exact)
+      k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
     if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
     if (stopped) return;
   }

@@ -196,7 +196,10 @@ struct Engine::State {
   SarSubBlocks sar_subs;  // reused: nothing allocated per SAR block
   PlaneOverride over;
   const Block* over_block = nullptr;
-  BlockCopy last_contour;  // the last programmed block moving in the plane, as run
+  // The last programmed block moving in the plane, as run (converted only at a retraction).
+  Block last_contour;
+  PlaneOverride last_contour_over;
+  bool last_contour_overridden = false;
   bool has_last_contour = false;
   bool at_sar_end = false;  // SAR-END-3: the tool stands at sar_end (in the plane)
   Vec2 sar_end;

@@ -206,7 +206,9 @@ void Engine::State::sar_retraction(const Block& r) {
   Vec2 t, p4;
   {
     AxesScope scope(axes, ax);
-    Element last = element_of(last_contour);
+    BlockCopy copy = BlockCopy::of(last_contour);
+    if (last_contour_overridden) apply(last_contour_over, copy);
+    Element last = element_of(copy);
     t = last.end_tangent(), p4 = last.end;  // SAR-TANGENT-1
   }
   decide("SAR-TANGENT-1", r.words.line, "end-of-contour");

@@ -21,7 +21,7 @@ class SarSequence {
     kPass,        // run the block as usual
     kHold,        // kept: an approach waits for the block that defines its direction
     kApproach,    // gathered(): the SAR block, the blocks after it, last the direction block
-    kRetraction,  // the block is a SAR retraction block; before_retraction() is its contour's last block
+    kRetraction,  // the block is a SAR retraction block (the engines know their contour's last block)
     kAlarm,       // alarm() at alarm_block()
   };
 
@@ -32,7 +32,6 @@ class SarSequence {
   std::span<const Block> gathered() const { return {held_.data(), static_cast<std::size_t>(count_)}; }
   // Index in gathered() of the block whose end point is P4 (0: the SAR block itself).
   int p4_index() const { return p4_index_; }
-  const Block& before_retraction() const { return *last_traversing_; }
   int alarm() const { return alarm_; }
   const Block& alarm_block() const { return *alarm_block_; }
   // Forget what was gathered once the engine ran it.
@@ -51,7 +50,8 @@ class SarSequence {
   int count_ = 0;
   int p4_index_ = -1;  // -1: P4 not known yet
   int dummies_ = 0;
-  std::optional<Block> last_traversing_;
+  bool has_traversing_ = false;  // a programmed block moved in the plane since the last retraction
+  Plane traversing_plane_ = Plane::kG17;
   int alarm_ = 0;
   const Block* alarm_block_ = nullptr;
   Block alarm_copy_;
