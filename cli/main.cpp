@@ -118,8 +118,8 @@ int list_machine_data(const std::vector<std::string>& assignments) {
 }
 
 int list_alarms() {
-  for (int n : {10750, 10751, 10753, 10754, 10757, 10762, 14040, 17181}) {
-    const cutcom::AlarmInfo* a = cutcom::find_alarm(n);
+  for (const cutcom::AlarmInfo& info : cutcom::alarm_catalogue()) {
+    const cutcom::AlarmInfo* a = &info;
     std::cout << fmt::format("{}  {:<96} [{}]{}\n", a->number, a->text, a->clause,
                              a->number_confirmed ? "" : " (number not confirmed by the manual pages)");
   }

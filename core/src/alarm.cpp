@@ -34,6 +34,8 @@ constexpr std::array kCatalogue = {
 };
 }  // namespace
 
+std::span<const AlarmInfo> alarm_catalogue() { return kCatalogue; }
+
 const AlarmInfo* find_alarm(int number) {
   for (const AlarmInfo& a : kCatalogue)
     if (a.number == number) return &a;

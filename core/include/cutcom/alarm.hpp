@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -17,6 +18,8 @@ struct AlarmInfo {
 
 // nullptr for a number not in the catalogue.
 const AlarmInfo* find_alarm(int number);
+// The whole catalogue, in number order.
+std::span<const AlarmInfo> alarm_catalogue();
 
 // An alarm raised while running a program; it stops the program (the path before it is kept).
 struct Alarm {
