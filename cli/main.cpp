@@ -3,11 +3,15 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "campaign.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/machine_data.hpp"
 #include "cutcom/output.hpp"
@@ -117,6 +121,61 @@ int list_machine_data(const std::vector<std::string>& assignments) {
   return kDone;
 }
 
+struct CertifyOptions {
+  cutcom::props::CampaignOptions campaign;
+  std::string shard = "0/1";
+  std::string summary, report, histogram, spec = "spec";
+  std::vector<std::string> merge;
+  long show = -1;
+};
+
+// The certification campaign (docs/certification.md): exit 0 without unexplained divergence,
+// 1 with one (written to the corpus).
+int certify_command(CertifyOptions& o) {
+  using cutcom::props::CampaignSummary;
+  if (o.show >= 0) {  // one case, to replay it with `cutcom run`
+    auto [program, md] = cutcom::props::campaign_case(o.campaign.seed, o.show);
+    std::string words = md.substr(0, md.size() - 1);
+    std::replace(words.begin(), words.end(), '\n', ' ');
+    std::cout << "; campaign " << o.campaign.seed << " case " << o.show << ", machine data: " << words << "\n"
+              << program;
+    return kDone;
+  }
+  CampaignSummary s;
+  if (!o.merge.empty()) {
+    for (const auto& f : o.merge) {
+      std::ifstream in(f);
+      if (!in) throw cutcom::MachineDataError(fmt::format("cannot open summary '{}'", f));
+      s.merge(CampaignSummary::from_json(nlohmann::json::parse(in)));
+    }
+  } else {
+    int i = 0, n = 0;
+    char slash = 0;
+    std::istringstream sh(o.shard);
+    if (!(sh >> i >> slash >> n) || slash != '/' || n < 1 || i < 0 || i >= n)
+      throw cutcom::MachineDataError(fmt::format("--shard wants I/N with 0 <= I < N, not '{}'", o.shard));
+    o.campaign.shard = i, o.campaign.shards = n;
+    s = cutcom::props::run_campaign(o.campaign);
+  }
+  if (!o.summary.empty()) std::ofstream(o.summary) << s.to_json().dump(1) << "\n";
+  if (!o.report.empty()) {
+    std::string svg = o.histogram.empty()
+                          ? (std::filesystem::path(o.report).parent_path() / "certification-errors.svg").string()
+                          : o.histogram;
+    cutcom::props::write_report(s, o.report, svg, o.spec);
+  }
+  long agree = s.verdicts.count("agree") ? s.verdicts.at("agree") : 0;
+  long knife = s.verdicts.count("knife-edge") ? s.verdicts.at("knife-edge") : 0;
+  long unsupported = s.verdicts.count("not-supported") ? s.verdicts.at("not-supported") : 0;
+  std::cout << fmt::format(
+      "{} cases in {:.1f} s ({:.0f}/s): {} agree, {} knife edges, {} not supported, {} unexplained divergences; "
+      "largest coordinate error {:.3g} mm ({:.3g} of the tolerance)\n",
+      s.cases, s.seconds, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife, unsupported,
+      s.divergences.size(), s.max_error, s.max_ratio);
+  for (const auto& d : s.divergences) std::cout << "unexplained divergence: " << d << "\n";
+  return s.divergences.empty() ? kDone : kAlarm;
+}
+
 int list_alarms() {
   for (const cutcom::AlarmInfo& info : cutcom::alarm_catalogue()) {
     const cutcom::AlarmInfo* a = &info;
@@ -144,6 +203,22 @@ int main(int argc, char** argv) {
   auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
   md->add_option("--md", md_assignments, "override NAME=VALUE before listing");
   auto* alarms = app.add_subcommand("alarms", "list the alarm catalogue");
+  CertifyOptions co;
+  auto* certify =
+      app.add_subcommand("certify", "certify fast against ref on generated programs (docs/certification.md)");
+  certify->add_option("--cases", co.campaign.cases, "cases in this shard (0: until --time)");
+  certify->add_option("--time", co.campaign.seconds, "stop after this many seconds");
+  certify->add_option("--seed", co.campaign.seed, "campaign seed (case k is the same program in any sharding)");
+  certify->add_option("--shard", co.shard, "I/N: run cases k = I, I+N, I+2N, ... of the campaign");
+  certify->add_option("--results", co.campaign.results, "JSON lines, one per case");
+  certify->add_option("--corpus", co.campaign.corpus, "directory for an unexplained divergence (tests/corpus)");
+  certify->add_option("--summary", co.summary, "write the shard's summary (JSON) for --merge");
+  certify->add_option("--merge", co.merge, "merge shard summaries instead of running")->expected(1, -1);
+  certify->add_option("--report", co.report, "write the report (docs/certification.md) and its error histogram");
+  certify->add_option("--histogram", co.histogram, "the histogram's SVG file (next to the report by default)");
+  certify->add_option("--spec", co.spec, "spec directory, for the clause list of the coverage table");
+  certify->add_flag("!--no-progress", co.campaign.progress, "no progress bar");
+  certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop");
 
   try {
     app.parse(argc, argv);
@@ -159,6 +234,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(o);
     if (*md) return list_machine_data(md_assignments);
     if (*alarms) return list_alarms();
+    if (*certify) return certify_command(co);
   } catch (const cutcom::InputError& e) {
     std::cout.flush();
     std::cerr << fmt::format("cutcom: {}: {}\n", o.program, e.what());

@@ -35,6 +35,9 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
       double d = b.words.disr->to_double(), r = std::fabs(b.state.effective_radius().to_double());
       for (double l : {std::fabs(d), std::fabs(d + r), std::fabs(d - r)})
         if (l > 0) c.shortest = std::min(c.shortest, l);
+      // P3 lies L or R from P4 along the tangent of the block next to it: a rounded tangent
+      // tilts it by up to u (L / d_min) per unit of that length, as the radius does an offset.
+      c.radius = std::max(c.radius, std::fabs(d) + r);
       continue;
     }
     if (!b.moves_in_plane()) continue;

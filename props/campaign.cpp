@@ -1,0 +1,286 @@
+#include "campaign.hpp"
+
+#include <fmt/format.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+#include "cutcom/output.hpp"
+#include "generators.hpp"
+#include "run_case.hpp"
+
+namespace cutcom::props {
+
+namespace {
+
+// Every capability built so far: the mixed contour generator (lines, circles, near-tangent and
+// near-reversal corners, notches, tiny blocks, the ends, bottlenecks), circles near the tool
+// radius, and SAR at either end. Case k takes source k mod 6.
+struct Source {
+  const char* name;
+  rc::Gen<ContourCase> (*make)();
+};
+constexpr Source kSources[] = {{"any", any_contour}, {"sar", sar_contour}, {"any", any_contour},
+                               {"sar", sar_contour}, {"any", any_contour}, {"near-radius", circles_near_radius}};
+
+struct Outcome {
+  std::string verdict;  // agree, knife-edge, not-supported, diverge
+  std::string clause;   // knife edge: the parting clause
+  std::string explanation;
+  double error = 0, ratio = 0;
+  CaseRuns runs;
+};
+
+// PROP-DIFF-1, as the differential properties decide it (differential_props.cpp).
+Outcome evaluate(const ContourCase& c) {
+  Outcome o;
+  o.runs = run_case(c, false);
+  const CaseRuns& r = o.runs;
+  Verdict v = compare(r.ref, r.fast, r.tolerance);
+  o.explanation = v.explanation;
+  if (r.ref_unsupported || r.fast_unsupported) {
+    if (r.ref_unsupported == r.fast_unsupported) return o.verdict = "not-supported", o;
+    if (v.kind != Verdict::Kind::kKnifeEdge) return o.verdict = "diverge", o;
+  }
+  if (v.kind == Verdict::Kind::kDiverge) return o.verdict = "diverge", o;
+  if (v.kind == Verdict::Kind::kKnifeEdge) return o.verdict = "knife-edge", o.clause = v.clause, o;
+  o.verdict = "agree";
+  o.error = v.max_coordinate_error;
+  o.ratio = r.tolerance.coordinate > 0 ? o.error / r.tolerance.coordinate : 0;
+  return o;
+}
+
+double margin_of(const Decision& d) {
+  return d.margin_exact.empty() ? d.margin : std::strtod(d.margin_exact.c_str(), nullptr);
+}
+
+int bin_of(double value) {
+  if (!(value > 0)) return 0;
+  int b = static_cast<int>(std::floor((std::log10(value) + 20) * 10)) + 1;
+  return std::clamp(b, 1, 160);
+}
+
+// RapidCheck's own shrinks, greedily: the first smaller case that still diverges, until none does.
+ContourCase shrink(rc::Shrinkable<ContourCase> s, int budget) {
+  ContourCase best = s.value();
+  for (bool progress = true; progress && budget > 0;) {
+    progress = false;
+    for (auto seq = s.shrinks(); auto next = seq.next();) {
+      if (--budget <= 0) break;
+      ContourCase candidate = next->value();
+      try {
+        if (evaluate(candidate).verdict != "diverge") continue;
+      } catch (const std::exception&) {
+        continue;
+      }
+      s = *next, best = candidate, progress = true;
+      break;
+    }
+  }
+  return best;
+}
+
+std::string machine_data_text(const ContourCase& c) {
+  return fmt::format("MD20210={}\nMD20230={}\nMD20240={}\n", c.md20210, c.md20230, c.md20240);
+}
+
+// tests/corpus/<name>.mpf, .md (machine data) and .ref.json (ref's output, the expected result).
+std::string write_corpus(const std::string& dir, const std::string& name, const ContourCase& c,
+                         const std::string& why) {
+  std::filesystem::create_directories(dir);
+  std::string base = dir + "/" + name;
+  std::string program = to_program(c);
+  std::ofstream(base + ".mpf") << "; found by cutcom certify: " << why << "\n" << program;
+  std::ofstream(base + ".md") << machine_data_text(c);
+  MachineData md = machine_data_of(c);
+  std::istringstream in(program);
+  ProgramReader reader(in, md.initial_state());
+  std::ofstream out(base + ".ref.json");
+  JsonWriter writer(out, "ref", false);
+  try {
+    ref::run(reader, md, writer);
+  } catch (const UnsupportedError&) {
+  }
+  writer.finish();
+  return base + ".mpf";
+}
+
+}  // namespace
+
+std::uint64_t case_seed(std::uint64_t seed, long k) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (static_cast<std::uint64_t>(k) + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+namespace {
+rc::Shrinkable<ContourCase> generate(std::uint64_t seed, long k) {
+  rc::Gen<ContourCase> gen = kSources[k % 6].make();
+  return gen(rc::Random(case_seed(seed, k)), static_cast<int>(k % 101));
+}
+}  // namespace
+
+std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k) {
+  ContourCase c = generate(seed, k).value();
+  return {to_program(c), machine_data_text(c)};
+}
+
+CampaignSummary run_campaign(const CampaignOptions& o) {
+  CampaignSummary s;
+  s.seed = o.seed;
+  s.shards.push_back(fmt::format("{}/{}", o.shard, o.shards));
+  std::ofstream results;
+  if (!o.results.empty()) results.open(o.results);
+  auto started = std::chrono::steady_clock::now();
+  auto last_print = started;
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+  for (long i = 0; o.cases == 0 || i < o.cases; ++i) {
+    if (o.seconds > 0 && elapsed() >= o.seconds) break;
+    long k = o.shard + i * o.shards;  // the campaign's case number
+    const Source& src = kSources[k % 6];
+    rc::Shrinkable<ContourCase> shrinkable = generate(o.seed, k);
+    ContourCase c = shrinkable.value();
+    auto t0 = std::chrono::steady_clock::now();
+    Outcome out = evaluate(c);
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ++s.cases;
+    ++s.verdicts[out.verdict];
+    ++s.styles[c.style];
+    const RunResult& ref = out.runs.ref;
+    ++s.alarms[ref.alarms.empty() ? "none" : std::to_string(ref.alarms[0].number)];
+    if (out.verdict == "knife-edge") ++s.knife_edges[out.clause];
+    for (const Decision& d : ref.decisions) {
+      BranchCount& b = s.coverage[std::string(d.clause)][std::string(d.branch)];
+      ++b.taken;
+      double band = out.runs.tolerance.band(d.clause);
+      if (d.has_margin && band > 0 && std::fabs(margin_of(d)) <= band) ++b.knife;
+    }
+    if (out.verdict == "agree") {
+      ++s.error_bins[static_cast<std::size_t>(bin_of(out.error))];
+      ++s.ratio_bins[static_cast<std::size_t>(bin_of(out.ratio))];
+      if (out.error > s.max_error) s.max_error = out.error, s.max_error_case = fmt::format("{}/{}", o.seed, k);
+      s.max_ratio = std::max(s.max_ratio, out.ratio);
+    }
+    if (results.is_open())
+      results << nlohmann::json{{"case", k},
+                                {"source", src.name},
+                                {"style", c.style},
+                                {"verdict", out.verdict},
+                                {"clause", out.clause},
+                                {"error", out.error},
+                                {"ms", std::round(ms * 1000) / 1000}}
+                     .dump()
+              << "\n";
+    if (out.verdict == "diverge") {
+      std::string what = fmt::format("case {}/{}: {}", o.seed, k, out.explanation);
+      if (!o.corpus.empty()) {
+        ContourCase minimal = shrink(shrinkable, 2000);
+        std::string file =
+            write_corpus(o.corpus, fmt::format("case-{}-{}", o.seed, k), minimal, evaluate(minimal).explanation);
+        what += " -> " + file;
+      }
+      s.divergences.push_back(what);
+      if (o.progress) std::cerr << "\nunexplained divergence: " << what << "\n";
+      break;
+    }
+    if (o.progress && std::chrono::steady_clock::now() - last_print > std::chrono::milliseconds(500)) {
+      last_print = std::chrono::steady_clock::now();
+      double done = o.cases ? static_cast<double>(i + 1) / static_cast<double>(o.cases)
+                            : (o.seconds > 0 ? elapsed() / o.seconds : 0);
+      int filled = static_cast<int>(std::clamp(done, 0.0, 1.0) * 30);
+      std::cerr << fmt::format("\r[{:<30}] {} cases  {:.0f}/s  knife edges {}  divergences {}",
+                               std::string(static_cast<std::size_t>(filled), '#'), s.cases,
+                               static_cast<double>(s.cases) / std::max(elapsed(), 1e-9), s.verdicts["knife-edge"],
+                               s.divergences.size())
+                << std::flush;
+    }
+  }
+  s.seconds = elapsed();
+  if (o.progress) std::cerr << "\n";
+  return s;
+}
+
+nlohmann::json CampaignSummary::to_json() const {
+  nlohmann::json cov = nlohmann::json::object();
+  for (const auto& [clause, branches] : coverage)
+    for (const auto& [branch, n] : branches) cov[clause][branch] = {n.taken, n.knife};
+  return {{"format", "cutcom-certify/1"},
+          {"seed", seed},
+          {"shards", shards},
+          {"cases", cases},
+          {"seconds", seconds},
+          {"verdicts", verdicts},
+          {"knife_edges", knife_edges},
+          {"styles", styles},
+          {"alarms", alarms},
+          {"coverage", cov},
+          {"error_bins", error_bins},
+          {"ratio_bins", ratio_bins},
+          {"max_error", max_error},
+          {"max_ratio", max_ratio},
+          {"max_error_case", max_error_case},
+          {"divergences", divergences}};
+}
+
+CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
+  CampaignSummary s;
+  s.seed = j.at("seed").get<std::uint64_t>();
+  s.shards = j.at("shards").get<std::vector<std::string>>();
+  s.cases = j.at("cases").get<long>();
+  s.seconds = j.at("seconds").get<double>();
+  s.verdicts = j.at("verdicts").get<std::map<std::string, long>>();
+  s.knife_edges = j.at("knife_edges").get<std::map<std::string, long>>();
+  s.styles = j.at("styles").get<std::map<std::string, long>>();
+  s.alarms = j.at("alarms").get<std::map<std::string, long>>();
+  for (const auto& [clause, branches] : j.at("coverage").items())
+    for (const auto& [branch, n] : branches.items()) s.coverage[clause][branch] = {n[0].get<long>(), n[1].get<long>()};
+  s.error_bins = j.at("error_bins").get<std::vector<long>>();
+  s.ratio_bins = j.at("ratio_bins").get<std::vector<long>>();
+  s.max_error = j.at("max_error").get<double>();
+  s.max_ratio = j.at("max_ratio").get<double>();
+  s.max_error_case = j.at("max_error_case").get<std::string>();
+  s.divergences = j.at("divergences").get<std::vector<std::string>>();
+  return s;
+}
+
+void CampaignSummary::merge(const CampaignSummary& o) {
+  if (shards.empty()) seed = o.seed;
+  shards.insert(shards.end(), o.shards.begin(), o.shards.end());
+  cases += o.cases, seconds += o.seconds;
+  for (const auto& [k, v] : o.verdicts) verdicts[k] += v;
+  for (const auto& [k, v] : o.knife_edges) knife_edges[k] += v;
+  for (const auto& [k, v] : o.styles) styles[k] += v;
+  for (const auto& [k, v] : o.alarms) alarms[k] += v;
+  for (const auto& [clause, branches] : o.coverage)
+    for (const auto& [branch, n] : branches) {
+      BranchCount& b = coverage[clause][branch];
+      b.taken += n.taken, b.knife += n.knife;
+    }
+  for (std::size_t i = 0; i < error_bins.size(); ++i)
+    error_bins[i] += o.error_bins[i], ratio_bins[i] += o.ratio_bins[i];
+  if (o.max_error > max_error) max_error = o.max_error, max_error_case = o.max_error_case;
+  max_ratio = std::max(max_ratio, o.max_ratio);
+  divergences.insert(divergences.end(), o.divergences.begin(), o.divergences.end());
+}
+
+double CampaignSummary::error_percentile(double p, bool ratio) const {
+  const std::vector<long>& bins = ratio ? ratio_bins : error_bins;
+  long total = 0;
+  for (long n : bins) total += n;
+  if (total == 0) return 0;
+  long target = static_cast<long>(std::ceil(p * static_cast<double>(total))), seen = 0;
+  for (std::size_t i = 0; i < bins.size(); ++i) {
+    seen += bins[i];
+    if (seen >= target) return i == 0 ? 0.0 : std::pow(10.0, static_cast<double>(i) / 10.0 - 20);
+  }
+  return std::pow(10.0, -4.0);
+}
+
+}  // namespace cutcom::props

@@ -1,0 +1,69 @@
+// The certification campaign (`cutcom certify`, docs/certification.md): the differential
+// comparison of PROP-DIFF-1 over all generators at scale, in reproducible shards, with decision
+// coverage per clause and branch and the measured distribution of fast's coordinate error.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace cutcom::props {
+
+struct CampaignOptions {
+  long cases = 1000;       // cases to run in this shard (0: until `seconds`)
+  double seconds = 0;      // stop after this long (0: no limit)
+  std::uint64_t seed = 1;  // campaign seed: case k gets its own seed from (seed, k) whatever the sharding
+  int shard = 0, shards = 1;
+  std::string results;  // JSON lines, one per case (empty: none)
+  std::string corpus;   // where an unexplained divergence is written (empty: not written)
+  bool progress = true;
+};
+
+// Counts of one decision branch: taken, and taken with ref's margin inside the clause's band.
+struct BranchCount {
+  long taken = 0, knife = 0;
+};
+
+struct CampaignSummary {
+  std::uint64_t seed = 0;
+  std::vector<std::string> shards;  // "I/N" of each shard merged in
+  long cases = 0;
+  double seconds = 0;                                                  // summed over shards (CPU-bound: one core each)
+  std::map<std::string, long> verdicts;                                // agree, knife-edge, not-supported, diverge
+  std::map<std::string, long> knife_edges;                             // by clause
+  std::map<std::string, long> styles;                                  // by generator
+  std::map<std::string, long> alarms;                                  // by number ("none" without)
+  std::map<std::string, std::map<std::string, BranchCount>> coverage;  // clause -> branch
+  // Coordinate error of agreeing cases: log10 bins from 1e-20 mm (index 0: exactly 0), 10 per
+  // decade; and the error relative to the documented tolerance.
+  std::vector<long> error_bins = std::vector<long>(161, 0);
+  std::vector<long> ratio_bins = std::vector<long>(161, 0);
+  double max_error = 0, max_ratio = 0;
+  std::string max_error_case;            // "seed/k" of the case with the largest error
+  std::vector<std::string> divergences;  // unexplained: what, and the corpus file written
+
+  nlohmann::json to_json() const;
+  static CampaignSummary from_json(const nlohmann::json& j);
+  void merge(const CampaignSummary& other);
+  // Percentile p (0..1) of the error distribution (upper edge of the bin).
+  double error_percentile(double p, bool ratio = false) const;
+};
+
+// Runs the shard; stops at the first unexplained divergence (after shrinking it and writing it
+// to the corpus).
+CampaignSummary run_campaign(const CampaignOptions& options);
+
+// docs/certification.md and its error histogram (SVG), from a (merged) summary; `spec_dir` gives
+// the clause list for the coverage table.
+void write_report(const CampaignSummary& s, const std::string& markdown_path, const std::string& svg_path,
+                  const std::string& spec_dir);
+
+// Case k of a campaign: its program text and machine data (NAME=VALUE lines), to replay it.
+std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k);
+
+// The seed of case k of a campaign (splitmix64 of seed and k): shards agree on it.
+std::uint64_t case_seed(std::uint64_t seed, long k);
+
+}  // namespace cutcom::props
