@@ -138,3 +138,31 @@ TEST(Cli, SarVariablesInEveryFormat) {
   EXPECT_NE(s.out.find("side view"), std::string::npos);
 }
 }  // namespace
+
+namespace {
+// covers: CLI-2
+TEST(Cli, CertifyShardsMergeIntoTheReport) {
+  const std::string dir = CUTCOM_BINARY_DIR;
+  for (const char* shard : {"0/2", "1/2"}) {
+    Result r = sh(kCli + " certify --cases 15 --seed 3 --no-progress --shard " + shard + " --summary " + dir +
+                  "/shard" + shard[0] + ".json --results " + dir + "/results" + shard[0] + ".jsonl");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("15 cases"), std::string::npos) << r.out;
+  }
+  std::ifstream lines(dir + "/results1.jsonl");
+  std::string first;
+  std::getline(lines, first);
+  EXPECT_EQ(nlohmann::json::parse(first)["case"], 1);  // shard 1/2 runs cases 1, 3, 5, ...
+  Result m = sh(kCli + " certify --merge " + dir + "/shard0.json " + dir + "/shard1.json --report " + dir +
+                "/certification.md --spec " CUTCOM_SOURCE_DIR "/spec");
+  ASSERT_EQ(m.status, 0);
+  EXPECT_NE(m.out.find("30 cases"), std::string::npos) << m.out;
+  std::ifstream report(dir + "/certification.md");
+  std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("# Certification of fast against ref"), std::string::npos);
+  EXPECT_NE(text.find("| TRC-CORNER-1 |"), std::string::npos);
+  EXPECT_TRUE(std::ifstream(dir + "/certification-errors.svg").good());
+  // Case k is the same program whatever the sharding.
+  EXPECT_EQ(sh(kCli + " certify --seed 3 --show 7").out, sh(kCli + " certify --seed 3 --show 7").out);
+}
+}  // namespace
