@@ -63,7 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<cutcom::Block> blocks;
   cutcom::Block b;
   while (reader.next(b)) blocks.push_back(b);
-  auto tol = cutcom::props::Tolerance::for_program(cutcom::props::conditioning_of(blocks));
+  auto tol = cutcom::props::Tolerance::for_program(cutcom::props::conditioning_of(blocks, md.cutcom_maxnum_check_blocks));
   cutcom::props::Verdict v = cutcom::props::compare(r.result, f.result, tol);
   if (v.kind == cutcom::props::Verdict::Kind::kDiverge) {
     std::fprintf(stderr, "unexplained divergence: %s\n%s\n", v.explanation.c_str(), text.c_str());

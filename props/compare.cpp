@@ -20,8 +20,11 @@ double distance(const PathPoint& a, const PathPoint& b) {
 }
 }  // namespace
 
-Conditioning conditioning_of(const std::vector<Block>& program) {
+Conditioning conditioning_of(const std::vector<Block>& program, int window) {
   Conditioning c;
+  // End tangents of the last `window` traversing blocks: the look-ahead and CDON intersect a
+  // block's equidistant with a later one's, however parallel (edge-cases.md: look-ahead crossing).
+  std::vector<std::pair<double, double>> recent;
   double prev_a = 0, prev_b = 0;  // end tangent of the previous traversing block
   bool have_prev = false, prev_arc = false;
   for (const Block& b : program) {
@@ -74,6 +77,11 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
       scale = scale > 0 ? std::min(scale, radius) : radius;  // a full circle has no chord
     }
     if (scale > 0) c.shortest = std::min(c.shortest, scale);
+    for (std::size_t j = 0; j + 1 < recent.size(); ++j) {  // non-adjacent pairs; the adjacent one below
+      double pa = recent[j].first, pb = recent[j].second;
+      double sine = std::fabs(pa * tb - pb * ta) / (std::hypot(pa, pb) * std::hypot(ta, tb));
+      if (std::isfinite(sine)) c.crossing = std::max(c.crossing, 1 / std::max(sine, 1e-300));
+    }
     if (have_prev) {
       double cosine = (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb));
       if (std::isfinite(cosine)) c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
@@ -81,6 +89,8 @@ Conditioning conditioning_of(const std::vector<Block>& program) {
         c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
     }
     prev_a = ua, prev_b = ub, have_prev = true, prev_arc = b.is_arc();
+    recent.emplace_back(ua, ub);
+    if (static_cast<int>(recent.size()) > window + 1) recent.erase(recent.begin());
   }
   c.size = std::max(c.size, c.radius);
   return c;
@@ -131,12 +141,18 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     }
     // A crossing that touches a piece's end (TRC-CD-3, margin in the band) may be taken on either
     // piece at the joint: the engines then skip different blocks and hold different pieces after it.
+    // Likewise after carriers that just touch (an intersection of nearly tangent circles: the
+    // point moves by up to sqrt(band L) along them, and what is built on it with it).
     for (std::size_t k = 0; k < i; ++k) {
       const Decision& p = ref.decisions[k];
-      if (p.clause == "TRC-CD-3" && p.branch == "cut" && std::fabs(margin_value(p)) <= tol.band(p.clause)) {
+      bool touching_crossing = p.clause == "TRC-CD-3" && p.branch == "cut";
+      bool touching_carriers = (p.clause == "TRC-CD-2" && (p.branch == "g451-meets" || p.branch == "g451-misses")) ||
+                               p.clause == "TRC-ARC-CORNER-1";
+      if ((touching_crossing || touching_carriers) && p.has_margin &&
+          std::fabs(margin_value(p)) <= tol.band(p.clause)) {
         v.kind = Verdict::Kind::kKnifeEdge;
         v.clause = std::string(p.clause);
-        v.explanation = where + ", after a touching crossing";
+        v.explanation = where + (touching_crossing ? ", after a touching crossing" : ", after touching carriers");
         return v;
       }
     }

@@ -17,8 +17,11 @@ struct Conditioning {
   double radius = 0;    // |r|, mm
   double corner = 1;    // kappa: largest 1/(1 + cos phi) over the contour's corners
   double crossing = 1;  // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
+                        // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
 };
-Conditioning conditioning_of(const std::vector<Block>& program);
+// `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)
+// may intersect two blocks' equidistants.
+Conditioning conditioning_of(const std::vector<Block>& program, int window = 5);
 
 struct Tolerance {
   double coordinate;  // mm

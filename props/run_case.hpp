@@ -56,7 +56,7 @@ inline CaseRuns run_case(const ContourCase& c, bool exact_checks) {
   std::vector<Block> blocks;
   Block b;
   while (reader.next(b)) blocks.push_back(b);
-  out.tolerance = Tolerance::for_program(conditioning_of(blocks));
+  out.tolerance = Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks));
   return out;
 }
 

@@ -85,6 +85,12 @@ RC_GTEST_PROP(Sar, ElementIsTangentAtP4AndFollowsDisr, ()) {
          r.ref.path[next].type == ElementType::kLine)
     ++next;  // infeeds of blocks without motion in the plane
   if (next == r.ref.path.size()) return;
+  // The contour's own equidistant must follow (not a cut by collision detection or a skip).
+  const PathElement& after = r.ref.path[next];
+  if (after.origin.kind != OriginKind::kOffset || after.origin.sar != SarMove::kNone) {
+    RC_TAG("element followed by a cut or a skip");
+    return;
+  }
   V2 d1 = direction(el, ax, true), d2 = direction(r.ref.path[next], ax, false);
   RC_TAG("tangent checked");
   RC_ASSERT(d1.a * d2.a + d1.b * d2.b >= 1 - 1e-9);

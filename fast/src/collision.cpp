@@ -47,9 +47,12 @@ bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry&
     bool found = true;
     if (!prev.arc && !next.arc)
       x = Element::offset(prev.end, prev.unit, sr) - corner_trim(c, s, r) * prev.unit;
-    else
-      found = nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, en.radius), prev.end,
-                                   next.start_tangent(), x);
+    else {
+      Carrier u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
+      found = nearest_intersection(u, v, prev.end, next.start_tangent(), x);
+      // The carriers may just touch: the margin is their gap (a knife edge at 0).
+      decide("TRC-CD-2", m.line, found ? "g451-meets" : "g451-misses", carrier_gap(u, v));
+    }
     if (found) {
       en.own_start = x;
       en.lead = Entry::Lead::kExtension;
@@ -75,7 +78,9 @@ bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry&
     return false;
   }
   double left = extent_of(next, en.radius, x).left;
-  decide("TRC-CD-2", m.line, left < 0 ? "no-entry" : "entry", left);
+  // With circles the entry also hinges on the carriers meeting at all: the nearer threshold.
+  double margin = left >= 0 && (u.circle || v.circle) ? std::min(left, std::fabs(carrier_gap(u, v))) : left;
+  decide("TRC-CD-2", m.line, left < 0 ? "no-entry" : "entry", margin);
   if (left < 0) return false;
   en.own_start = x;
   en.pieces[en.count++] = equidistant_from(x, false);

@@ -67,7 +67,15 @@ std::optional<Reference::Entry> Reference::entry_of(const Block& m, const Block&
   }
   Extent reach = extent_of(next, en.radius, *x);
   bool beyond = reach.after_end == CGAL::NEGATIVE;
-  decide("TRC-CD-2", line, beyond ? "no-entry" : "entry", reach.left_text);
+  // The entry hinges on two thresholds with circles: that the carriers meet at all (their gap)
+  // and that the intersection lies before the end; the margin is the nearer one.
+  std::string margin = reach.left_text;
+  if (!beyond && (u.circle || v.circle)) {
+    FT gap = carrier_gap<Kernel>(u, v);
+    if (std::fabs(rough(gap)) * 1e-9 < std::strtod(reach.left_text.c_str(), nullptr))
+      margin = exact_mm(-gap);  // units -> mm
+  }
+  decide("TRC-CD-2", line, beyond ? "no-entry" : "entry", margin);
   if (beyond) return std::nullopt;
   en.own_start = *x;
   en.pieces.push_back(equidistant_from(*x, false));
@@ -85,8 +93,10 @@ bool Reference::outer_corner_is_circle(const Block& m, const ContourElement& pre
     g451_point_ = corner_intersection<Kernel>(prev.b, prev.normal, prev.d, prev.length, comp_->side_radius, trim);
     return false;
   }
-  g451_point_ =
-      nearest_intersection(carrier_of(prev, prev_radius), carrier_of(next, next_radius), prev.b, next.start_dir);
+  Carrier<Kernel> u = carrier_of(prev, prev_radius), v = carrier_of(next, next_radius);
+  g451_point_ = nearest_intersection(u, v, prev.b, next.start_dir);
+  // The carriers may just touch: the margin is their gap (a knife edge at 0).
+  decide("TRC-CD-2", m.words.line, g451_point_ ? "g451-meets" : "g451-misses", exact_mm(carrier_gap<Kernel>(u, v)));
   return !g451_point_;
 }
 
