@@ -80,7 +80,9 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window) {
     for (std::size_t j = 0; j + 1 < recent.size(); ++j) {  // non-adjacent pairs; the adjacent one below
       double pa = recent[j].first, pb = recent[j].second;
       double sine = std::fabs(pa * tb - pb * ta) / (std::hypot(pa, pb) * std::hypot(ta, tb));
-      if (std::isfinite(sine)) c.crossing = std::max(c.crossing, 1 / std::max(sine, 1e-300));
+      // Exactly parallel blocks have no intersection to compute (programmed directions are
+      // multiples of each other): they do not count.
+      if (std::isfinite(sine) && sine > 0) c.crossing = std::max(c.crossing, 1 / sine);
     }
     if (have_prev) {
       double cosine = (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb));
