@@ -109,6 +109,28 @@ std::string to_program(const ContourCase& c) {
   return p;
 }
 
+ContourCase reversed_contour(const ContourCase& c) {
+  ContourCase r = c;
+  r.right = !c.right;
+  std::int64_t ex = c.first_x, ey = c.first_y;
+  for (const Step& s : c.steps) ex += s.dx, ey += s.dy;
+  r.start_x = c.end_x, r.start_y = c.end_y, r.first_x = ex, r.first_y = ey, r.end_x = c.start_x, r.end_y = c.start_y;
+  r.kont_select = c.kont_deselect, r.kont_deselect = c.kont_select;
+  r.g451_select = c.g451_deselect, r.g451_deselect = c.g451_select;
+  r.edge_select = c.edge_deselect, r.edge_deselect = c.edge_select;
+  r.steps.clear();
+  for (std::size_t k = c.steps.size(); k-- > 0;) {
+    const Step& s = c.steps[k];
+    Step t = s;
+    t.dx = -s.dx, t.dy = -s.dy;
+    if (s.arc) t.ccw = !s.ccw, t.ci = s.ci - s.dx, t.cj = s.cj - s.dy;  // the same centre, from the other end
+    // The corner (k, k+1) is decided by the mode of its second block, k+1; backwards that is k.
+    t.g451 = k + 1 < c.steps.size() ? c.steps[k + 1].g451 : s.g451;
+    r.steps.push_back(t);
+  }
+  return r;
+}
+
 void showValue(const ContourCase& c, std::ostream& os) {
   os << "style " << c.style << ", MD20210=" << c.md20210 << " MD20230=" << c.md20230 << " MD20240=" << c.md20240 << "\n"
      << to_program(c);

@@ -61,6 +61,10 @@ struct ContourCase {
 std::string to_program(const ContourCase& c);
 std::string fixed(std::int64_t units, int decimals);  // fixed(12345, 3) = "12.345"
 
+// The same contour run backwards (PROP-META-6, PROP-SAR-3): side swapped, start and end
+// positions swapped, the approach and retraction settings swapped, circles about the same centre.
+ContourCase reversed_contour(const ContourCase& c);
+
 void showValue(const ContourCase& c, std::ostream& os);
 
 }  // namespace cutcom::props

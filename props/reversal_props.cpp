@@ -10,28 +10,6 @@
 namespace cutcom::props {
 namespace {
 
-ContourCase reversed(const ContourCase& c) {
-  ContourCase r = c;
-  r.right = !c.right;
-  std::int64_t ex = c.first_x, ey = c.first_y;
-  for (const Step& s : c.steps) ex += s.dx, ey += s.dy;
-  r.start_x = c.end_x, r.start_y = c.end_y, r.first_x = ex, r.first_y = ey, r.end_x = c.start_x, r.end_y = c.start_y;
-  r.kont_select = c.kont_deselect, r.kont_deselect = c.kont_select;
-  r.g451_select = c.g451_deselect, r.g451_deselect = c.g451_select;
-  r.edge_select = c.edge_deselect, r.edge_deselect = c.edge_select;
-  r.steps.clear();
-  for (std::size_t k = c.steps.size(); k-- > 0;) {
-    const Step& s = c.steps[k];
-    Step t = s;
-    t.dx = -s.dx, t.dy = -s.dy;
-    if (s.arc) t.ccw = !s.ccw, t.ci = s.ci - s.dx, t.cj = s.cj - s.dy;  // the same centre, from the other end
-    // The corner (k, k+1) is decided by the mode of its second block, k+1; backwards that is k.
-    t.g451 = k + 1 < c.steps.size() ? c.steps[k + 1].g451 : s.g451;
-    r.steps.push_back(t);
-  }
-  return r;
-}
-
 // covers: PROP-META-6 TRC-KONT-1 TRC-KONT-3 TRC-KONT-4 TRC-APPR-NORM-1 TRC-RETR-NORM-1
 RC_GTEST_PROP(Metamorphic, ReversingTheContourSwapsApproachAndRetraction, ()) {
   ContourCase c = *around_ends();
@@ -49,13 +27,14 @@ RC_GTEST_PROP(Metamorphic, ReversingTheContourSwapsApproachAndRetraction, ()) {
   int deselection_line = 5 + static_cast<int>(c.steps.size());  // $TC lines, N10, N20, the steps
   std::optional<std::string> why;
   try {
-    why = ref::exact_reversal_mismatch(to_program(c), to_program(reversed(c)), machine_data_of(c), 4, deselection_line);
+    why = ref::exact_reversal_mismatch(to_program(c), to_program(reversed_contour(c)), machine_data_of(c), 4,
+                                       deselection_line);
   } catch (const UnsupportedError&) {  // TRC-UNSUP-1: not comparable
     RC_TAG("not supported");
     return;
   }
   RC_TAG(why ? "compared" : "alarm");
-  if (why && !why->empty()) RC_FAIL(*why + "\nreversed program:\n" + to_program(reversed(c)));
+  if (why && !why->empty()) RC_FAIL(*why + "\nreversed program:\n" + to_program(reversed_contour(c)));
 }
 
 }  // namespace

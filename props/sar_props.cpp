@@ -140,19 +140,7 @@ RC_GTEST_PROP(Sar, InfeedIsMonotoneOrAlarm10741, ()) {
 // The same contour backwards with the approach turned into a retraction (SAR-POINTS-2, ruling
 // 14): compensation side swapped, G141 <-> G142, the start position the retraction's end point.
 ContourCase mirrored(const ContourCase& c) {
-  ContourCase r = c;
-  r.right = !c.right;
-  std::int64_t ex = c.first_x, ey = c.first_y;
-  for (const Step& s : c.steps) ex += s.dx, ey += s.dy;
-  r.start_x = c.end_x, r.start_y = c.end_y, r.first_x = ex, r.first_y = ey, r.end_x = c.start_x, r.end_y = c.start_y;
-  r.steps.clear();
-  for (std::size_t k = c.steps.size(); k-- > 0;) {
-    const Step& s = c.steps[k];
-    Step t = s;
-    t.dx = -s.dx, t.dy = -s.dy;
-    if (s.arc) t.ccw = !s.ccw, t.ci = s.ci - s.dx, t.cj = s.cj - s.dy;
-    r.steps.push_back(t);
-  }
+  ContourCase r = reversed_contour(c);
   SarEnds& m = r.sar;
   m.approach = false, m.retraction = true;
   m.contour_out = c.sar.contour_in + 1;
@@ -160,7 +148,6 @@ ContourCase mirrored(const ContourCase& c) {
   m.seg_out = c.sar.seg_in, m.disr_out = c.sar.disr_in;
   m.discl_out = c.sar.discl_in, m.discl_out_ac = c.sar.discl_in_ac, m.discl_out_v = c.sar.discl_in_v;
   m.end_case = 3, m.end_h = c.sar.start_h, m.deselect = true;
-  r.edge_select = c.edge_deselect, r.edge_deselect = c.edge_select;  // G460-G462 mirror too (ruling 23)
   return r;
 }
 
