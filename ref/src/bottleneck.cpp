@@ -14,7 +14,7 @@ PathPiece PathPiece::circle(const Point& from, const Point& to, const Point& cen
                             bool full_turn) {
   PathPiece p;
   p.arc = true, p.a = from, p.b = to, p.centre = centre, p.radius = radius, p.sense = sense;
-  p.sweep = full_turn ? ExactAngle::full_turn() : ExactAngle::rotation(from - centre, to - centre, sense);
+  p.full_turn = full_turn;
   return p;
 }
 
@@ -38,23 +38,29 @@ bool approx_less(const FT& a, const FT& b) { return rough(a) < rough(b); }
 // the distance to the nearer end (along a segment, the chord at a circle), negative off it.
 struct OnPiece {
   bool on = false;
-  FT slack, line_position;
-  ExactAngle arc_position;
+  FT slack, line_position;  // line_position: times the segment's length
+  CirclePosition arc_position;
 };
 OnPiece locate(const PathPiece& piece, const Point& p) {
   OnPiece o;
   if (!piece.arc) {
     Vector d = piece.b - piece.a;
     FT length = exact_root(d.squared_length());
-    FT along = (p - piece.a) * d / length, left = length - along;
-    o.line_position = along;
-    o.on = CGAL::sign(along) != CGAL::NEGATIVE && CGAL::sign(left) != CGAL::NEGATIVE;
-    o.slack = approx_less(along, left) ? along : left;
-    if (!o.on && CGAL::sign(o.slack) != CGAL::NEGATIVE) o.slack = CGAL::sign(along) == CGAL::NEGATIVE ? along : left;
+    // Signs on the lengths times |d| (no square root in the exact zero tests).
+    FT along_d = (p - piece.a) * d, left_d = d * d - along_d;
+    CGAL::Sign along_sign = CGAL::sign(along_d), left_sign = CGAL::sign(left_d);
+    FT along = along_d / length, left = left_d / length;
+    o.line_position = along_d;
+    o.on = along_sign != CGAL::NEGATIVE && left_sign != CGAL::NEGATIVE;
+    if (o.on)
+      o.slack = approx_less(along, left) ? along : left;
+    else
+      o.slack = along_sign == CGAL::NEGATIVE ? along : left;
     return o;
   }
-  o.arc_position = ExactAngle::rotation(piece.a - piece.centre, p - piece.centre, piece.sense);
-  o.on = (piece.sweep + -o.arc_position).sign() != CGAL::NEGATIVE;
+  CircleFrame f = piece.frame();
+  o.arc_position = f.at(p - piece.centre);
+  o.on = piece.full_turn || f.compare(o.arc_position, f.at(piece.b - piece.centre)) != CGAL::POSITIVE;
   FT to_a = exact_root(CGAL::squared_distance(p, piece.a)), to_b = exact_root(CGAL::squared_distance(p, piece.b));
   FT nearer = approx_less(to_a, to_b) ? to_a : to_b;
   o.slack = o.on ? nearer : -nearer;
@@ -63,7 +69,7 @@ OnPiece locate(const PathPiece& piece, const Point& p) {
 
 CGAL::Sign later(const PathPiece& piece, const OnPiece& p, const OnPiece& q) {
   if (!piece.arc) return CGAL::sign(p.line_position - q.line_position);
-  return (p.arc_position + -q.arc_position).sign();
+  return piece.frame().compare(p.arc_position, q.arc_position);
 }
 }  // namespace
 

@@ -7,23 +7,24 @@
 #include <vector>
 
 #include "equidistant.hpp"
-#include "exact_angle.hpp"
+#include "circle_position.hpp"
 
 namespace cutcom::ref {
 
 // A piece of the tool-centre path in the plane: a segment from a to b, or a circle about `centre`
-// from a through `sweep` in the sense `sense` (a full turn when a = b).
+// from a to b in the sense `sense` (a full turn when `full_turn`).
 struct PathPiece {
   bool arc = false;
   Point a, b, centre;
   FT radius;
   int sense = 1;
-  ExactAngle sweep;
+  bool full_turn = false;
 
   static PathPiece segment(const Point& from, const Point& to);
   static PathPiece circle(const Point& from, const Point& to, const Point& centre, const FT& radius, int sense,
                           bool full_turn = false);
   Carrier<Kernel> carrier() const;
+  CircleFrame frame() const { return {a - centre, sense}; }
 };
 
 // Where the entry meets a held piece: the earliest point along the held piece on both, which

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "exact_angle.hpp"
+#include "circle_position.hpp"
 #include "exact_path.hpp"
 #include "exact_root.hpp"
 
@@ -13,9 +13,12 @@ namespace {
 
 using Segment = Kernel::Segment_2;
 
-// Is the direction v within the circle piece from a through `sweep` (about c, sense `sense`)?
-bool within(const Point& c, const Point& a, const ExactAngle& sweep, int sense, const Vector& v) {
-  return (sweep + -ExactAngle::rotation(a - c, v, sense)).sign() != CGAL::NEGATIVE;
+// Is the direction v within the circle piece from a to b (about c, sense `sense`; a full turn
+// when a = b)?
+bool within(const Point& c, const Point& a, const Point& b, int sense, const Vector& v) {
+  if (a == b) return true;
+  CircleFrame f(a - c, sense);
+  return f.compare(f.at(v), f.at(b - c)) != CGAL::POSITIVE;
 }
 
 // At least `r` between a circular piece (about c, radius rho, from a to b) and segment pq? The
@@ -23,14 +26,13 @@ bool within(const Point& c, const Point& a, const ExactAngle& sweep, int sense, 
 // q, or where the circle's normal is the segment's.
 bool arc_clear(const Point& c, const FT& rho, const Point& a, const Point& b, int sense, const Segment& pq,
                const FT& r) {
-  ExactAngle sweep = a == b ? ExactAngle::full_turn() : ExactAngle::rotation(a - c, b - c, sense);
   FT r2 = r * r;
   if (CGAL::compare(CGAL::squared_distance(a, pq), r2) == CGAL::SMALLER) return false;
   if (CGAL::compare(CGAL::squared_distance(b, pq), r2) == CGAL::SMALLER) return false;
   for (const Point& q : {pq.source(), pq.target()}) {
     if (q == c) continue;
     FT gap = exact_root(CGAL::squared_distance(q, c)) - rho;
-    if (within(c, a, sweep, sense, q - c) && CGAL::compare(gap * gap, r2) == CGAL::SMALLER) return false;
+    if (within(c, a, b, sense, q - c) && CGAL::compare(gap * gap, r2) == CGAL::SMALLER) return false;
   }
   Vector d = pq.target() - pq.source();
   FT length = exact_root(d.squared_length());
@@ -38,7 +40,7 @@ bool arc_clear(const Point& c, const FT& rho, const Point& a, const Point& b, in
   for (int k : {1, -1}) {
     Point u = c + n * (FT(k) * rho);
     FT t = (u - pq.source()) * d;  // the foot of u lies on pq for 0 <= t <= |d|^2
-    if (!within(c, a, sweep, sense, u - c) || CGAL::sign(t) == CGAL::NEGATIVE ||
+    if (!within(c, a, b, sense, u - c) || CGAL::sign(t) == CGAL::NEGATIVE ||
         CGAL::compare(t, d.squared_length()) == CGAL::LARGER)
       continue;
     if (CGAL::compare(CGAL::squared_distance(u, pq.supporting_line()), r2) == CGAL::SMALLER) return false;
@@ -51,7 +53,7 @@ bool arc_clear(const Point& c, const FT& rho, const Point& a, const Point& b, in
     FT t = foot + FT(k) * half;
     if (CGAL::sign(t) == CGAL::NEGATIVE || CGAL::compare(t, length) == CGAL::LARGER) continue;
     Point x = pq.source() + d * (t / length);
-    if (within(c, a, sweep, sense, x - c)) return false;
+    if (within(c, a, b, sense, x - c)) return false;
   }
   return true;
 }

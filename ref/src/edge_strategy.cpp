@@ -1,6 +1,6 @@
 #include "edge_strategy.hpp"
 
-#include "exact_angle.hpp"
+#include "circle_position.hpp"
 #include "exact_root.hpp"
 
 namespace cutcom::ref {
@@ -16,7 +16,8 @@ bool on_curve(const EdgeCurve& c, const Point& p) {
 // Signed position of p relative to q along element e's equidistant (> 0: p comes later).
 CGAL::Sign compare_along(const ContourElement& e, const Point& p, const Point& q) {
   if (!e.is_arc()) return CGAL::sign((p - q) * e.d);
-  return ExactAngle::signed_rotation(q - e.centre, p - e.centre, e.sense).sign();
+  CircleFrame f(q - e.centre, e.sense);
+  return f.compare(f.signed_from(f.start(), p - e.centre), f.start());
 }
 }  // namespace
 
@@ -76,7 +77,8 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
   Point start = from ? *from : equidistant_point<Kernel>(e.a, e.start_normal(), side_radius);
   Point end = equidistant_point<Kernel>(e.b, e.end_normal(), side_radius);
   std::optional<FT> best_margin, none_margin;
-  std::optional<ExactAngle> best_position;
+  CircleFrame frame(e.a - e.centre, e.sense);  // arcs: positions from the programmed start
+  std::optional<CirclePosition> best_position;
   for (const Point& p : xs) {
     std::optional<FT> m = depth;
     if (!curve.carrier.circle) {
@@ -88,20 +90,17 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
     // Where p lies on the piece from `start` to the normal end: lines by length, circles by
     // the rotation in [0, 2 pi) from `start` in the circle's sense.
     bool on_piece;
-    std::optional<ExactAngle> position;
+    std::optional<CirclePosition> position;
     if (!e.is_arc()) {
       FT along = (p - start) * e.d / e.length, left = (end - p) * e.d / e.length;
-      on_piece = CGAL::sign(along) != CGAL::NEGATIVE && CGAL::sign(left) != CGAL::NEGATIVE;
+      on_piece = CGAL::sign((p - start) * e.d) != CGAL::NEGATIVE && CGAL::sign((end - p) * e.d) != CGAL::NEGATIVE;
       least(m, along), least(m, left);
     } else {
-      Vector f = start - e.centre;
       // What is left of the circle after `start`, as close_open measures it: the sweep less the
       // (signed) rotation already cut at the start; more than a turn after a G451 extension.
-      ExactAngle room =
-          e.full_circle ? ExactAngle::full_turn() : ExactAngle::rotation(e.a - e.centre, e.b - e.centre, e.sense);
-      if (from) room = room + -ExactAngle::signed_rotation(e.a - e.centre, f, e.sense);
-      position = ExactAngle::rotation(f, p - e.centre, e.sense);
-      on_piece = (room + -*position).sign() != CGAL::NEGATIVE;
+      CirclePosition first = from ? frame.signed_from(frame.start(), start - e.centre) : frame.start();
+      position = frame.forward_from(first, p - e.centre);
+      on_piece = frame.compare(frame.end(e.b - e.centre, e.full_circle), *position) != CGAL::NEGATIVE;
       FT to_start = exact_root(CGAL::squared_distance(p, start)), to_end = exact_root(CGAL::squared_distance(p, end));
       if (on_piece) {
         least(m, to_start), least(m, to_end);
@@ -116,7 +115,7 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
     }
     bool better = !out.point;
     if (!better) {
-      CGAL::Sign later = position ? (*position + -*best_position).sign() : compare_along(e, p, *out.point);
+      CGAL::Sign later = position ? frame.compare(*position, *best_position) : compare_along(e, p, *out.point);
       better = later == (last ? CGAL::POSITIVE : CGAL::NEGATIVE);
     }
     if (better) out.point = p, best_margin = m, best_position = position;

@@ -177,20 +177,18 @@ bool Reference::close_open(const Point& end_point, const Block& reporting, bool 
   CGAL::Sign sign;
   std::string margin;
   if (!e.is_arc()) {
-    FT left = (end_point - open_start_) * e.d / e.length;  // signed length along the block
-    sign = CGAL::sign(left);
-    margin = exact_mm(left);
+    FT left = (end_point - open_start_) * e.d;  // signed length along the block, times |d|
+    sign = CGAL::sign(left);                     // without the square root: a cheaper exact zero
+    margin = exact_mm(left / e.length);
   } else {
-    // Sweep of the programmed circle, less the rotation already cut at the start, plus the
-    // (negative) rotation cut at the end.
-    ExactAngle sweep =
-        e.full_circle ? ExactAngle::full_turn() : ExactAngle::rotation(e.a - e.centre, e.b - e.centre, e.sense);
-    ExactAngle left = sweep;
-    if (!open_at_normal_start_)
-      left = left + -ExactAngle::signed_rotation(e.a - e.centre, open_start_ - e.centre, e.sense);
-    if (!at_normal_end) left = left + ExactAngle::signed_rotation(e.b - e.centre, end_point - e.centre, e.sense);
-    sign = left.sign();
-    margin = arc_length_text(left, open_radius_);
+    // Positions on the programmed circle from its start: the cut start (a signed rotation from
+    // the normal start) and the cut end (a signed rotation from the normal end, after the sweep).
+    CircleFrame f(e.a - e.centre, e.sense);
+    CirclePosition from = open_at_normal_start_ ? f.start() : f.signed_from(f.start(), open_start_ - e.centre);
+    CirclePosition to = f.end(e.b - e.centre, e.full_circle);
+    if (!at_normal_end) to = f.signed_from(to, end_point - e.centre);
+    sign = f.compare(to, from);
+    margin = f.length_text(from, to, open_radius_);
   }
   std::string_view clause = e.is_arc() ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
   if (sign == CGAL::NEGATIVE) {
@@ -308,19 +306,18 @@ Reference::Extent Reference::extent_of(const ContourElement& e, const FT& radius
   Extent x;
   if (!e.is_arc()) {
     Point start = equidistant_point<Kernel>(e.a, e.normal, comp_->side_radius);
-    FT along = (p - start) * e.d / e.length;
-    FT left = e.length - along;
-    x.before_start = CGAL::sign(along), x.after_end = CGAL::sign(left);
-    x.start_nearer = CGAL::compare(along, left) == CGAL::SMALLER;
-    x.along_text = exact_mm(along), x.left_text = exact_mm(left);
+    // Signs on the lengths times |d| (no square root in the exact zero tests).
+    FT along_d = (p - start) * e.d, left_d = e.d * e.d - along_d;
+    x.before_start = CGAL::sign(along_d), x.after_end = CGAL::sign(left_d);
+    x.start_nearer = CGAL::compare(along_d, left_d) == CGAL::SMALLER;
+    x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
   } else {
-    ExactAngle sweep =
-        e.full_circle ? ExactAngle::full_turn() : ExactAngle::rotation(e.a - e.centre, e.b - e.centre, e.sense);
-    ExactAngle along = ExactAngle::signed_rotation(e.a - e.centre, p - e.centre, e.sense);
-    ExactAngle left = sweep + -along;
-    x.before_start = along.sign(), x.after_end = left.sign();
-    x.start_nearer = (along + -left).sign() == CGAL::NEGATIVE;
-    x.along_text = arc_length_text(along, radius), x.left_text = arc_length_text(left, radius);
+    CircleFrame f(e.a - e.centre, e.sense);
+    CirclePosition start = f.start(), at = f.signed_from(start, p - e.centre);
+    CirclePosition end = f.end(e.b - e.centre, e.full_circle);
+    x.before_start = f.compare(at, start), x.after_end = f.compare(end, at);
+    x.start_nearer = std::fabs(f.radians(start, at)) < std::fabs(f.radians(at, end));  // picks a margin only
+    x.along_text = f.length_text(start, at, radius), x.left_text = f.length_text(at, end, radius);
   }
   return x;
 }

@@ -18,7 +18,7 @@
 #include "cutcom/sar_sequence.hpp"
 #include "edge_strategy.hpp"
 #include "equidistant.hpp"
-#include "exact_angle.hpp"
+#include "circle_position.hpp"
 #include "exact_path.hpp"
 #include "exact_root.hpp"
 #include "held_output.hpp"
