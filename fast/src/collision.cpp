@@ -97,9 +97,9 @@ PathPiece Engine::State::piece_of(const HeldRecord& rec) const {
 PathPiece Engine::State::open_piece() const {
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!open_el.arc) return PathPiece::segment(open_start, end);
-  Vec2 normal_start = Element::offset(open_el.start, open_el.start_tangent(), s * r);
-  bool full = open_el.full && open_start.a == normal_start.a && open_start.b == normal_start.b;
-  return PathPiece::circle(open_start, end, open_el.centre, open_radius, open_el.sense, full);
+  // A full circle is whole when it was opened at its normal start (as ref's exact equality).
+  return PathPiece::circle(open_start, end, open_el.centre, open_radius, open_el.sense,
+                           open_el.full && open_at_normal_start);
 }
 
 bool Engine::State::is_candidate(const HeldRecord& rec) {
@@ -191,7 +191,8 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
 
 void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
   bool on_lead = en.lead != Entry::Lead::kNone && entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
-  if (!on_lead) return open_element(m, en.element, x, en.radius);
+  if (!on_lead)
+    return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
   double hv = h(m.start);
   BlockCopy owner = m;
   Origin named;
@@ -199,7 +200,7 @@ void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entr
   if (en.lead == Entry::Lead::kCircle) {
     named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
     arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
-    return open_element(owner, en.element, en.normal_start, en.radius);
+    return open_element(owner, en.element, en.normal_start, en.radius, true);
   }
   // The rest of the predecessor's extended equidistant, at m's applicate, named after it.
   named.kind = OriginKind::kOffset;

@@ -50,7 +50,7 @@ void Engine::State::approach(const Block& b) {
     approach_dummies[static_cast<std::size_t>(i)] = dummies[static_cast<std::size_t>(i)];
   approach_dummy_count = dummy_count;
   dummy_count = 0;
-  open_element(first, e, q, radius);
+  open_element(first, e, q, radius, true);
   phase = Phase::kActive;
 }
 
@@ -127,7 +127,7 @@ void Engine::State::approach_around(const BlockCopy& first, const Element& e, do
     Vec2 q = Element::offset(k.vertex, e.start_tangent(), s * r);
     Origin corner = origin(selection, OriginKind::kTransitionCircle);
     corner.next_line = first.line, corner.next_block = first.number;
-    open_element(first, e, q, radius);
+    open_element(first, e, q, radius, true);
     double h1 = h(first.start);                                                      // after the held-back blocks
     if (r > 0) arc(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
   } else {                                                                           // TRC-KONT-4
@@ -264,7 +264,7 @@ void Engine::State::deselect(const Block& b) {
     if (stopped) return;
   }
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, last.line, last.number)) return;
+  if (!close_open(end, last.line, last.number, true)) return;
   run_dummies(end);
   retraction_line(last, end);
 }
@@ -289,7 +289,7 @@ void Engine::State::retract_around(BlockCopy& last, const Kont& k) {
     Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
     Origin corner = origin(open, OriginKind::kTransitionCircle);
     corner.next_line = last.line, corner.next_block = last.number;
-    if (!close_open(from, last.line, last.number)) return;
+    if (!close_open(from, last.line, last.number, true)) return;
     run_dummies(from);
     double hv = h(last.start);
     if (r > 0) arc(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
@@ -316,7 +316,7 @@ void Engine::State::end_of_program() {
     decide("TRC-END-1", open.line, "active-at-end");
     sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-    if (!close_open(end, open.line, open.number)) return;
+    if (!close_open(end, open.line, open.number, true)) return;
     run_dummies(end);
   }
   phase = Phase::kOff;

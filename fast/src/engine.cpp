@@ -45,7 +45,7 @@ void Engine::State::change_side(const Block& b) {
   }
   decide("TRC-SIDE-1", b.words.line, "side-change");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, b.words.line, b.words.number)) return;
+  if (!close_open(end, b.words.line, b.words.number, true)) return;
   run_dummies(end);
   PathPoint tool = xyz(end, h(copy_of(b).start));
   select(b);
@@ -114,7 +114,7 @@ void Engine::State::run_dummies_uncompensated() {
 }
 
 bool Engine::State::close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block,
-                               const Candidate* candidate) {
+                               bool at_normal_end, const Candidate* candidate) {
   const Element& e = open_el;
   double margin;
   if (!e.arc) {
@@ -146,6 +146,9 @@ bool Engine::State::close_open(Vec2 end_point, int alarm_line, std::optional<std
   if (!e.arc) {
     line(open, from, to, OriginKind::kOffset, open.rapid);
   } else {
+    // A whole full circle ends where it starts, exactly (ref's start and end are the same point;
+    // an ulp apart the arc would read as a sliver or as nearly a full turn).
+    if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end));
     arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
   }
   return true;
@@ -185,10 +188,12 @@ bool Engine::State::equidistant_exists(const Block& b, const Element& e, double&
   return radius > 0;
 }
 
-void Engine::State::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius) {
+void Engine::State::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius,
+                                 bool at_normal_start) {
   open = b;
   open_el = e;
   open_start = start;
+  open_at_normal_start = at_normal_start;
   open_radius = radius;
 }
 
@@ -255,9 +260,9 @@ void Engine::State::corner(const Block& b, const BlockCopy& copy) {
     if (too_short) return start_look_ahead(b);
   }
   Candidate cand{&copy, &next, next_radius};
-  if (!close_open(x, b.words.line, b.words.number, &cand)) return;
+  if (!close_open(x, b.words.line, b.words.number, c.kind == Corner::Kind::kTangent, &cand)) return;
   run_dummies(x);
-  open_element(copy, next, x, next_radius);
+  open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
 }
 
 bool Engine::State::outer_corner_circle(int line_no, bool g451, const Corner& c, bool traced) {
@@ -333,7 +338,7 @@ void Engine::State::look_ahead(const Block& b, const BlockCopy* current) {
   if (!valid) return pass_over(c);
   looking = false;
   Candidate candidate{&c, &cand, radius};
-  if (!close_open(y, b.words.line, b.words.number, &candidate)) return;
+  if (!close_open(y, b.words.line, b.words.number, false, &candidate)) return;
   for (BlockCopy& d : skipped) skip_at(d, y);
   skipped.clear();
   open_element(c, cand, y, radius);
@@ -346,11 +351,11 @@ void Engine::State::skip_at(BlockCopy& k, Vec2 at) {
 
 void Engine::State::transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
   Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
-  if (!close_open(from, b.line, b.number)) return;
+  if (!close_open(from, b.line, b.number, true)) return;
   run_dummies(from);
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
   Origin corner = origin(open, OriginKind::kTransitionCircle);
-  open_element(b, next, to, next_radius);
+  open_element(b, next, to, next_radius, true);
   corner.next_line = open.line, corner.next_block = open.number;
   if (r > 0) {  // TRC-G450-2: no circle for a zero radius
     double hv = h(open.start);

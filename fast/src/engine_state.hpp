@@ -119,6 +119,7 @@ struct Engine::State {
   BlockCopy open;
   Element open_el;
   Vec2 open_start;         // start point of its equidistant (after the previous corner)
+  bool open_at_normal_start = false;  // opened at its normal start by construction (a full circle stays whole)
   double open_radius = 0;  // arcs: radius of its equidistant
   // Blocks without motion in the plane since the last traversing block (fixed capacity).
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
@@ -294,7 +295,8 @@ struct Engine::State {
     const Element* element;
     double radius;
   };
-  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block,
+  // at_normal_end: end_point is the normal end by construction (as ref's close_open).
+  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block, bool at_normal_end = false,
                   const Candidate* candidate = nullptr);
 
   // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
@@ -311,7 +313,7 @@ struct Engine::State {
   // over by the look-ahead.
   bool equidistant_exists(const Block& b, const Element& e, double& radius);
 
-  void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius);
+  void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, bool at_normal_start = false);
 
   // --- checks shared by the phases with compensation in force --------------------------------
   // Returns false if the block ended the program with an alarm.
