@@ -122,7 +122,11 @@ int list_machine_data(const std::vector<std::string>& assignments) {
 }
 
 struct CertifyOptions {
-  cutcom::props::CampaignOptions campaign;
+  cutcom::props::CampaignOptions campaign = [] {
+    cutcom::props::CampaignOptions c;
+    c.budget = 60;  // a campaign of millions of cases must not hang on one
+    return c;
+  }();
   std::string shard = "0/1";
   std::string summary, report, histogram, spec = "spec";
   std::vector<std::string> merge;
@@ -168,10 +172,11 @@ int certify_command(CertifyOptions& o) {
   long knife = s.verdicts.count("knife-edge") ? s.verdicts.at("knife-edge") : 0;
   long unsupported = s.verdicts.count("not-supported") ? s.verdicts.at("not-supported") : 0;
   std::cout << fmt::format(
-      "{} cases in {:.1f} s ({:.0f}/s): {} agree, {} knife edges, {} not supported, {} unexplained divergences; "
-      "largest coordinate error {:.3g} mm ({:.3g} of the tolerance)\n",
+      "{} cases in {:.1f} s ({:.0f}/s): {} agree, {} knife edges, {} not supported, {} over budget, {} unexplained "
+      "divergences; largest coordinate error {:.3g} mm ({:.3g} of the tolerance)\n",
       s.cases, s.seconds, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife, unsupported,
-      s.divergences.size(), s.max_error, s.max_ratio);
+      s.over_budget.size(), s.divergences.size(), s.max_error, s.max_ratio);
+  for (const auto& c : s.over_budget) std::cout << "over budget: case " << c << "\n";
   for (const auto& d : s.divergences) std::cout << "unexplained divergence: " << d << "\n";
   return s.divergences.empty() ? kDone : kAlarm;
 }
@@ -208,6 +213,10 @@ int main(int argc, char** argv) {
       app.add_subcommand("certify", "certify fast against ref on generated programs (docs/certification.md)");
   certify->add_option("--cases", co.campaign.cases, "cases in this shard (0: until --time)");
   certify->add_option("--time", co.campaign.seconds, "stop after this many seconds");
+  certify->add_option("--budget", co.campaign.budget,
+                      "seconds one case may take (default 60; 0: no limit, all in this process); a case over "
+                      "budget is recorded as over-budget, not compared")
+      ->check(CLI::NonNegativeNumber);
   certify->add_option("--seed", co.campaign.seed, "campaign seed (case k is the same program in any sharding)");
   certify->add_option("--shard", co.shard, "I/N: run cases k = I, I+N, I+2N, ... of the campaign");
   certify->add_option("--results", co.campaign.results, "JSON lines, one per case");

@@ -3,13 +3,20 @@
 #include <fmt/format.h>
 #include <rapidcheck.h>
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <set>
+#include <stdexcept>
 
 #include "cutcom/output.hpp"
 #include "generators.hpp"
@@ -132,6 +139,132 @@ std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k) {
   return {to_program(c), machine_data_text(c)};
 }
 
+namespace {
+
+long case_of(const CampaignOptions& o, long i) { return o.shard + i * o.shards; }  // the campaign's case number
+
+CaseRecord run_one(const CampaignOptions& o, long k) {
+  CaseRecord r;
+  r.k = k;
+  r.source = kSources[k % 6].name;
+  auto t0 = std::chrono::steady_clock::now();
+  try {
+    ContourCase c = generate(o.seed, k).value();
+    r.style = c.style;
+    Outcome out = evaluate(c);
+    r.verdict = out.verdict, r.clause = out.clause;
+    if (out.verdict == "diverge") r.explanation = out.explanation;
+    const RunResult& ref = out.runs.ref;
+    r.alarm = ref.alarms.empty() ? "none" : std::to_string(ref.alarms[0].number);
+    for (const Decision& d : ref.decisions) {
+      std::pair<long, long>& b = r.decisions[std::string(d.clause)][std::string(d.branch)];
+      ++b.first;
+      double band = out.runs.tolerance.band(d.clause);
+      if (d.has_margin && band > 0 && std::fabs(margin_of(d)) <= band) ++b.second;
+    }
+    if (out.verdict == "agree") r.error = out.error, r.ratio = out.ratio;
+  } catch (const std::exception& e) {  // an engine must alarm or reject, never throw anything else
+    r.verdict = "crash", r.explanation = std::string("exception: ") + e.what();
+  }
+  r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+bool stops(const CaseRecord& r) { return r.verdict == "diverge" || r.verdict == "crash"; }
+
+void write_all(int fd, const std::string& text) {
+  for (std::size_t done = 0; done < text.size();) {
+    ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) ::_exit(3);  // the parent is gone
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+// The child of a budgeted shard: cases from index i on, one JSON line each on `fd`.
+[[noreturn]] void worker(const CampaignOptions& o, long i, int fd) {
+  for (; o.cases == 0 || i < o.cases; ++i) {
+    CaseRecord r = run_one(o, case_of(o, i));
+    write_all(fd, r.to_json().dump() + "\n");
+    if (stops(r)) break;
+  }
+  ::close(fd);
+  ::_exit(0);  // no atexit handlers of the parent's libraries in the child
+}
+
+// Runs the shard's cases in child processes, restarting after a case over budget. `take`
+// counts a record and says whether the shard stops.
+template <class Take, class Elapsed>
+void run_budgeted(const CampaignOptions& o, Take take, Elapsed elapsed) {
+  long i = 0;
+  bool stop = false;
+  while (!stop && (o.cases == 0 || i < o.cases)) {
+    if (o.seconds > 0 && elapsed() >= o.seconds) break;
+    int fds[2];
+    if (::pipe(fds) != 0) throw std::runtime_error("certify: cannot create a pipe");
+    std::cout.flush(), std::cerr.flush();
+    pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("certify: cannot fork");
+    if (pid == 0) ::close(fds[0]), worker(o, i, fds[1]);
+    ::close(fds[1]);
+    std::string pending;
+    auto last = std::chrono::steady_clock::now();
+    for (;;) {
+      double wait = o.budget - std::chrono::duration<double>(std::chrono::steady_clock::now() - last).count();
+      if (o.seconds > 0) wait = std::min(wait, o.seconds - elapsed());
+      pollfd p{fds[0], POLLIN, 0};
+      int ready = ::poll(&p, 1, static_cast<int>(std::ceil(std::max(wait, 0.0) * 1000)));
+      if (ready < 0 && errno == EINTR) continue;
+      if (ready == 0) {  // the time limit, or the case's budget
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+        if (o.seconds > 0 && elapsed() >= o.seconds) {
+          stop = true;  // the case under way is not counted
+          break;
+        }
+        CaseRecord r;
+        r.k = case_of(o, i), r.source = kSources[r.k % 6].name, r.verdict = "over-budget", r.ms = o.budget * 1000;
+        ++i;
+        stop = take(r);
+        break;
+      }
+      char chunk[1 << 16];
+      ssize_t got = ::read(fds[0], chunk, sizeof chunk);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) {  // the child ended
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        if (!stop && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+          CaseRecord r;
+          r.k = case_of(o, i), r.source = kSources[r.k % 6].name, r.verdict = "crash";
+          r.explanation = WIFSIGNALED(status) ? fmt::format("killed by signal {}", WTERMSIG(status))
+                                              : fmt::format("exit status {}", WEXITSTATUS(status));
+          ++i;
+          stop = take(r);
+        }
+        if (o.cases != 0 && i < o.cases && !stop) stop = true;  // ended early without a reason: do not loop
+        break;
+      }
+      pending.append(chunk, static_cast<std::size_t>(got));
+      for (std::size_t nl; !stop && (nl = pending.find('\n')) != std::string::npos;) {
+        CaseRecord r = CaseRecord::from_json(nlohmann::json::parse(pending.substr(0, nl)));
+        pending.erase(0, nl + 1);
+        ++i;
+        last = std::chrono::steady_clock::now();
+        stop = take(r);
+      }
+      if (stop) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+        break;
+      }
+    }
+    ::close(fds[0]);
+  }
+}
+
+}  // namespace
+
 CampaignSummary run_campaign(const CampaignOptions& o) {
   CampaignSummary s;
   s.seed = o.seed;
@@ -141,70 +274,95 @@ CampaignSummary run_campaign(const CampaignOptions& o) {
   auto started = std::chrono::steady_clock::now();
   auto last_print = started;
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  for (long i = 0; o.cases == 0 || i < o.cases; ++i) {
-    if (o.seconds > 0 && elapsed() >= o.seconds) break;
-    long k = o.shard + i * o.shards;  // the campaign's case number
-    const Source& src = kSources[k % 6];
-    rc::Shrinkable<ContourCase> shrinkable = generate(o.seed, k);
-    ContourCase c = shrinkable.value();
-    auto t0 = std::chrono::steady_clock::now();
-    Outcome out = evaluate(c);
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    ++s.cases;
-    ++s.verdicts[out.verdict];
-    ++s.styles[c.style];
-    const RunResult& ref = out.runs.ref;
-    ++s.alarms[ref.alarms.empty() ? "none" : std::to_string(ref.alarms[0].number)];
-    if (out.verdict == "knife-edge") ++s.knife_edges[out.clause];
-    for (const Decision& d : ref.decisions) {
-      BranchCount& b = s.coverage[std::string(d.clause)][std::string(d.branch)];
-      ++b.taken;
-      double band = out.runs.tolerance.band(d.clause);
-      if (d.has_margin && band > 0 && std::fabs(margin_of(d)) <= band) ++b.knife;
-    }
-    if (out.verdict == "agree") {
-      ++s.error_bins[static_cast<std::size_t>(bin_of(out.error))];
-      ++s.ratio_bins[static_cast<std::size_t>(bin_of(out.ratio))];
-      if (out.error > s.max_error) s.max_error = out.error, s.max_error_case = fmt::format("{}/{}", o.seed, k);
-      s.max_ratio = std::max(s.max_ratio, out.ratio);
-    }
+  long done_cases = 0;
+  auto take = [&](const CaseRecord& r) {
+    s.add(r);
+    ++done_cases;
     if (results.is_open())
-      results << nlohmann::json{{"case", k},
-                                {"source", src.name},
-                                {"style", c.style},
-                                {"verdict", out.verdict},
-                                {"clause", out.clause},
-                                {"error", out.error},
-                                {"ms", std::round(ms * 1000) / 1000}}
+      results << nlohmann::json{{"case", r.k},           {"source", r.source}, {"style", r.style},
+                                {"verdict", r.verdict},  {"clause", r.clause}, {"error", r.error},
+                                {"ms", std::round(r.ms * 1000) / 1000}}
                      .dump()
               << "\n";
-    if (out.verdict == "diverge") {
-      std::string what = fmt::format("case {}/{}: {}", o.seed, k, out.explanation);
-      if (!o.corpus.empty()) {
+    if (stops(r)) {
+      std::string what = fmt::format("case {}/{}: {}", o.seed, r.k, r.explanation);
+      if (r.verdict == "diverge" && !o.corpus.empty()) {
+        rc::Shrinkable<ContourCase> shrinkable = generate(o.seed, r.k);
         ContourCase minimal = shrink(shrinkable, 2000);
         std::string file =
-            write_corpus(o.corpus, fmt::format("case-{}-{}", o.seed, k), minimal, evaluate(minimal).explanation);
+            write_corpus(o.corpus, fmt::format("case-{}-{}", o.seed, r.k), minimal, evaluate(minimal).explanation);
         what += " -> " + file;
       }
       s.divergences.push_back(what);
       if (o.progress) std::cerr << "\nunexplained divergence: " << what << "\n";
-      break;
+      return true;
     }
     if (o.progress && std::chrono::steady_clock::now() - last_print > std::chrono::milliseconds(500)) {
       last_print = std::chrono::steady_clock::now();
-      double done = o.cases ? static_cast<double>(i + 1) / static_cast<double>(o.cases)
+      double done = o.cases ? static_cast<double>(done_cases) / static_cast<double>(o.cases)
                             : (o.seconds > 0 ? elapsed() / o.seconds : 0);
       int filled = static_cast<int>(std::clamp(done, 0.0, 1.0) * 30);
-      std::cerr << fmt::format("\r[{:<30}] {} cases  {:.0f}/s  knife edges {}  divergences {}",
+      std::cerr << fmt::format("\r[{:<30}] {} cases  {:.0f}/s  knife edges {}  over budget {}  divergences {}",
                                std::string(static_cast<std::size_t>(filled), '#'), s.cases,
                                static_cast<double>(s.cases) / std::max(elapsed(), 1e-9), s.verdicts["knife-edge"],
-                               s.divergences.size())
+                               s.over_budget.size(), s.divergences.size())
                 << std::flush;
+    }
+    return false;
+  };
+  if (o.budget > 0) {
+    run_budgeted(o, take, elapsed);
+  } else {
+    for (long i = 0; o.cases == 0 || i < o.cases; ++i) {
+      if (o.seconds > 0 && elapsed() >= o.seconds) break;
+      if (take(run_one(o, case_of(o, i)))) break;
     }
   }
   s.seconds = elapsed();
   if (o.progress) std::cerr << "\n";
   return s;
+}
+
+nlohmann::json CaseRecord::to_json() const {
+  nlohmann::json d = nlohmann::json::object();
+  for (const auto& [id, branches] : decisions)
+    for (const auto& [branch, n] : branches) d[id][branch] = {n.first, n.second};
+  return {{"k", k},         {"source", source}, {"style", style},         {"verdict", verdict},
+          {"clause", clause}, {"why", explanation}, {"alarm", alarm},     {"error", error},
+          {"ratio", ratio}, {"ms", ms},         {"decisions", d}};
+}
+
+CaseRecord CaseRecord::from_json(const nlohmann::json& j) {
+  CaseRecord r;
+  r.k = j.at("k").get<long>();
+  r.source = j.at("source").get<std::string>(), r.style = j.at("style").get<std::string>();
+  r.verdict = j.at("verdict").get<std::string>(), r.clause = j.at("clause").get<std::string>();
+  r.explanation = j.at("why").get<std::string>(), r.alarm = j.at("alarm").get<std::string>();
+  r.error = j.at("error").get<double>(), r.ratio = j.at("ratio").get<double>(), r.ms = j.at("ms").get<double>();
+  for (const auto& [clause, branches] : j.at("decisions").items())
+    for (const auto& [branch, n] : branches.items()) r.decisions[clause][branch] = {n[0].get<long>(), n[1].get<long>()};
+  return r;
+}
+
+void CampaignSummary::add(const CaseRecord& r) {
+  ++cases;
+  ++verdicts[r.verdict];
+  if (!r.style.empty()) ++styles[r.style];
+  if (r.verdict == "over-budget") over_budget.push_back(fmt::format("{}/{}", seed, r.k));
+  if (r.verdict == "over-budget" || r.verdict == "crash") return;
+  ++alarms[r.alarm];
+  if (r.verdict == "knife-edge") ++knife_edges[r.clause];
+  for (const auto& [clause, branches] : r.decisions)
+    for (const auto& [branch, n] : branches) {
+      BranchCount& b = coverage[clause][branch];
+      b.taken += n.first, b.knife += n.second;
+    }
+  if (r.verdict == "agree") {
+    ++error_bins[static_cast<std::size_t>(bin_of(r.error))];
+    ++ratio_bins[static_cast<std::size_t>(bin_of(r.ratio))];
+    if (r.error > max_error) max_error = r.error, max_error_case = fmt::format("{}/{}", seed, r.k);
+    max_ratio = std::max(max_ratio, r.ratio);
+  }
 }
 
 nlohmann::json CampaignSummary::to_json() const {
@@ -226,7 +384,8 @@ nlohmann::json CampaignSummary::to_json() const {
           {"max_error", max_error},
           {"max_ratio", max_ratio},
           {"max_error_case", max_error_case},
-          {"divergences", divergences}};
+          {"divergences", divergences},
+          {"over_budget", over_budget}};
 }
 
 CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
@@ -247,6 +406,7 @@ CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
   s.max_ratio = j.at("max_ratio").get<double>();
   s.max_error_case = j.at("max_error_case").get<std::string>();
   s.divergences = j.at("divergences").get<std::vector<std::string>>();
+  if (j.contains("over_budget")) s.over_budget = j.at("over_budget").get<std::vector<std::string>>();
   return s;
 }
 
@@ -268,6 +428,7 @@ void CampaignSummary::merge(const CampaignSummary& o) {
   if (o.max_error > max_error) max_error = o.max_error, max_error_case = o.max_error_case;
   max_ratio = std::max(max_ratio, o.max_ratio);
   divergences.insert(divergences.end(), o.divergences.begin(), o.divergences.end());
+  over_budget.insert(over_budget.end(), o.over_budget.begin(), o.over_budget.end());
 }
 
 double CampaignSummary::error_percentile(double p, bool ratio) const {

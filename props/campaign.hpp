@@ -19,6 +19,25 @@ struct CampaignOptions {
   std::string results;  // JSON lines, one per case (empty: none)
   std::string corpus;   // where an unexplained divergence is written (empty: not written)
   bool progress = true;
+  // Seconds one case may take (0: no limit, cases run in this process). With a budget the cases
+  // run in a child process; a case over budget is killed, recorded as "over-budget" (not
+  // compared) and the shard goes on with the next one. A crash in a case stops the shard.
+  double budget = 0;
+};
+
+// One case's result, as the campaign counts it.
+struct CaseRecord {
+  long k = 0;
+  std::string source, style;
+  std::string verdict;  // agree, knife-edge, not-supported, diverge, over-budget, crash
+  std::string clause;   // knife edge: the parting clause
+  std::string explanation;
+  std::string alarm = "none";  // ref's first alarm
+  double error = 0, ratio = 0, ms = 0;
+  std::map<std::string, std::map<std::string, std::pair<long, long>>> decisions;  // clause -> branch -> taken, knife
+
+  nlohmann::json to_json() const;
+  static CaseRecord from_json(const nlohmann::json& j);
 };
 
 // Counts of one decision branch: taken, and taken with ref's margin inside the clause's band.
@@ -43,10 +62,12 @@ struct CampaignSummary {
   double max_error = 0, max_ratio = 0;
   std::string max_error_case;            // "seed/k" of the case with the largest error
   std::vector<std::string> divergences;  // unexplained: what, and the corpus file written
+  std::vector<std::string> over_budget;  // "seed/k" of the cases killed at the time budget
 
   nlohmann::json to_json() const;
   static CampaignSummary from_json(const nlohmann::json& j);
   void merge(const CampaignSummary& other);
+  void add(const CaseRecord& r);
   // Percentile p (0..1) of the error distribution (upper edge of the bin).
   double error_percentile(double p, bool ratio = false) const;
 };

@@ -49,7 +49,7 @@ std::string untraced_reason(const std::string& id) {
   return "";
 }
 
-std::string percent(long n, long total) { return total ? fmt::format("{:.3f} %", 100.0 * n / total) : "-"; }
+std::string percent(long n, long total) { return total ? fmt::format("{:.3f} %", 100.0 * static_cast<double>(n) / static_cast<double>(total)) : "-"; }
 
 void write_histogram(const CampaignSummary& s, const std::string& path) {
   std::ofstream out(path);

@@ -27,6 +27,9 @@ struct Tolerance {
   double coordinate;  // mm
   double sine;        // TRC-CORNER-1 margin (sine of the turn)
   double degrees;     // TRC-CORNER-3/4 margin (contour angle - threshold)
+  // After a touching decision (TRC-EDGE-5 hit, TRC-CD-2 g451-*, TRC-ARC-CORNER-1 with the margin
+  // in the band): a point on nearly tangent carriers moves along them by up to sqrt(4 L band).
+  double touching;
   static Tolerance for_program(const Conditioning& c);
   double band(std::string_view clause) const;  // the band of a clause's margin
 };
