@@ -143,6 +143,27 @@ namespace {
 
 long case_of(const CampaignOptions& o, long i) { return o.shard + i * o.shards; }  // the campaign's case number
 
+// A helix: no axis on which centre, start and end coincide (a circle keeps its applicate).
+bool is_helix(const PathElement& e) {
+  auto same = [](double c, double a, double b) { return c == a && a == b; };
+  return e.type == ElementType::kArc && !same(e.center.x, e.start.x, e.end.x) &&
+         !same(e.center.y, e.start.y, e.end.y) && !same(e.center.z, e.start.z, e.end.z);
+}
+
+std::set<std::string> evidence_of(const RunResult& ref) {
+  std::set<std::string> out;
+  for (const Alarm& a : ref.alarms) out.insert("alarm:" + std::string(a.clause));
+  for (const Notice& n : ref.notices) out.insert("notice:" + std::string(n.clause));
+  for (const PathElement& e : ref.path) {
+    out.insert("element:" + origin_kind_name(e.origin.kind));
+    if (e.origin.sar != SarMove::kNone) out.insert("sar:" + sar_move_name(e.origin.sar));
+    if (is_helix(e)) out.insert("helix");
+  }
+  if (!ref.actions.empty()) out.insert("actions");
+  if (!ref.variables.empty()) out.insert("variables");
+  return out;
+}
+
 CaseRecord run_one(const CampaignOptions& o, long k) {
   CaseRecord r;
   r.k = k;
@@ -163,6 +184,7 @@ CaseRecord run_one(const CampaignOptions& o, long k) {
       if (d.has_margin && band > 0 && std::fabs(margin_of(d)) <= band) ++b.second;
     }
     if (out.verdict == "agree") r.error = out.error, r.ratio = out.ratio;
+    r.evidence = evidence_of(ref);
   } catch (const std::exception& e) {  // an engine must alarm or reject, never throw anything else
     r.verdict = "crash", r.explanation = std::string("exception: ") + e.what();
   }
@@ -329,7 +351,7 @@ nlohmann::json CaseRecord::to_json() const {
     for (const auto& [branch, n] : branches) d[id][branch] = {n.first, n.second};
   return {{"k", k},         {"source", source}, {"style", style},         {"verdict", verdict},
           {"clause", clause}, {"why", explanation}, {"alarm", alarm},     {"error", error},
-          {"ratio", ratio}, {"ms", ms},         {"decisions", d}};
+          {"ratio", ratio}, {"ms", ms},         {"decisions", d}, {"evidence", evidence}};
 }
 
 CaseRecord CaseRecord::from_json(const nlohmann::json& j) {
@@ -341,6 +363,7 @@ CaseRecord CaseRecord::from_json(const nlohmann::json& j) {
   r.error = j.at("error").get<double>(), r.ratio = j.at("ratio").get<double>(), r.ms = j.at("ms").get<double>();
   for (const auto& [clause, branches] : j.at("decisions").items())
     for (const auto& [branch, n] : branches.items()) r.decisions[clause][branch] = {n[0].get<long>(), n[1].get<long>()};
+  r.evidence = j.at("evidence").get<std::set<std::string>>();
   return r;
 }
 
@@ -351,6 +374,7 @@ void CampaignSummary::add(const CaseRecord& r) {
   if (r.verdict == "over-budget") over_budget.push_back(fmt::format("{}/{}", seed, r.k));
   if (r.verdict == "over-budget" || r.verdict == "crash") return;
   ++alarms[r.alarm];
+  for (const std::string& e : r.evidence) ++evidence[e];
   if (r.verdict == "knife-edge") ++knife_edges[r.clause];
   for (const auto& [clause, branches] : r.decisions)
     for (const auto& [branch, n] : branches) {
@@ -385,7 +409,8 @@ nlohmann::json CampaignSummary::to_json() const {
           {"max_ratio", max_ratio},
           {"max_error_case", max_error_case},
           {"divergences", divergences},
-          {"over_budget", over_budget}};
+          {"over_budget", over_budget},
+          {"evidence", evidence}};
 }
 
 CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
@@ -407,6 +432,7 @@ CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
   s.max_error_case = j.at("max_error_case").get<std::string>();
   s.divergences = j.at("divergences").get<std::vector<std::string>>();
   if (j.contains("over_budget")) s.over_budget = j.at("over_budget").get<std::vector<std::string>>();
+  if (j.contains("evidence")) s.evidence = j.at("evidence").get<std::map<std::string, long>>();
   return s;
 }
 
@@ -429,6 +455,7 @@ void CampaignSummary::merge(const CampaignSummary& o) {
   max_ratio = std::max(max_ratio, o.max_ratio);
   divergences.insert(divergences.end(), o.divergences.begin(), o.divergences.end());
   over_budget.insert(over_budget.end(), o.over_budget.begin(), o.over_budget.end());
+  for (const auto& [k, v] : o.evidence) evidence[k] += v;
 }
 
 double CampaignSummary::error_percentile(double p, bool ratio) const {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ struct CaseRecord {
   std::string alarm = "none";  // ref's first alarm
   double error = 0, ratio = 0, ms = 0;
   std::map<std::string, std::map<std::string, std::pair<long, long>>> decisions;  // clause -> branch -> taken, knife
+  // What ref's output shows besides decisions, once per case: "alarm:<clause>", "notice:<clause>",
+  // "element:<origin kind>", "sar:<movement>", "helix", "actions" (evidence for clauses that are
+  // constructions or alarms, not traced branches).
+  std::set<std::string> evidence;
 
   nlohmann::json to_json() const;
   static CaseRecord from_json(const nlohmann::json& j);
@@ -63,6 +68,7 @@ struct CampaignSummary {
   std::string max_error_case;            // "seed/k" of the case with the largest error
   std::vector<std::string> divergences;  // unexplained: what, and the corpus file written
   std::vector<std::string> over_budget;  // "seed/k" of the cases killed at the time budget
+  std::map<std::string, long> evidence;  // CaseRecord::evidence: cases showing each
 
   nlohmann::json to_json() const;
   static CampaignSummary from_json(const nlohmann::json& j);

@@ -165,4 +165,34 @@ TEST(Cli, CertifyShardsMergeIntoTheReport) {
   // Case k is the same program whatever the sharding.
   EXPECT_EQ(sh(kCli + " certify --seed 3 --show 7").out, sh(kCli + " certify --seed 3 --show 7").out);
 }
+
+nlohmann::json summary_of(const std::string& file) {
+  std::ifstream in(file);
+  nlohmann::json j = nlohmann::json::parse(in);
+  j.erase("seconds");
+  return j;
+}
+
+// covers: CLI-2
+TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
+  const std::string dir = CUTCOM_BINARY_DIR;
+  Result child = sh(kCli + " certify --cases 40 --seed 5 --no-progress --summary " + dir + "/budget60.json");
+  Result here = sh(kCli + " certify --cases 40 --seed 5 --no-progress --budget 0 --summary " + dir + "/budget0.json");
+  ASSERT_EQ(child.status, 0) << child.out;
+  ASSERT_EQ(here.status, 0) << here.out;
+  EXPECT_EQ(summary_of(dir + "/budget60.json"), summary_of(dir + "/budget0.json"));
+  // A budget of a microsecond: cases are killed (over budget, not a divergence) and the shard
+  // goes on; every case is counted once, and each one over budget is named.
+  Result tight = sh(kCli + " certify --cases 12 --seed 5 --no-progress --budget 0.000001 --summary " + dir +
+                    "/budget-tight.json");
+  ASSERT_EQ(tight.status, 0) << tight.out;
+  nlohmann::json t = summary_of(dir + "/budget-tight.json");
+  EXPECT_EQ(t["cases"], 12);
+  long counted = 0;
+  for (const auto& [verdict, n] : t["verdicts"].items()) counted += n.get<long>();
+  EXPECT_EQ(counted, 12);
+  long over = t["verdicts"].contains("over-budget") ? t["verdicts"]["over-budget"].get<long>() : 0;
+  EXPECT_EQ(static_cast<long>(t["over_budget"].size()), over);
+  EXPECT_NE(tight.out.find(std::to_string(over) + " over budget"), std::string::npos) << tight.out;
+}
 }  // namespace
