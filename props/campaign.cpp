@@ -130,6 +130,13 @@ std::uint64_t case_seed(std::uint64_t seed, long k) {
 namespace {
 rc::Shrinkable<ContourCase> generate(std::uint64_t seed, long k) {
   rc::Gen<ContourCase> gen = kSources[k % 6].make();
+  if (k % 12 == 4) {  // one case in twelve: a variant for the rules around selection (kVariantNames)
+    int v = 1 + static_cast<int>((case_seed(seed, k) >> 8) % (kVariants - 1));
+    gen = rc::gen::map(gen, [v](ContourCase c) {
+      c.variant = v;
+      return c;
+    });
+  }
   return gen(rc::Random(case_seed(seed, k)), static_cast<int>(k % 101));
 }
 }  // namespace
@@ -185,6 +192,7 @@ CaseRecord run_one(const CampaignOptions& o, long k) {
     }
     if (out.verdict == "agree") r.error = out.error, r.ratio = out.ratio;
     r.evidence = evidence_of(ref);
+    if (c.variant) r.evidence.insert(std::string("variant:") + kVariantNames[c.variant]);
   } catch (const std::exception& e) {  // an engine must alarm or reject, never throw anything else
     r.verdict = "crash", r.explanation = std::string("exception: ") + e.what();
   }

@@ -43,12 +43,20 @@ std::string to_program(const ContourCase& c) {
   std::string p = fmt::format("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={}\n", fixed(c.radius_um, c.decimals));
   int n = 10;
   const SarEnds& sar = c.sar;
-  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}{} T1 D1\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
-                   fixed(c.start_y, c.decimals), h, fixed(sar.approach ? sar.start_h : 0, c.decimals));
+  const int v = c.variant;
+  const char* tool = v == 3 ? "T1 D0" : v == 4 ? "T0 D1" : v == 5 ? "T1 D2" : "T1 D1";  // TRC-SEL-5/6/7
+  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}{} {}\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
+                   fixed(c.start_y, c.decimals), h, fixed(sar.approach ? sar.start_h : 0, c.decimals), tool);
   n += 10;
+  if (v == 2 && !sar.approach) {  // TRC-SEL-4: G41/G42 first in a block without a plane axis
+    p += fmt::format("N{} G1 {} {}-0.5 F500\n", n, c.right ? "G42" : "G41", h);
+    n += 10;
+  }
   std::string modes = fmt::format("{} {} {} G{} {}", c.right ? "G42" : "G41", c.kont_select ? "KONT" : "NORM",
                                   c.g451_select ? "G451" : "G450", c.edge_select, c.cdon ? "CDON" : "CDOF");
   std::string first = fmt::format("{}{} {}{}", a, fixed(c.first_x, c.decimals), b, fixed(c.first_y, c.decimals));
+  if (v == 1 && !sar.approach)  // TRC-SEL-3: the ordinate stays where it is (the contour starts there)
+    first = fmt::format("{}{}", a, fixed(c.first_x, c.decimals));
   if (!sar.approach) {
     p += fmt::format("N{} G1 {} {} F500\n", n, modes, first);
   } else {
@@ -66,7 +74,16 @@ std::string to_program(const ContourCase& c) {
   std::int64_t x = c.first_x, y = c.first_y;
   bool right = c.right;
   int depth = 0;
-  for (const Step& s : c.steps) {
+  for (std::size_t i = 0; i < c.steps.size(); ++i) {
+    const Step& s = c.steps[i];
+    const bool last = i + 1 == c.steps.size();
+    if (v == 10 && i == 0) {  // TRC-DUMMY-2: one block without plane motion too many (MD20250 = 5)
+      for (int k = 0; k < 6; ++k) n += 10, p += fmt::format("N{} M{}\n", n, 8 + k % 2);
+    }
+    if (v == 11 && i == c.steps.size() / 2) {  // TRC-DUMMY-3: a plane position that does not move
+      n += 10;
+      p += fmt::format("N{} G1 {}{} {}{}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals));
+    }
     for (int k = 0; k < s.dummies; ++k) {
       n += 10;
       p += k % 2 == 0 ? fmt::format("N{} G1 {}-{}\n", n, h, ++depth) : fmt::format("N{} M8\n", n);
@@ -81,13 +98,21 @@ std::string to_program(const ContourCase& c) {
       // Centre words of the plane: I/J (G17), K/I (G18), J/K (G19).
       const char* ci = c.plane == 17 ? "I" : c.plane == 18 ? "K" : "J";
       const char* cj = c.plane == 17 ? "J" : c.plane == 18 ? "I" : "K";
-      p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
+      p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}{}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
                        fixed(y, c.decimals), ci, fixed(s.ci, c.decimals), cj, fixed(s.cj, c.decimals),
-                       side_word(s, right));
+                       side_word(s, right), v == 7 && last ? " G40" : "");  // TRC-DESEL-2
     } else {
-      p += fmt::format("N{} G1 {}{} {}{} {}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
-                       side_word(s, right));
+      p += fmt::format("N{} G1 {}{} {}{} {}{}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
+                       side_word(s, right), v == 9 && i == 0 ? " DISC=1" : "");  // TRC-DISC-1
     }
+  }
+  if (v == 6) {  // TRC-PLANE-1: a plane change while selected (only a straight block follows)
+    n += 10;
+    p += fmt::format("N{} G{}\n", n, c.plane == 17 ? 18 : 17);
+  }
+  if (v == 8 && !sar.retraction) {  // TRC-DESEL-3: G40 first in a block without a plane axis
+    n += 10;
+    p += fmt::format("N{} G1 G40 {}-0.5\n", n, h);
   }
   n += 10;
   std::string end = fmt::format("{}{} {}{}", a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));

@@ -56,7 +56,17 @@ struct ContourCase {
   int md20240 = 3;                                  // blocks in the look-ahead / collision window
   std::string style;                                // which generator made it (for RC_TAG)
   SarEnds sar;                                      // smooth approach / retraction (SAR-*)
+  // A variant of the program for the rules of selection, deselection and the blocks between
+  // (the campaign draws them: the properties keep well-formed programs). See kVariantNames.
+  int variant = 0;
 };
+
+// Names of ContourCase::variant: 0 "none", then one rule each (TRC-SEL-3 ... TRC-DUMMY-3).
+inline constexpr const char* kVariantNames[] = {
+    "none",          "one-plane-axis",   "select-without-plane-axis", "d0",
+    "no-tool",       "edge-without-data", "plane-change",             "deselect-in-circle",
+    "deselect-without-plane-axis", "disc", "too-many-dummies",        "standing-block"};
+inline constexpr int kVariants = 12;
 
 std::string to_program(const ContourCase& c);
 std::string fixed(std::int64_t units, int decimals);  // fixed(12345, 3) = "12.345"
