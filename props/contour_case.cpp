@@ -98,9 +98,10 @@ std::string to_program(const ContourCase& c) {
       // Centre words of the plane: I/J (G17), K/I (G18), J/K (G19).
       const char* ci = c.plane == 17 ? "I" : c.plane == 18 ? "K" : "J";
       const char* cj = c.plane == 17 ? "J" : c.plane == 18 ? "I" : "K";
-      p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}{}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
-                       fixed(y, c.decimals), ci, fixed(s.ci, c.decimals), cj, fixed(s.cj, c.decimals),
-                       side_word(s, right), v == 7 && last ? " G40" : "");  // TRC-DESEL-2
+      // TRC-DESEL-2: the variant deselects in the last circle (without a side change there).
+      std::string words = v == 7 && last ? side_word(Step{s.dx, s.dy, s.g451}, right) + " G40" : side_word(s, right);
+      p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
+                       fixed(y, c.decimals), ci, fixed(s.ci, c.decimals), cj, fixed(s.cj, c.decimals), words);
     } else {
       p += fmt::format("N{} G1 {}{} {}{} {}{}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
                        side_word(s, right), v == 9 && i == 0 ? " DISC=1" : "");  // TRC-DISC-1
