@@ -130,8 +130,12 @@ std::uint64_t case_seed(std::uint64_t seed, long k) {
 namespace {
 rc::Shrinkable<ContourCase> generate(std::uint64_t seed, long k) {
   rc::Gen<ContourCase> gen = kSources[k % 6].make();
-  if (k % 12 == 4) {  // one case in twelve: a variant for the rules around selection (kVariantNames)
-    int v = 1 + static_cast<int>((case_seed(seed, k) >> 8) % (kVariants - 1));
+  // One case in twelve of the mixed generator is a variant for the rules around selection, one in
+  // twelve of the SAR generator a variant of its approach (kVariantNames).
+  int v = 0;
+  if (k % 12 == 4) v = 1 + static_cast<int>((case_seed(seed, k) >> 8) % (kSarVariants - 1));
+  if (k % 12 == 3) v = kSarVariants + static_cast<int>((case_seed(seed, k) >> 8) % (kVariants - kSarVariants));
+  if (v) {
     gen = rc::gen::map(gen, [v](ContourCase c) {
       c.variant = v;
       return c;

@@ -49,6 +49,91 @@ std::string untraced_reason(const std::string& id) {
   return "";
 }
 
+// Engine clauses without a branch of their own: constructions, alarms and rules whose outcome
+// shows elsewhere. `evidence`: what in the campaign shows the clause at work -- "d:CLAUSE" or
+// "d:CLAUSE/branch" (ref's decisions), "e:TAG" (CaseRecord::evidence), "v:VERDICT"; empty: not
+// generated (the unit tests cover it).
+struct Untraced {
+  const char* id;
+  const char* evidence;
+  const char* why;
+};
+constexpr Untraced kUntraced[] = {
+    {"TRC-EDGE-2", "d:TRC-EDGE-1/G460", "G460 is a branch of TRC-EDGE-1"},
+    {"TRC-EDGE-3", "d:TRC-EDGE-1/G461", "G461 is a branch of TRC-EDGE-1"},
+    {"TRC-EDGE-4", "d:TRC-EDGE-1/G462", "G462 is a branch of TRC-EDGE-1"},
+    {"TRC-EDGE-7", "v:not-supported", "planned: both engines reject such a program naming the block (TRC-UNSUP-1)"},
+    {"TRC-CD-1", "d:TRC-CD-3", "the holding back is a mechanism: every TRC-CD-3 decision compares held output"},
+    {"TRC-CD-4", "d:TRC-CD-3/cut", "the cut follows every TRC-CD-3 cut (its path is compared)"},
+    {"ARC-CENTRE-1", "d:ARC-CENTRE-2", "a construction: the centre of every circle, checked by ARC-CENTRE-2"},
+    {"ARC-HELIX-1", "e:helix", "a construction: circles with a motion along the applicate"},
+    {"TRC-ARC-CORNER-2", "d:TRC-ARC-CORNER-1/none", "what follows TRC-ARC-CORNER-1 none"},
+    {"SAR-BLOCK-1", "e:sar:element", "reading of the SAR block: every SAR element"},
+    {"SAR-P4-1", "d:SAR-TANGENT-1", "where P4 comes from: a branch of SAR-TANGENT-1 (alarm 10740 is not generated)"},
+    {"SAR-P4-2", "d:SAR-TANGENT-1/p4-in-later-block", "a branch of SAR-TANGENT-1"},
+    {"SAR-STOP-1", "e:alarm:SAR-STOP-1", "alarm 10746: the variant writes STOPRE between the SAR block and its direction block"},
+    {"SAR-AGAIN-1", "e:alarm:SAR-AGAIN-1", "alarm 10743: the variant writes a second SAR block before the first ends"},
+    {"SAR-POINTS-1", "e:sar:lead", "a construction: the approach's points P0-P4"},
+    {"SAR-POINTS-2", "d:SAR-END-1", "a construction: the retraction's points"},
+    {"SAR-DISCL-1", "d:SAR-DISCL-3", "the level of P2, which SAR-DISCL-3 decides against"},
+    {"SAR-DISCL-2", "d:SAR-DISCL-3", "the level without DISCL or with DISCL=0 (drawn by the generators)"},
+    {"SAR-DISRP-1", "d:SAR-DISRP-2", "the level of P1: DISRP above or below P4's plane (variants), decided against by SAR-DISRP-2"},
+    {"SAR-SEG-1", "e:sar:element", "G340: the generators draw G340 and G341"},
+    {"SAR-SEG-2", "e:sar:slow_infeed", "G341: the infeed sub-blocks"},
+    {"SAR-FEED-1", "e:sar:element", "feeds of the sub-blocks (FAD drawn), compared with each element"},
+    {"SAR-FEED-2", "d:SAR-END-1", "feeds of the retraction's sub-blocks"},
+    {"SAR-ACTION-1", "e:actions", "actions of a block, compared with their positions"},
+    {"SAR-TRC-1", "e:sar:element", "the SAR contour runs through the compensation: every SAR element"},
+    {"SAR-END-2", "d:SAR-END-1/ends-at-p1", "a retraction without end point (cases 1 and 2)"},
+    {"SAR-END-3", "d:SAR-END-1/ends-at-p2", "the start of the next block after cases 1 and 2"},
+    {"SAR-VAR-1", "e:variables", "$P_APR, $P_AEP, $P_APDV of every approach"},
+    {"TRC-RADIUS-1", "e:element:offset", "the effective radius of every equidistant"},
+    {"TRC-SEL-2", "e:alarm:TRC-SEL-2", "alarm 10753"},
+    {"TRC-SEL-3", "e:variant:one-plane-axis", "the variant writes one plane axis in the selection block"},
+    {"TRC-SEL-4", "d:TRC-SEL-4", ""},
+    {"TRC-SEL-5", "d:TRC-SEL-5", ""},
+    {"TRC-SEL-6", "e:alarm:TRC-SEL-6", "alarm 10750"},
+    {"TRC-SEL-7", "e:alarm:TRC-SEL-7", "alarm 17181"},
+    {"TRC-PLANE-1", "e:alarm:TRC-PLANE-1", "alarm 10757"},
+    {"TRC-UNSUP-1", "v:not-supported", "both engines reject naming the same block"},
+    {"TRC-EQ-1", "e:element:offset", "a construction: every equidistant"},
+    {"TRC-CORNER-2", "d:TRC-CORNER-3", "the contour angle is the margin of TRC-CORNER-3/4"},
+    {"TRC-G450-1", "e:element:transition_circle", "a construction: every transition circle"},
+    {"TRC-DISC-1", "e:variant:disc", "DISC > 0 is rejected as not supported (the variant writes DISC=1)"},
+    {"TRC-G450-2", "d:TRC-RADIUS-2/zero", "a zero radius writes no transition circle"},
+    {"TRC-G450-3", "d:TRC-CORNER-1/reversal", "a reversal is always a circle"},
+    {"TRC-G451-1", "d:TRC-CORNER-3/keep-G451", "the intersection at an outer corner"},
+    {"TRC-INNER-1", "d:TRC-CORNER-1/inner", "the intersection at an inner corner"},
+    {"TRC-DUMMY-1", "e:element:infeed", "blocks without plane motion run at the corner point"},
+    {"TRC-DUMMY-2", "e:alarm:TRC-DUMMY-2", "alarm 10762"},
+    {"TRC-DUMMY-3", "e:variant:standing-block", "the variant programs the plane position where the tool stands"},
+    {"TRC-DESEL-2", "e:alarm:TRC-DESEL-2", "alarm 10754"},
+    {"TRC-DESEL-3", "d:TRC-DESEL-3", ""},
+};
+
+// Cases (or decisions) showing an evidence key in the campaign.
+long evidence_count(const CampaignSummary& s, const std::string& key) {
+  if (key.rfind("d:", 0) == 0) {
+    std::string clause = key.substr(2), branch;
+    if (auto slash = clause.find('/'); slash != std::string::npos) branch = clause.substr(slash + 1), clause.resize(slash);
+    auto it = s.coverage.find(clause);
+    if (it == s.coverage.end()) return 0;
+    long n = 0;
+    for (const auto& [b, count] : it->second)
+      if (branch.empty() || b == branch) n += count.taken;
+    return n;
+  }
+  if (key.rfind("e:", 0) == 0) {
+    auto it = s.evidence.find(key.substr(2));
+    return it == s.evidence.end() ? 0 : it->second;
+  }
+  if (key.rfind("v:", 0) == 0) {
+    auto it = s.verdicts.find(key.substr(2));
+    return it == s.verdicts.end() ? 0 : it->second;
+  }
+  return 0;
+}
+
 std::string percent(long n, long total) { return total ? fmt::format("{:.3f} %", 100.0 * static_cast<double>(n) / static_cast<double>(total)) : "-"; }
 
 void write_histogram(const CampaignSummary& s, const std::string& path) {
@@ -138,28 +223,43 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "with its exact margin inside the clause's band (a knife edge).\n\n"
      << "| clause | branches taken (count, of them at a knife edge) |\n|---|---|\n";
   std::vector<SpecClause> clauses = spec_clauses(spec_dir);
-  std::vector<std::string> unreached;
   for (const SpecClause& c : clauses) {
     auto it = s.coverage.find(c.id);
-    if (it == s.coverage.end()) {
-      if (untraced_reason(c.id).empty()) unreached.push_back(c.id);
-      continue;
-    }
+    if (it == s.coverage.end()) continue;
     std::vector<std::string> parts;
     for (const auto& [branch, n] : it->second)
       parts.push_back(n.knife ? fmt::format("{} {} ({})", branch, n.taken, n.knife)
                               : fmt::format("{} {}", branch, n.taken));
     md << fmt::format("| {} | {} |\n", c.id, fmt::join(parts, ", "));
   }
-  md << "\n### Clauses without a branch in the campaign\n\n| clause | why |\n|---|---|\n";
-  for (const SpecClause& c : clauses)
-    if (!s.coverage.count(c.id)) {
-      std::string why = untraced_reason(c.id);
-      md << fmt::format("| {} {} | {} |\n", c.id, c.title,
-                        why.empty() ? "an engine rule not traced as a branch, or not reached by the generators (see "
-                                      "below)"
-                                    : why);
+  md << "\n### Engine clauses without a branch of their own\n\n"
+     << "Constructions, alarms and rules whose outcome shows elsewhere: what in the campaign shows each\n"
+     << "at work (a decision or branch of ref, an alarm, an element origin, a program variant), and how\n"
+     << "often. *Not generated*: the unit tests named in [spec/COVERAGE.md](../spec/COVERAGE.md) cover it.\n\n"
+     << "| clause | shown by | count | why |\n|---|---|---|---|\n";
+  std::vector<std::string> other;
+  long unreached = 0;
+  for (const SpecClause& c : clauses) {
+    if (s.coverage.count(c.id)) continue;
+    if (!untraced_reason(c.id).empty()) {
+      other.push_back(c.id);
+      continue;
     }
+    const Untraced* u = nullptr;
+    for (const Untraced& x : kUntraced)
+      if (c.id == x.id) u = &x;
+    std::string key = u ? u->evidence : "";
+    long n = key.empty() ? 0 : evidence_count(s, key);
+    if (n == 0) ++unreached;
+    md << fmt::format("| {} {} | {} | {} | {} |\n", c.id, c.title, key.empty() ? "—" : "`" + key + "`",
+                      n == 0 ? std::string("**not reached**") : std::to_string(n),
+                      u ? (std::string(u->why).empty() ? "a branch of its own, not reached" : u->why)
+                        : "no evidence listed (props/certification_report.cpp)");
+  }
+  md << fmt::format("\n{} engine clauses are not reached by the campaign (above, with the reason).\n", unreached);
+  md << "\nNot engine rules, so without a branch: the reader, tool and machine data (NC-, TOOL-, MD-: the\n"
+     << "shared reader decides them for both engines), the output model (PATH-, ALARM-, TRACE-, CLI-) and\n"
+     << "the properties (PROP-): " << other.size() << " clauses.\n";
   md << "\n## Generators and alarms\n\n| generator style | cases |\n|---|---|\n";
   for (const auto& [k, n] : s.styles) md << fmt::format("| {} | {} |\n", k, n);
   md << "\n| alarm | cases |\n|---|---|\n";

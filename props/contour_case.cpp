@@ -62,13 +62,20 @@ std::string to_program(const ContourCase& c) {
   } else {
     std::string words = sar_words(sar.side_in, sar.seg_in, sar.disr_in, sar.discl_in, sar.discl_in_ac, sar.discl_in_v,
                                   sar.fad_in, c.decimals);
+    if (v == 12 || v == 13) words += v == 12 ? " DISRP=5" : " DISRP=-5";  // SAR-DISRP-1/2
+    // SAR-STOP-1 / SAR-AGAIN-1: a STOPRE or a second SAR block before the direction block.
+    std::string between = v == 14 ? fmt::format("N{} STOPRE\n", n + 2)
+                          : v == 15 ? fmt::format("N{} G1 G147 DISR=1 F500\n", n + 2)
+                                    : "";
     // SAR-P4-1: P4 in the SAR block, or (the manual's E1 variants) from the next block.
     if (sar.p4_mode == 0) {
-      p += fmt::format("N{} G1 G{} {} {} {} {}0 F500\n", n, sar.contour_in, words, modes, first, h);
+      p += fmt::format("N{} G1 G{} {} {} {} {}0 F500\n{}", n, sar.contour_in, words, modes, first, h, between);
     } else if (sar.p4_mode == 1) {
-      p += fmt::format("N{} G1 G{} {} {} {}0 F500\nN{} {}\n", n, sar.contour_in, words, modes, h, n + 1, first);
+      p += fmt::format("N{} G1 G{} {} {} {}0 F500\n{}N{} {}\n", n, sar.contour_in, words, modes, h, between, n + 1,
+                       first);
     } else {
-      p += fmt::format("N{} G1 G{} {} {} F500\nN{} {} {}0\n", n, sar.contour_in, words, modes, n + 1, first, h);
+      p += fmt::format("N{} G1 G{} {} {} F500\n{}N{} {} {}0\n", n, sar.contour_in, words, modes, between, n + 1,
+                       first, h);
     }
   }
   std::int64_t x = c.first_x, y = c.first_y;
@@ -106,6 +113,16 @@ std::string to_program(const ContourCase& c) {
       p += fmt::format("N{} G1 {}{} {}{} {}{}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
                        side_word(s, right), v == 9 && i == 0 ? " DISC=1" : "");  // TRC-DISC-1
     }
+  }
+  if (v == 7 && (c.steps.empty() || !c.steps.back().arc || c.steps.back().cr != 0)) {
+    // TRC-DESEL-2 when the contour does not end in a centre circle: a half circle deselecting.
+    std::int64_t one = 1;
+    for (int k = 0; k < c.decimals; ++k) one *= 10;
+    const char* ci = c.plane == 17 ? "I" : c.plane == 18 ? "K" : "J";
+    const char* cj = c.plane == 17 ? "J" : c.plane == 18 ? "I" : "K";
+    n += 10;
+    p += fmt::format("N{} G2 {}{} {}{} {}{} {}0 G40\n", n, a, fixed(x + 20 * one, c.decimals), b, fixed(y, c.decimals),
+                     ci, fixed(10 * one, c.decimals), cj);
   }
   if (v == 6) {  // TRC-PLANE-1: a plane change while selected (only a straight block follows)
     n += 10;

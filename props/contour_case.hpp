@@ -61,12 +61,15 @@ struct ContourCase {
   int variant = 0;
 };
 
-// Names of ContourCase::variant: 0 "none", then one rule each (TRC-SEL-3 ... TRC-DUMMY-3).
+// Names of ContourCase::variant: 0 "none", then one rule each (TRC-SEL-3 ... TRC-DUMMY-3,
+// SAR-DISRP-1/2, SAR-STOP-1, SAR-AGAIN-1).
 inline constexpr const char* kVariantNames[] = {
     "none",          "one-plane-axis",   "select-without-plane-axis", "d0",
     "no-tool",       "edge-without-data", "plane-change",             "deselect-in-circle",
-    "deselect-without-plane-axis", "disc", "too-many-dummies",        "standing-block"};
-inline constexpr int kVariants = 12;
+    "deselect-without-plane-axis", "disc", "too-many-dummies",        "standing-block",
+    "disrp-above",   "disrp-below",      "stopre-before-direction",   "sar-again"};
+inline constexpr int kVariants = 16;
+inline constexpr int kSarVariants = 12;  // variants from here on change a SAR approach
 
 std::string to_program(const ContourCase& c);
 std::string fixed(std::int64_t units, int decimals);  // fixed(12345, 3) = "12.345"
