@@ -3,6 +3,8 @@
 // geometry.
 #pragma once
 
+#include <cmath>
+
 #include <optional>
 #include <vector>
 
@@ -42,7 +44,11 @@ struct PieceCrossing {
 // The floating-point filter's value of an exact number, computed when it was built: enough to
 // pick the least or largest of exact margins. CGAL::to_double would evaluate the expression to 53
 // bits, which costs CORE a root-bound evaluation wherever an inner difference is exactly zero.
-inline double rough(const FT& x) { return x.Rep()->ffVal.getValue(); }
+// The filter gives up (NaN) on a quotient by an uncertain divisor: then the evaluation it is.
+inline double rough(const FT& x) {
+  double v = x.Rep()->ffVal.getValue();
+  return std::isfinite(v) ? v : CGAL::to_double(x);
+}
 
 // The largest near miss so far; a crossing's margin, lowered to a nearer miss before it.
 inline void keep_largest(std::optional<FT>& near, const std::optional<FT>& miss) {
