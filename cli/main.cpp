@@ -129,14 +129,41 @@ struct CertifyOptions {
   }();
   std::string shard = "0/1";
   std::string summary, report, histogram, spec = "spec";
-  std::vector<std::string> merge;
+  std::vector<std::string> merge, replay;
   long show = -1;
 };
+
+// `certify --replay`: each program (with its FILE.md machine data beside it, as in tests/corpus)
+// through both engines, judged as a campaign case; exit 1 on an unexplained divergence.
+int replay_programs(const std::vector<std::string>& files) {
+  bool diverged = false;
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    if (!in) throw cutcom::MachineDataError(fmt::format("cannot open program '{}'", f));
+    std::ostringstream text;
+    text << in.rdbuf();
+    cutcom::MachineData md;
+    std::filesystem::path md_file = std::filesystem::path(f).replace_extension(".md");
+    if (std::filesystem::exists(md_file)) {
+      std::ifstream m(md_file);
+      md.load(m, md_file.string());
+    }
+    cutcom::props::ReplayVerdict v = cutcom::props::replay(text.str(), md);
+    diverged = diverged || v.verdict == "diverge";
+    std::cout << fmt::format("{}: {}", f, v.verdict);
+    if (!v.clause.empty()) std::cout << " (" << v.clause << ")";
+    if (v.verdict == "agree") std::cout << fmt::format(", largest coordinate error {:.3g} mm ({:.3g} of the tolerance)", v.error, v.ratio);
+    if (!v.explanation.empty() && v.verdict != "agree") std::cout << ": " << v.explanation;
+    std::cout << "\n";
+  }
+  return diverged ? kAlarm : kDone;
+}
 
 // The certification campaign (docs/certification.md): exit 0 without unexplained divergence,
 // 1 with one (written to the corpus).
 int certify_command(CertifyOptions& o) {
   using cutcom::props::CampaignSummary;
+  if (!o.replay.empty()) return replay_programs(o.replay);
   if (o.show >= 0) {  // one case, to replay it with `cutcom run`
     auto [program, md] = cutcom::props::campaign_case(o.campaign.seed, o.show);
     std::string words = md.substr(0, md.size() - 1);
@@ -227,6 +254,8 @@ int main(int argc, char** argv) {
   certify->add_option("--histogram", co.histogram, "the histogram's SVG file (next to the report by default)");
   certify->add_option("--spec", co.spec, "spec directory, for the clause list of the coverage table");
   certify->add_flag("!--no-progress", co.campaign.progress, "no progress bar");
+  certify->add_option("--replay", co.replay, "judge these programs (FILE.md beside each: machine data) and stop")
+      ->expected(1, -1);
   certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop");
 
   try {

@@ -45,9 +45,9 @@ struct Outcome {
 };
 
 // PROP-DIFF-1, as the differential properties decide it (differential_props.cpp).
-Outcome evaluate(const ContourCase& c) {
+Outcome judge(CaseRuns runs) {
   Outcome o;
-  o.runs = run_case(c, false);
+  o.runs = std::move(runs);
   const CaseRuns& r = o.runs;
   Verdict v = compare(r.ref, r.fast, r.tolerance);
   o.explanation = v.explanation;
@@ -62,6 +62,8 @@ Outcome evaluate(const ContourCase& c) {
   o.ratio = r.tolerance.coordinate > 0 ? o.error / r.tolerance.coordinate : 0;
   return o;
 }
+
+Outcome evaluate(const ContourCase& c) { return judge(run_case(c, false)); }
 
 double margin_of(const Decision& d) {
   return d.margin_exact.empty() ? d.margin : std::strtod(d.margin_exact.c_str(), nullptr);
@@ -144,6 +146,11 @@ rc::Shrinkable<ContourCase> generate(std::uint64_t seed, long k) {
   return gen(rc::Random(case_seed(seed, k)), static_cast<int>(k % 101));
 }
 }  // namespace
+
+ReplayVerdict replay(const std::string& program, const MachineData& md) {
+  Outcome o = judge(run_program(program, md));
+  return {o.verdict, o.clause, o.explanation, o.error, o.ratio};
+}
 
 std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k) {
   ContourCase c = generate(seed, k).value();

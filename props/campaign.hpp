@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <map>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
+
+#include "cutcom/machine_data.hpp"
 
 namespace cutcom::props {
 
@@ -86,6 +88,16 @@ CampaignSummary run_campaign(const CampaignOptions& options);
 // the clause list for the coverage table.
 void write_report(const CampaignSummary& s, const std::string& markdown_path, const std::string& svg_path,
                   const std::string& spec_dir);
+
+// One program through both engines, judged as a campaign case (PROP-DIFF-1): a corpus case, or
+// a program of one's own.
+struct ReplayVerdict {
+  std::string verdict;  // agree, knife-edge, not-supported, diverge
+  std::string clause;   // knife edge: the parting clause
+  std::string explanation;
+  double error = 0, ratio = 0;  // agree: largest coordinate error (mm) and its share of the tolerance
+};
+ReplayVerdict replay(const std::string& program, const MachineData& md);
 
 // Case k of a campaign: its program text and machine data (NAME=VALUE lines), to replay it.
 std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k);

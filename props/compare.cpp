@@ -20,7 +20,7 @@ double distance(const PathPoint& a, const PathPoint& b) {
 }
 }  // namespace
 
-Conditioning conditioning_of(const std::vector<Block>& program, int window) {
+Conditioning conditioning_of(const std::vector<Block>& program, int window, const RunResult* generated) {
   Conditioning c;
   // End tangents of the last `window` traversing blocks: the look-ahead and CDON intersect a
   // block's equidistant with a later one's, however parallel (edge-cases.md: look-ahead crossing).
@@ -95,13 +95,59 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window) {
     if (static_cast<int>(recent.size()) > window + 1) recent.erase(recent.begin());
   }
   c.size = std::max(c.size, c.radius);
+  if (generated) add_generated(c, program, *generated);
   return c;
+}
+
+namespace {
+double along(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
+// In-plane tangent of a path element at its start (or end): the chord of a line, the
+// perpendicular of the radius of an arc (ccw about the applicate is ccw in (abscissa, ordinate)).
+std::pair<double, double> tangent(const PathElement& e, const PlaneAxes& ax, bool at_end) {
+  auto ab = [&](const PathPoint& p) { return std::pair{along(p, ax.abscissa), along(p, ax.ordinate)}; };
+  auto [sa, sb] = ab(e.start);
+  auto [ea, eb] = ab(e.end);
+  if (e.type == ElementType::kLine) return {ea - sa, eb - sb};
+  auto [ca, cb] = ab(e.center);
+  double pa = (at_end ? ea : sa) - ca, pb = (at_end ? eb : sb) - cb, sense = e.ccw ? 1 : -1;
+  return {-sense * pb, sense * pa};
+}
+}  // namespace
+
+void add_generated(Conditioning& c, const std::vector<Block>& program, const RunResult& ref) {
+  for (const PathElement& e : ref.path)
+    for (const PathPoint* p : {&e.start, &e.end, &e.center})
+      c.reach = std::max({c.reach, std::fabs(p->x), std::fabs(p->y), std::fabs(p->z)});
+  for (const Block& b : program) {
+    if (!b.is_sar_block()) continue;
+    PlaneAxes ax = plane_axes(b.state.plane);
+    // SAR-SUB-1: the lead (P0 -> P1, in the plane) meets the SAR element at a corner the program
+    // does not show; with KONT G451 behind the contour it is an intersection (TRC-KONT-4).
+    const PathElement *lead = nullptr, *first = nullptr, *last = nullptr;
+    bool lead_after = false;
+    for (const PathElement& e : ref.path) {
+      if (e.origin.line != b.words.line) continue;
+      auto [ta, tb] = tangent(e, ax, false);
+      if (e.origin.sar == SarMove::kLead && std::hypot(ta, tb) > 0 && !lead) lead = &e, lead_after = first != nullptr;
+      if (e.origin.sar == SarMove::kElement) first = first ? first : &e, last = &e;
+    }
+    if (!lead || !first) continue;
+    auto [da, db] = tangent(*lead, ax, false);
+    auto [ta, tb] = lead_after ? tangent(*last, ax, true) : tangent(*first, ax, false);
+    double cosine = (da * ta + db * tb) / (std::hypot(da, db) * std::hypot(ta, tb));
+    if (!std::isfinite(cosine)) continue;
+    c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
+    if ((lead_after ? last : first)->type == ElementType::kArc)
+      c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
+  }
 }
 
 Tolerance Tolerance::for_program(const Conditioning& c) {
   Tolerance t;
   double leverage = c.size / c.shortest;  // how far a rounded input tilts the shortest direction
-  t.coordinate = 64 * kUnitRoundoff * (c.size + c.radius * leverage * c.corner + c.size * c.crossing);
+  t.coordinate =
+      64 * kUnitRoundoff * (std::max(c.size, c.reach) + c.radius * leverage * c.corner + c.size * c.crossing);
   t.sine = 16 * kUnitRoundoff * leverage;
   t.degrees = t.sine * 180 / 3.14159265358979323846;
   t.touching = std::sqrt(4 * c.size * t.coordinate) + t.coordinate;

@@ -18,10 +18,15 @@ struct Conditioning {
   double corner = 1;    // kappa: largest 1/(1 + cos phi) over the contour's corners
   double crossing = 1;  // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
                         // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
+  double reach = 0;     // largest coordinate magnitude of ref's path, mm (0: not read)
 };
 // `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)
 // may intersect two blocks' equidistants.
-Conditioning conditioning_of(const std::vector<Block>& program, int window = 5);
+// `generated`: ref's run of the program, for what the program does not show: the contour SAR
+// generates (the corner of its lead with its element) and the reach of the path itself (a G451
+// intersection of nearly reversed lines lies far away: r tan of half the turn).
+Conditioning conditioning_of(const std::vector<Block>& program, int window = 5, const RunResult* generated = nullptr);
+void add_generated(Conditioning& c, const std::vector<Block>& program, const RunResult& ref);
 
 struct Tolerance {
   double coordinate;  // mm

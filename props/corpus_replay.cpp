@@ -69,8 +69,8 @@ TEST(Corpus, EveryCaseReplays) {
     std::vector<Block> blocks;
     Block b;
     while (reader.next(b)) blocks.push_back(b);
-    Verdict v =
-        compare(r.result, f.result, Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks)));
+    Verdict v = compare(r.result, f.result,
+                        Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks, &r.result)));
     EXPECT_NE(v.kind, Verdict::Kind::kDiverge) << v.explanation;
   }
 }

@@ -25,10 +25,9 @@ inline MachineData machine_data_of(const ContourCase& c) {
   return md;
 }
 
-inline CaseRuns run_case(const ContourCase& c, bool exact_checks) {
+// Both engines on one program text, and the tolerance read off it.
+inline CaseRuns run_program(const std::string& text, const MachineData& md, bool exact_checks = false) {
   CaseRuns out;
-  std::string text = to_program(c);
-  MachineData md = machine_data_of(c);
   {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
@@ -56,8 +55,12 @@ inline CaseRuns run_case(const ContourCase& c, bool exact_checks) {
   std::vector<Block> blocks;
   Block b;
   while (reader.next(b)) blocks.push_back(b);
-  out.tolerance = Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks));
+  out.tolerance = Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks, &out.ref));
   return out;
+}
+
+inline CaseRuns run_case(const ContourCase& c, bool exact_checks) {
+  return run_program(to_program(c), machine_data_of(c), exact_checks);
 }
 
 }  // namespace cutcom::props

@@ -195,4 +195,25 @@ TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
   EXPECT_EQ(static_cast<long>(t["over_budget"].size()), over);
   EXPECT_NE(tight.out.find(std::to_string(over) + " over budget"), std::string::npos) << tight.out;
 }
+
+// covers: CLI-2 PROP-CORPUS-1
+TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
+  const std::string src = CUTCOM_SOURCE_DIR, dir = CUTCOM_BINARY_DIR;
+  // A corpus case: a knife edge of TRC-CD-3 (its MD20240 = 2 read from the .md beside it).
+  Result knife = sh(kCli + " certify --replay " + src + "/tests/corpus/cdon-entry-on-sar-element.mpf");
+  ASSERT_EQ(knife.status, 0) << knife.out;
+  EXPECT_NE(knife.out.find("knife-edge (TRC-CD-3)"), std::string::npos) << knife.out;
+  // The machine data beside the program are read: a bad datum names its file and line.
+  {
+    std::ifstream in(src + "/tests/corpus/cdon-entry-on-sar-element.mpf");
+    std::ofstream(dir + "/replay-bad.mpf") << in.rdbuf();
+    std::ofstream(dir + "/replay-bad.md") << "MD20240=abc\n";
+  }
+  Result bad = sh("{ " + kCli + " certify --replay " + dir + "/replay-bad.mpf 2>&1; }");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("replay-bad.md:1: MD20240"), std::string::npos) << bad.out;
+  Result missing = sh("{ " + kCli + " certify --replay " + dir + "/no-such-program.mpf 2>&1; }");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.out.find("cannot open program"), std::string::npos) << missing.out;
+}
 }  // namespace
