@@ -201,16 +201,21 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
   for (const auto& [v, n] : s.verdicts) md << fmt::format("| {} | {} | {} |\n", v, n, percent(n, s.cases));
   md << "\n*agree*: same decisions, coordinates within the tolerance. *knife-edge*: a decision parted the\n"
      << "runs where ref's exact margin lies inside the clause's documented band (the rest is not\n"
-     << "compared). *not-supported*: both engines rejected the program naming the same line.\n\n";
+     << "compared). *not-supported*: both engines rejected the program naming the same line (TRC-UNSUP-1).\n"
+     << "*over-budget*: the case ran longer than `--budget` seconds and was stopped, not compared (listed\n"
+     << "below). *diverge* and *crash* stop a shard: each is an unexplained divergence.\n\n";
   md << "### Knife edges by clause\n\n| clause | cases |\n|---|---|\n";
   for (const auto& [c, n] : s.knife_edges) md << fmt::format("| {} | {} |\n", c, n);
   md << "\n## Unexplained divergences\n\n";
   if (s.divergences.empty()) md << "None.\n";
   for (const auto& d : s.divergences) md << "- " << d << "\n";
+  if (!s.over_budget.empty())
+    md << "\nCases over budget (replay with `cutcom certify --seed " << s.seed << " --show K`): "
+       << fmt::format("{}", fmt::join(s.over_budget, ", ")) << ".\n";
   md << "\n## Coordinate error\n\n"
      << "The largest coordinate difference (mm, max norm over start, end and centre of every element)\n"
      << "between fast and ref per agreeing case, and the same relative to the case's documented\n"
-     << "tolerance `64 u (L + r (L/d_min) κ + L χ)` ([tolerances.md](tolerances.md)): the bound the\n"
+     << "tolerance `64 u (max(L, R) + r (L/d_min) κ + L χ)` ([tolerances.md](tolerances.md)): the bound the\n"
      << "campaign certifies is that ratio staying at most 1.\n\n"
      << "| | error (mm) | error / tolerance |\n|---|---|---|\n";
   for (double p : {0.5, 0.9, 0.99, 0.999})

@@ -300,8 +300,8 @@ void shorten(Step& s, std::int64_t r) {
   if (s.arc || r <= 0) return;
   double len = std::hypot(static_cast<double>(s.dx), static_cast<double>(s.dy));
   double want = static_cast<double>(r) * *inRange(1, 10) / 10.0;
-  s.dx = static_cast<std::int64_t>(std::lround(s.dx * want / len));
-  s.dy = static_cast<std::int64_t>(std::lround(s.dy * want / len));
+  s.dx = static_cast<std::int64_t>(std::lround(static_cast<double>(s.dx) * want / len));
+  s.dy = static_cast<std::int64_t>(std::lround(static_cast<double>(s.dy) * want / len));
   nonzero(s);
 }
 }  // namespace

@@ -180,7 +180,7 @@ struct Engine::State {
   // Runs one block (the former Engine::push); `o` gives its in-plane points where needed.
   void step(const Block& b, const PlaneOverride* o = nullptr);
   void sar_approach(std::span<const Block> gathered, int p4_index);
-  void sar_retraction(const Block& r);
+  void sar_retraction(const Block& block);
   struct SarTrc {
     bool on = false;
     int s = 1;

@@ -201,8 +201,8 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
   }
 }
 
-void Engine::State::sar_retraction(const Block& r) {
-  PlaneAxes ax = plane_axes(r.state.plane);
+void Engine::State::sar_retraction(const Block& block) {
+  PlaneAxes ax = plane_axes(block.state.plane);
   Vec2 t, p4;
   {
     AxesScope scope(axes, ax);
@@ -211,50 +211,50 @@ void Engine::State::sar_retraction(const Block& r) {
     Element last = element_of(copy);
     t = last.end_tangent(), p4 = last.end;  // SAR-TANGENT-1
   }
-  decide("SAR-TANGENT-1", r.words.line, "end-of-contour");
-  SarEndCase end_case = sar_end_case(r);
-  decide("SAR-END-1", r.words.line,
+  decide("SAR-TANGENT-1", block.words.line, "end-of-contour");
+  SarEndCase end_case = sar_end_case(block);
+  decide("SAR-END-1", block.words.line,
          end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
          : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
                                                   : "programmed-p0");
   std::optional<Vec2> p0;
-  if (end_case == SarEndCase::kPlaneAxis) p0 = plane_of(r.end, ax);
-  SarTrc trc = sar_trc(r.previous.side != Side::kOff ? r.previous : r.state);
-  SarContour c = *r.words.sar_contour;
+  if (end_case == SarEndCase::kPlaneAxis) p0 = plane_of(block.end, ax);
+  SarTrc trc = sar_trc(block.previous.side != Side::kOff ? block.previous : block.state);
+  SarContour c = *block.words.sar_contour;
   int sd = trc.s;
-  if (c != SarContour::kG148) sd = sar_side(r, trc, t, p4, p0);
+  if (c != SarContour::kG148) sd = sar_side(block, trc, t, p4, p0);
   if (sd == 0) return;
   double size = 0;
-  if (!sar_size(r, trc, sd, size)) return;
+  if (!sar_size(block, trc, sd, size)) return;
   SarShape shape = sar_shape(c, p4, t, sd, size);
   SarPlan plan;
   plan.approach = false;
   plan.end_case = end_case;
-  if (!sar_levels(r, plan.h, end_case, coord(r.start, ax.applicate))) return;
-  plan.p4 = r.start, plan.p0 = r.end;
+  if (!sar_levels(block, plan.h, end_case, coord(block.start, ax.applicate))) return;
+  plan.p4 = block.start, plan.p0 = block.end;
   plan.p3_a = nearest_decimal(shape.p3.a * Decimal::kUnitsPerOne);
   plan.p3_b = nearest_decimal(shape.p3.b * Decimal::kUnitsPerOne);
   plan.lead_moves = p0 && (p0->a != shape.p3.a || p0->b != shape.p3.b);
   plan.sense = shape.sense;
   // SAR-END-2: G40 without end point: P0 is the tool centre at P1 (normal end of the element).
   std::optional<Vec2> tool_centre;
-  bool deselects = r.state.side == Side::kOff && r.previous.side != Side::kOff;
+  bool deselects = block.state.side == Side::kOff && block.previous.side != Side::kOff;
   if (end_case != SarEndCase::kPlaneAxis && deselects)
     tool_centre = trc.on ? Element::offset(shape.p3, shape.end_unit, trc.s * trc.r) : shape.p3;
   if (tool_centre) {
     plan.tc_a = nearest_decimal(tool_centre->a * Decimal::kUnitsPerOne);
     plan.tc_b = nearest_decimal(tool_centre->b * Decimal::kUnitsPerOne);
   }
-  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead", p0 ? norm(shape.p3 - *p0) : 0.0);
-  sar_sub_blocks(r, r, plan, sar_subs);
+  decide("SAR-SUB-1", block.words.line, plan.lead_moves ? "lead" : "no-lead", p0 ? norm(shape.p3 - *p0) : 0.0);
+  sar_sub_blocks(block, block, plan, sar_subs);
   push_sub_blocks(shape, tool_centre);
   if (stopped) return;
   if (end_case == SarEndCase::kPlaneAxis) {
     // SAR-END-1: without the applicate the retraction ended at P2's level, not at the reader's.
-    if (plan.h.h0 != coord(r.end, ax.applicate)) {
-      Point3 p = r.end;
-      Decimal* c[3] = {&p.x, &p.y, &p.z};
-      *c[ax.applicate] = plan.h.h0;
+    if (plan.h.h0 != coord(block.end, ax.applicate)) {
+      Point3 p = block.end;
+      Decimal* coords[3] = {&p.x, &p.y, &p.z};
+      *coords[ax.applicate] = plan.h.h0;
       reposition = p;
     }
     return;
@@ -262,8 +262,8 @@ void Engine::State::sar_retraction(const Block& r) {
   // SAR-END-3: the next blocks start where the retraction ended.
   at_sar_end = true;
   sar_end = tool_centre ? *tool_centre : shape.p3;
-  sar_end_plane = r.state.plane;
-  Point3 picture = r.end;
+  sar_end_plane = block.state.plane;
+  Point3 picture = block.end;
   Decimal* cs[3] = {&picture.x, &picture.y, &picture.z};
   *cs[ax.abscissa] = tool_centre ? plan.tc_a : plan.p3_a;
   *cs[ax.ordinate] = tool_centre ? plan.tc_b : plan.p3_b;

@@ -277,8 +277,8 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
     // SAR-END-1: without the applicate the retraction ended at P2's level, not at the reader's.
     if (plan.h.h0 != coord(r.end, ax.applicate)) {
       Point3 p = r.end;
-      Decimal* c[3] = {&p.x, &p.y, &p.z};
-      *c[ax.applicate] = plan.h.h0;
+      Decimal* coords[3] = {&p.x, &p.y, &p.z};
+      *coords[ax.applicate] = plan.h.h0;
       reader_->set_position(p);
     }
     return;
