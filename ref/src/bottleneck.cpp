@@ -41,8 +41,22 @@ struct OnPiece {
   FT slack, line_position;  // line_position: times the segment's length
   CirclePosition arc_position;
 };
+// The very same exact numbers (shared by construction), without a zero test.
+bool same_point(const Point& p, const Point& q) {
+  return p.x().Rep() == q.x().Rep() && p.y().Rep() == q.y().Rep();
+}
+
 OnPiece locate(const PathPiece& piece, const Point& p) {
   OnPiece o;
+  if (same_point(p, piece.a) || same_point(p, piece.b)) {  // an end of the piece: on it, no slack
+    bool at_a = same_point(p, piece.a);
+    o.on = true, o.slack = FT(0);
+    if (!piece.arc)
+      o.line_position = at_a ? FT(0) : (piece.b - piece.a).squared_length();
+    else
+      o.arc_position = at_a ? piece.frame().start() : piece.frame().at(p - piece.centre);
+    return o;
+  }
   if (!piece.arc) {
     Vector d = piece.b - piece.a;
     FT length = exact_root(d.squared_length());
@@ -73,6 +87,38 @@ CGAL::Sign later(const PathPiece& piece, const OnPiece& p, const OnPiece& q) {
 }
 }  // namespace
 
+// Whether q lies on the carrier (exact; only zero in a degenerate case, decided by the filter
+// otherwise).
+bool on_carrier(const Carrier<Kernel>& c, const Point& q) {
+  if (!c.circle) return CGAL::sign(CGAL::determinant(c.direction, q - c.point)) == CGAL::ZERO;
+  return CGAL::compare((q - c.point).squared_length(), c.radius * c.radius) == CGAL::EQUAL;
+}
+
+// The carriers' common points when a piece's end q is known to be one of them: q itself (the
+// same numbers, so locating it at that end needs no zero test) and the other one, found without
+// a new square root (Vieta on the line, the mirror image across the line of centres). A crossing
+// exactly at an end otherwise costs CORE a zero test of nested radicals (minutes; campaign 81).
+std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier<Kernel>& c, const Point& q) {
+  std::vector<Point> out{q};
+  if (h.circle != c.circle) {
+    const Carrier<Kernel>& l = h.circle ? c : h;
+    const Carrier<Kernel>& k = h.circle ? h : c;
+    Vector pc = l.point - k.point;
+    FT a = l.direction.squared_length(), b = l.direction * pc;
+    FT disc = b * b - a * (pc.squared_length() - k.radius * k.radius);
+    if (CGAL::sign(disc) == CGAL::ZERO) return out;  // tangent: q is the only one
+    FT tq = (q - l.point) * l.direction / a;
+    out.push_back(l.point + l.direction * (FT(-2) * b / a - tq));
+    return out;
+  }
+  Vector d = c.point - h.point;
+  FT dd = d.squared_length();
+  Point m = h.point + d * (((q - h.point) * d) / dd);  // q's foot on the line of centres
+  if (m == q) return out;                              // on that line: tangent circles
+  out.push_back(m + (m - q));
+  return out;
+}
+
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
 PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from) {
   PieceCrossing out;
@@ -85,7 +131,14 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     Carrier<Kernel> c = e.carrier();
     std::optional<FT> depth;
     if (h.circle || c.circle) depth = -carrier_gap<Kernel>(h, c);
-    std::vector<Point> xs = carrier_intersections<Kernel>(h, c);
+    std::vector<Point> xs;
+    if (h.circle || c.circle) {  // (two lines: one intersection, cheap; or parallel, below)
+      for (const Point* q : {&held.a, &held.b})
+        if (xs.empty() && on_carrier(c, *q)) xs = intersections_through(h, c, *q);
+      for (const Point* q : {&e.a, &e.b})
+        if (xs.empty() && on_carrier(h, *q)) xs = intersections_through(h, c, *q);
+    }
+    if (xs.empty()) xs = carrier_intersections<Kernel>(h, c);
     if (!h.circle && !c.circle && xs.empty()) {
       // Parallel lines never cross; collinear ones (distance 0) are the knife edge of crossing.
       FT gap = CGAL::abs(CGAL::determinant(h.direction, c.point - h.point)) / exact_root(h.direction.squared_length());

@@ -44,10 +44,11 @@ struct PieceCrossing {
 // The floating-point filter's value of an exact number, computed when it was built: enough to
 // pick the least or largest of exact margins. CGAL::to_double would evaluate the expression to 53
 // bits, which costs CORE a root-bound evaluation wherever an inner difference is exactly zero.
-// The filter gives up (NaN) on a quotient by an uncertain divisor: then the evaluation it is.
+// The filter gives up (NaN) on a quotient by an uncertain divisor: then an evaluation to 2^-64
+// units absolute (not to_double's 53 relative bits, which an exact zero pushes to 2^-1024).
 inline double rough(const FT& x) {
   double v = x.Rep()->ffVal.getValue();
-  return std::isfinite(v) ? v : CGAL::to_double(x);
+  return std::isfinite(v) ? v : x.approx(CORE::extLong(53), CORE::extLong(64)).doubleValue();
 }
 
 // The largest near miss so far; a crossing's margin, lowered to a nearer miss before it.
