@@ -20,6 +20,15 @@ double distance(const PathPoint& a, const PathPoint& b) {
 }
 }  // namespace
 
+namespace {
+// A corner of deflection cosine `cosine`: kappa, and chi where a circle makes it a crossing of carriers.
+void count_corner(Conditioning& c, double cosine, bool circle) {
+  if (!std::isfinite(cosine)) return;
+  c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
+  if (circle) c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
+}
+}  // namespace
+
 Conditioning conditioning_of(const std::vector<Block>& program, int window, const RunResult* generated) {
   Conditioning c;
   // End tangents of the last `window` traversing blocks: the look-ahead and CDON intersect a
@@ -84,12 +93,9 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
       // multiples of each other): they do not count.
       if (std::isfinite(sine) && sine > 0) c.crossing = std::max(c.crossing, 1 / sine);
     }
-    if (have_prev) {
-      double cosine = (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb));
-      if (std::isfinite(cosine)) c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
-      if (std::isfinite(cosine) && (b.is_arc() || prev_arc))
-        c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
-    }
+    if (have_prev)
+      count_corner(c, (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb)),
+                   b.is_arc() || prev_arc);
     prev_a = ua, prev_b = ub, have_prev = true, prev_arc = b.is_arc();
     recent.emplace_back(ua, ub);
     if (static_cast<int>(recent.size()) > window + 1) recent.erase(recent.begin());
@@ -135,11 +141,8 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     if (!lead || !first) continue;
     auto [da, db] = tangent(*lead, ax, false);
     auto [ta, tb] = lead_after ? tangent(*last, ax, true) : tangent(*first, ax, false);
-    double cosine = (da * ta + db * tb) / (std::hypot(da, db) * std::hypot(ta, tb));
-    if (!std::isfinite(cosine)) continue;
-    c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
-    if ((lead_after ? last : first)->type == ElementType::kArc)
-      c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
+    count_corner(c, (da * ta + db * tb) / (std::hypot(da, db) * std::hypot(ta, tb)),
+                 (lead_after ? last : first)->type == ElementType::kArc);
   }
 }
 
