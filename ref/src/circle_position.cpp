@@ -47,9 +47,11 @@ double CircleFrame::radians(const CirclePosition& from, const CirclePosition& to
   // the exact comparison gives: (0, 2 pi) when `to` lies later in the turn, (-2 pi, 0) earlier.
   double d = std::atan2(sense_ * (ax * by - ay * bx), ax * bx + ay * by);
   const double pi = std::acos(-1.0);
+  // A d of the wrong sign is a rounding at a tie (tiny) or a rotation past pi (atan2's range):
+  // 1e-9 rad lies far above the one and far below the other.
   if (in_turn == CGAL::ZERO) d = 0;
-  else if (in_turn == CGAL::POSITIVE && d <= 0) d = d > -pi / 2 ? 0 : d + 2 * pi;
-  else if (in_turn == CGAL::NEGATIVE && d >= 0) d = d < pi / 2 ? 0 : d - 2 * pi;
+  else if (in_turn == CGAL::POSITIVE && d <= 0) d = d > -1e-9 ? 0 : d + 2 * pi;
+  else if (in_turn == CGAL::NEGATIVE && d >= 0) d = d < 1e-9 ? 0 : d - 2 * pi;
   return d + 2 * pi * static_cast<double>(to.turns - from.turns);
 }
 
