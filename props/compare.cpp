@@ -21,11 +21,15 @@ double distance(const PathPoint& a, const PathPoint& b) {
 }  // namespace
 
 namespace {
-// A corner of deflection cosine `cosine`: kappa, and chi where a circle makes it a crossing of carriers.
+// A corner of deflection cosine `cosine`: kappa, and chi where a circle makes it a crossing of
+// carriers. A reversal or tangency within rounding (4 u) builds no intersection (a circle, or the
+// common normal point): it does not count. Were the engines to intersect there after all, the
+// tolerance is too tight and the campaign reports it -- the safe side.
 void count_corner(Conditioning& c, double cosine, bool circle) {
   if (!std::isfinite(cosine)) return;
-  c.corner = std::max(c.corner, 1 / std::max(1 + cosine, 1e-300));
-  if (circle) c.crossing = std::max(c.crossing, 1 / std::max(std::sqrt(std::max(0.0, 1 - cosine * cosine)), 1e-300));
+  if (1 + cosine > 4 * kUnitRoundoff) c.corner = std::max(c.corner, 1 / (1 + cosine));
+  double sine = std::sqrt(std::max(0.0, 1 - cosine * cosine));
+  if (circle && sine > 4 * kUnitRoundoff) c.crossing = std::max(c.crossing, 1 / sine);
 }
 }  // namespace
 
@@ -91,7 +95,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
       double sine = std::fabs(pa * tb - pb * ta) / (std::hypot(pa, pb) * std::hypot(ta, tb));
       // Exactly parallel blocks have no intersection to compute (programmed directions are
       // multiples of each other): they do not count.
-      if (std::isfinite(sine) && sine > 0) c.crossing = std::max(c.crossing, 1 / sine);
+      if (std::isfinite(sine) && sine > 4 * kUnitRoundoff) c.crossing = std::max(c.crossing, 1 / sine);
     }
     if (have_prev)
       count_corner(c, (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb)),
@@ -125,14 +129,6 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
   for (const PathElement& e : ref.path)
     for (const PathPoint* p : {&e.start, &e.end, &e.center})
       c.reach = std::max({c.reach, std::fabs(p->x), std::fabs(p->y), std::fabs(p->z)});
-  // Carriers that nearly touch (a gap g, mm) cross at about sqrt(2 |g| / R), R <= L: the corner's
-  // deflection may be large while the intersection is as ill-conditioned as a tangency.
-  for (const Decision& d : ref.decisions) {
-    bool gap = d.clause == "TRC-ARC-CORNER-1" ||
-               (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses"));
-    double g = std::fabs(margin_value(d));
-    if (gap && d.has_margin && g > 0) c.crossing = std::max(c.crossing, std::sqrt(c.size / (2 * g)));
-  }
   for (const Block& b : program) {
     if (!b.is_sar_block()) continue;
     PlaneAxes ax = plane_axes(b.state.plane);
@@ -151,6 +147,16 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     auto [ta, tb] = lead_after ? tangent(*last, ax, true) : tangent(*first, ax, false);
     count_corner(c, (da * ta + db * tb) / (std::hypot(da, db) * std::hypot(ta, tb)),
                  (lead_after ? last : first)->type == ElementType::kArc);
+  }
+  // Carriers that nearly touch (a gap g, mm) cross at about sqrt(2 |g| / R), R <= L: the corner's
+  // deflection may be large while the intersection is as ill-conditioned as a tangency. A gap
+  // within the tolerance is a touching decision (compare: the touching tolerance) instead.
+  const double touching = Tolerance::for_program(c).coordinate;
+  for (const Decision& d : ref.decisions) {
+    bool gap = d.clause == "TRC-ARC-CORNER-1" ||
+               (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses"));
+    double g = std::fabs(margin_value(d));
+    if (gap && d.has_margin && g > touching) c.crossing = std::max(c.crossing, std::sqrt(c.size / (2 * g)));
   }
 }
 

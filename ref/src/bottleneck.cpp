@@ -96,7 +96,8 @@ bool on_carrier(const Carrier<Kernel>& c, const Point& q) {
 
 // The carriers' common points when a piece's end q is known to be one of them: q itself (the
 // same numbers, so locating it at that end needs no zero test) and the other one, found without
-// a new square root (Vieta on the line, the mirror image across the line of centres). A crossing
+// a new square root (Vieta on the line, the mirror image across the line of centres); none for
+// one and the same circle. A crossing
 // exactly at an end otherwise costs CORE a zero test of nested radicals (minutes; campaign 81).
 std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier<Kernel>& c, const Point& q) {
   std::vector<Point> out{q};
@@ -113,6 +114,7 @@ std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier
   }
   Vector d = c.point - h.point;
   FT dd = d.squared_length();
+  if (CGAL::sign(dd) == CGAL::ZERO) return {};  // the same circle: no crossing (as concentric ones)
   Point m = h.point + d * (((q - h.point) * d) / dd);  // q's foot on the line of centres
   if (m == q) return out;                              // on that line: tangent circles
   out.push_back(m + (m - q));
