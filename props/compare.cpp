@@ -153,8 +153,11 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
   // within the tolerance is a touching decision (compare: the touching tolerance) instead.
   const double touching = Tolerance::for_program(c).coordinate;
   for (const Decision& d : ref.decisions) {
+    // (TRC-CD-3, TRC-LOOK-2, TRC-EDGE-5: the least slack counts the carriers' overlap as well.)
     bool gap = d.clause == "TRC-ARC-CORNER-1" ||
-               (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses"));
+               (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses")) ||
+               (d.clause == "TRC-CD-3" && d.branch == "cut") || (d.clause == "TRC-LOOK-2" && d.branch == "intersection") ||
+               (d.clause == "TRC-EDGE-5" && d.branch == "hit");
     double g = std::fabs(margin_value(d));
     if (gap && d.has_margin && g > touching) c.crossing = std::max(c.crossing, std::sqrt(c.size / (2 * g)));
   }
@@ -192,7 +195,7 @@ namespace {
 bool touching_carriers(const Decision& d, const Tolerance& tol) {
   bool kind = (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses")) ||
               d.clause == "TRC-ARC-CORNER-1" || (d.clause == "TRC-EDGE-5" && d.branch == "hit") ||
-              (d.clause == "TRC-EDGE-6" && d.branch == "circle");
+              (d.clause == "TRC-EDGE-6" && d.branch == "circle") || d.clause == "TRC-LOOK-2";
   return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
 }
 }  // namespace
