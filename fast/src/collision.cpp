@@ -40,7 +40,7 @@ bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry&
   }
   en.count = 0;
   Vec2 prev_end = Element::offset(prev.end, prev.end_tangent(), sr);
-  if (c.kind == Corner::Kind::kOuter && !outer_corner_circle(m.line, m.g451, c, false)) {
+  if (c.kind == Corner::Kind::kOuter && !outer_corner_circle(m.line, m.g451, c)) {
     // G451 (TRC-G451-1, TRC-ARC-CORNER-1): both equidistants extended to their intersection;
     // none found (circles) is the circle (TRC-ARC-CORNER-2).
     Vec2 x;

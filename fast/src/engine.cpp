@@ -265,17 +265,17 @@ void Engine::State::corner(const Block& b, const BlockCopy& copy) {
   open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
 }
 
-bool Engine::State::outer_corner_circle(int line_no, bool g451, const Corner& c, bool traced) {
+bool Engine::State::outer_corner_circle(int line_no, bool g451, const Corner& c) {
   double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
   if (g451) {  // TRC-CORNER-3: G451 switches to G450 above MD20210
     double limit = md.cutcom_corner_limit.to_double();
     bool circle = angle > limit;
-    if (traced) decide("TRC-CORNER-3", line_no, circle ? "switch-to-G450" : "keep-G451", angle - limit);
+    decide("TRC-CORNER-3", line_no, circle ? "switch-to-G450" : "keep-G451", angle - limit);
     return circle;
   }
   double limit = md.cutcom_curve_insert_limit.to_double();  // TRC-CORNER-4: G450 to G451 below MD20230
   bool circle = !(angle < limit);
-  if (traced) decide("TRC-CORNER-4", line_no, circle ? "keep-G450" : "switch-to-G451", angle - limit);
+  decide("TRC-CORNER-4", line_no, circle ? "keep-G450" : "switch-to-G451", angle - limit);
   return circle;
 }
 

@@ -369,7 +369,7 @@ struct Engine::State {
 
   // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
   // deciding block's G450/G451, switched by the contour angle (TRC-CORNER-2, degrees).
-  bool outer_corner_circle(int line_no, bool g451, const Corner& c, bool traced = true);
+  bool outer_corner_circle(int line_no, bool g451, const Corner& c);
 
   // Where a point lies on an element's equidistant: length from its normal start, left to its end.
   struct Extent {

@@ -87,7 +87,7 @@ bool Reference::outer_corner_is_circle(const Block& m, const ContourElement& pre
                                        const std::optional<CornerClass>& rc) {
   FT cross = rc ? to_ft(rc->cross) : prev.end_dir.x() * next.start_dir.y() - prev.end_dir.y() * next.start_dir.x();
   FT dot = rc ? to_ft(rc->dot) : prev.end_dir * next.start_dir;
-  if (outer_corner_circle(m, rc, cross, dot, false)) return true;
+  if (outer_corner_circle(m, rc, cross, dot)) return true;  // traced: the entry may part the runs here
   if (!prev.is_arc() && !next.is_arc()) {
     FT trim = corner_trim<Kernel>(cross, dot, prev.length, next.length, comp_->side_radius);
     g451_point_ = corner_intersection<Kernel>(prev.b, prev.normal, prev.d, prev.length, comp_->side_radius, trim);

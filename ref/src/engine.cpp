@@ -280,7 +280,7 @@ void Reference::corner(const Block& next_block) {
 }
 
 bool Reference::outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross,
-                                    const FT& dot, bool traced) {
+                                    const FT& dot) {
   bool g451 = at_block.state.corner == CornerMode::kG451;
   const Decimal& limit = g451 ? md_.cutcom_corner_limit : md_.cutcom_curve_insert_limit;
   AngleComparison a;
@@ -294,11 +294,11 @@ bool Reference::outer_corner_circle(const Block& at_block, const std::optional<C
   }
   if (g451) {
     bool circle = a.sign > 0;
-    if (traced) decide("TRC-CORNER-3", at_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
+    decide("TRC-CORNER-3", at_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
     return circle;
   }
   bool circle = !(a.sign < 0);
-  if (traced) decide("TRC-CORNER-4", at_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
+  decide("TRC-CORNER-4", at_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
   return circle;
 }
 

@@ -255,8 +255,7 @@ class Reference {
 
   // TRC-CORNER-3 / TRC-CORNER-4: is an outer corner made with the transition circle? By the
   // G450/G451 of `at_block`, switched by the contour angle (exactly; rational where `rc` is given).
-  bool outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross, const FT& dot,
-                           bool traced = true);
+  bool outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross, const FT& dot);
 
   // Where a point lies on an element's equidistant (normal start to normal end): the signed length
   // from the normal start, and what is left to the normal end; exact. Empty if it lies within.
@@ -348,9 +347,9 @@ class Reference {
   };
   std::optional<Entry> entry_of(const Block& m, const Block& before);
 
-  // The outer corner of the entry as corner() will make it (TRC-CORNER-3/4 untraced here): true
-  // for the circle; false for G451, with the intersection in g451_point_ (TRC-ARC-CORNER-2: none
-  // found is the circle).
+  // The outer corner of the entry as corner() will make it: true for the circle; false for G451,
+  // with the intersection in g451_point_ (TRC-ARC-CORNER-2: none found is the circle). TRC-CORNER-3/4
+  // are traced here too: an angle exactly on the threshold may part the runs at the entry.
   bool outer_corner_is_circle(const Block& m, const ContourElement& prev, const FT& prev_radius,
                               const ContourElement& next, const FT& next_radius, const std::optional<CornerClass>& rc);
   std::optional<Point> g451_point_;
