@@ -97,7 +97,7 @@ int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]) {
 }
 
 // Of two intersections the nearer; of two equally near the one further along `ahead`. Equally
-// near within 1e-10 of the scale: `near` on the line of centres (aligned centres, common in
+// near within 1e-12 of the scale: `near` on the line of centres (aligned centres, common in
 // programs and in SAR's circles by construction) is an exact tie for ref, which the doubles'
 // distances, off by the rounding of everything before them, would break at random.
 bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out) {
@@ -108,7 +108,7 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
   if (n == 2) {
     double d0 = norm(xs[0] - near), d1 = norm(xs[1] - near);
     double scale = std::fabs(near.a) + std::fabs(near.b) + d0 + d1;
-    bool tie = std::fabs(d1 - d0) <= 1e-10 * scale;
+    bool tie = std::fabs(d1 - d0) <= 1e-12 * scale;
     if (tie ? dot(xs[1] - near, ahead) > dot(xs[0] - near, ahead) : d1 < d0) out = xs[1];
   }
   return true;
