@@ -87,6 +87,7 @@ CGAL::Sign later(const PathPiece& piece, const OnPiece& p, const OnPiece& q) {
 }
 }  // namespace
 
+namespace {
 // Whether q lies on the carrier (exact; only zero in a degenerate case, decided by the filter
 // otherwise).
 bool on_carrier(const Carrier<Kernel>& c, const Point& q) {
@@ -97,8 +98,8 @@ bool on_carrier(const Carrier<Kernel>& c, const Point& q) {
 // The carriers' common points when a piece's end q is known to be one of them: q itself (the
 // same numbers, so locating it at that end needs no zero test) and the other one, found without
 // a new square root (Vieta on the line, the mirror image across the line of centres); none for
-// one and the same circle. A crossing
-// exactly at an end otherwise costs CORE a zero test of nested radicals (minutes; campaign 81).
+// one and the same circle. A crossing exactly at an end otherwise costs CORE a zero test of
+// nested radicals (minutes; campaign 81).
 std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier<Kernel>& c, const Point& q) {
   std::vector<Point> out{q};
   if (h.circle != c.circle) {
@@ -120,6 +121,7 @@ std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier
   out.push_back(m + (m - q));
   return out;
 }
+}  // namespace
 
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
 PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from) {
