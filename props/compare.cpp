@@ -197,7 +197,7 @@ bool touching_carriers(const Decision& d, const Tolerance& tol) {
   bool kind = (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses")) ||
               d.clause == "TRC-ARC-CORNER-1" || (d.clause == "TRC-EDGE-5" && d.branch == "hit") ||
               (d.clause == "TRC-EDGE-6" && d.branch == "circle") || d.clause == "TRC-LOOK-2" ||
-              d.clause == "TRC-CD-5" || d.clause == "TRC-CD-6";
+              d.clause == "TRC-CD-5" || d.clause == "TRC-CD-6" || (d.clause == "TRC-CD-2" && d.branch == "entry");
   return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
 }
 }  // namespace
