@@ -104,8 +104,9 @@ std::string write_corpus(const std::string& dir, const std::string& name, const 
                          const std::string& why) {
   std::filesystem::create_directories(dir);
   std::string base = dir + "/" + name;
-  std::string program = to_program(c);
-  std::ofstream(base + ".mpf") << "; found by cutcom certify: " << why << "\n" << program;
+  // ref reads the file as written, comment included: its line numbers are the file's.
+  std::string program = "; found by cutcom certify: " + why + "\n" + to_program(c);
+  std::ofstream(base + ".mpf") << program;
   std::ofstream(base + ".md") << machine_data_text(c);
   MachineData md = machine_data_of(c);
   std::istringstream in(program);
@@ -155,6 +156,11 @@ ReplayVerdict replay(const std::string& program, const MachineData& md) {
 std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k) {
   ContourCase c = generate(seed, k).value();
   return {to_program(c), machine_data_text(c)};
+}
+
+std::string write_corpus_case(const std::string& dir, const std::string& name, std::uint64_t seed, long k,
+                              const std::string& why) {
+  return write_corpus(dir, name, generate(seed, k).value(), why);
 }
 
 namespace {

@@ -101,6 +101,10 @@ ReplayVerdict replay(const std::string& program, const MachineData& md);
 
 // Case k of a campaign: its program text and machine data (NAME=VALUE lines), to replay it.
 std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k);
+// Writes case k of campaign `seed` to `dir`/`name`.mpf with its .md and ref's output .ref.json
+// (what a divergence leaves in tests/corpus); returns the .mpf's path.
+std::string write_corpus_case(const std::string& dir, const std::string& name, std::uint64_t seed, long k,
+                              const std::string& why);
 
 // The seed of case k of a campaign (splitmix64 of seed and k): shards agree on it.
 std::uint64_t case_seed(std::uint64_t seed, long k);

@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
+#include "campaign.hpp"
 #include "compare.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/output.hpp"
@@ -35,6 +37,38 @@ bool run(const std::string& engine, const std::string& text, const MachineData& 
   }
 }
 
+// PROP-CORPUS-1 for one case: ref gives the stored output exactly, fast agrees with it.
+void replays(const std::filesystem::path& p) {
+  std::string text = slurp(p);
+  MachineData md;
+  std::filesystem::path md_file = p;
+  md_file.replace_extension(".md");
+  if (std::filesystem::exists(md_file)) {
+    std::ifstream in(md_file);
+    md.load(in, md_file.string());
+  }
+  // ref: exactly the stored output.
+  std::ostringstream json;
+  JsonWriter writer(json, "ref", false);
+  run("ref", text, md, writer);
+  writer.finish();
+  std::filesystem::path expected = p;
+  expected.replace_extension(".ref.json");
+  EXPECT_EQ(json.str(), slurp(expected)) << "ref's output changed";
+  // fast: agrees with ref, decisions first.
+  CollectingSink r, f;
+  run("ref", text, md, r);
+  run("fast", text, md, f);
+  std::istringstream in(text);
+  ProgramReader reader(in, md.initial_state());
+  std::vector<Block> blocks;
+  Block b;
+  while (reader.next(b)) blocks.push_back(b);
+  Verdict v = compare(r.result, f.result,
+                      Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks, &r.result)));
+  EXPECT_NE(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+}
+
 // covers: PROP-CORPUS-1 PROP-DIFF-1
 TEST(Corpus, EveryCaseReplays) {
   std::vector<std::filesystem::path> cases;
@@ -44,35 +78,23 @@ TEST(Corpus, EveryCaseReplays) {
   ASSERT_FALSE(cases.empty());
   for (const auto& p : cases) {
     SCOPED_TRACE(p.filename().string());
-    std::string text = slurp(p);
-    MachineData md;
-    std::filesystem::path md_file = p;
-    md_file.replace_extension(".md");
-    if (std::filesystem::exists(md_file)) {
-      std::ifstream in(md_file);
-      md.load(in, md_file.string());
-    }
-    // ref: exactly the stored output.
-    std::ostringstream json;
-    JsonWriter writer(json, "ref", false);
-    run("ref", text, md, writer);
-    writer.finish();
-    std::filesystem::path expected = p;
-    expected.replace_extension(".ref.json");
-    EXPECT_EQ(json.str(), slurp(expected)) << "ref's output changed";
-    // fast: agrees with ref, decisions first.
-    CollectingSink r, f;
-    run("ref", text, md, r);
-    run("fast", text, md, f);
-    std::istringstream in(text);
-    ProgramReader reader(in, md.initial_state());
-    std::vector<Block> blocks;
-    Block b;
-    while (reader.next(b)) blocks.push_back(b);
-    Verdict v = compare(r.result, f.result,
-                        Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks, &r.result)));
-    EXPECT_NE(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+    replays(p);
   }
+}
+
+// What a divergence leaves behind replays as written: ref's output of the file itself, comment
+// line included (campaign 20261122: the stored output had every line number one short).
+// covers: PROP-CORPUS-1
+TEST(Corpus, AWrittenCaseReplays) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("cutcom-corpus-test-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  for (long k : {0L, 3L, 4L, 5L}) {
+    SCOPED_TRACE(k);
+    std::filesystem::path p = write_corpus_case(dir.string(), "case-" + std::to_string(k), 20261122, k, "a test");
+    ASSERT_TRUE(std::filesystem::exists(p));
+    replays(p);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -44,11 +44,19 @@ struct PieceCrossing {
 // The floating-point filter's value of an exact number, computed when it was built: enough to
 // pick the least or largest of exact margins. CGAL::to_double would evaluate the expression to 53
 // bits, which costs CORE a root-bound evaluation wherever an inner difference is exactly zero.
-// The filter gives up (NaN) on a quotient by an uncertain divisor: then an evaluation to 2^-64
-// units absolute (not to_double's 53 relative bits, which an exact zero pushes to 2^-1024).
+// The value counts only within its error bound (1e-6 relative or 2^-30 units): a square root of an
+// uncertain or NaN value leaves 0 with an infinite bound (campaign case 215678: a chord of 3.5 mm
+// read 0). Otherwise an evaluation to 2^-64 units absolute (not to_double's 53 relative bits,
+// which an exact zero pushes to 2^-1024).
 inline double rough(const FT& x) {
-  double v = x.Rep()->ffVal.getValue();
-  return std::isfinite(v) ? v : x.approx(CORE::extLong(53), CORE::extLong(64)).doubleValue();
+  const CORE::filteredFp& f = x.Rep()->ffVal;
+  double v = f.getValue();
+  if (std::isfinite(v)) {
+    // The bound is private: it is within delta when v and v + delta have told signs apart.
+    double delta = std::max(std::fabs(v) * 1e-6, std::ldexp(1.0, -30));
+    if ((f - CORE::filteredFp(v + delta)).isOK()) return v;
+  }
+  return x.approx(CORE::extLong(53), CORE::extLong(64)).doubleValue();
 }
 
 // The largest near miss so far; a crossing's margin, lowered to a nearer miss before it.
