@@ -1,9 +1,8 @@
 #include "campaign.hpp"
 
 #include <fmt/format.h>
-#include <rapidcheck.h>
-
 #include <poll.h>
+#include <rapidcheck.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -326,8 +325,12 @@ CampaignSummary run_campaign(const CampaignOptions& o) {
     s.add(r);
     ++done_cases;
     if (results.is_open())
-      results << nlohmann::json{{"case", r.k},           {"source", r.source}, {"style", r.style},
-                                {"verdict", r.verdict},  {"clause", r.clause}, {"error", r.error},
+      results << nlohmann::json{{"case", r.k},
+                                {"source", r.source},
+                                {"style", r.style},
+                                {"verdict", r.verdict},
+                                {"clause", r.clause},
+                                {"error", r.error},
                                 {"ms", std::round(r.ms * 1000) / 1000}}
                      .dump()
               << "\n";
@@ -374,9 +377,9 @@ nlohmann::json CaseRecord::to_json() const {
   nlohmann::json d = nlohmann::json::object();
   for (const auto& [id, branches] : decisions)
     for (const auto& [branch, n] : branches) d[id][branch] = {n.first, n.second};
-  return {{"k", k},         {"source", source}, {"style", style},         {"verdict", verdict},
-          {"clause", clause}, {"why", explanation}, {"alarm", alarm},     {"error", error},
-          {"ratio", ratio}, {"ms", ms},         {"decisions", d}, {"evidence", evidence}};
+  return {{"k", k},           {"source", source},   {"style", style}, {"verdict", verdict},
+          {"clause", clause}, {"why", explanation}, {"alarm", alarm}, {"error", error},
+          {"ratio", ratio},   {"ms", ms},           {"decisions", d}, {"evidence", evidence}};
 }
 
 CaseRecord CaseRecord::from_json(const nlohmann::json& j) {

@@ -156,7 +156,8 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     // (TRC-CD-3, TRC-LOOK-2, TRC-EDGE-5: the least slack counts the carriers' overlap as well.)
     bool gap = d.clause == "TRC-ARC-CORNER-1" ||
                (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses")) ||
-               (d.clause == "TRC-CD-3" && d.branch == "cut") || (d.clause == "TRC-LOOK-2" && d.branch == "intersection") ||
+               (d.clause == "TRC-CD-3" && d.branch == "cut") ||
+               (d.clause == "TRC-LOOK-2" && d.branch == "intersection") ||
                (d.clause == "TRC-EDGE-5" && d.branch == "hit");
     double g = std::fabs(margin_value(d));
     if (gap && d.has_margin && g > touching) c.crossing = std::max(c.crossing, std::sqrt(c.size / (2 * g)));
@@ -179,11 +180,11 @@ double Tolerance::band(std::string_view clause) const {
   if (clause == "TRC-CD-2") return std::max(sine, coordinate);  // the entry's corner kind, or where it starts
   if (clause == "TRC-CORNER-3" || clause == "TRC-CORNER-4") return degrees;
   if (clause == "TRC-ELEMENT-1" || clause == "TRC-ARC-ELEMENT-1" || clause == "TRC-APPR-NORM-1" ||
-      clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-EDGE-5" || clause == "TRC-EDGE-6" || clause == "TRC-CD-5" ||
-      clause == "TRC-CD-6" ||
-      clause == "TRC-LOOK-1" || clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" ||
-      clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1" || clause == "TRC-CD-3" || clause == "SAR-SIDE-2" ||
-      clause == "SAR-DISR-1" || clause == "SAR-DISR-2" || clause == "SAR-DISCL-3" || clause == "SAR-SUB-1")
+      clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-EDGE-5" ||
+      clause == "TRC-EDGE-6" || clause == "TRC-CD-5" || clause == "TRC-CD-6" || clause == "TRC-LOOK-1" ||
+      clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" || clause == "ARC-CR-1" ||
+      clause == "TRC-ARC-CORNER-1" || clause == "TRC-CD-3" || clause == "SAR-SIDE-2" || clause == "SAR-DISR-1" ||
+      clause == "SAR-DISR-2" || clause == "SAR-DISCL-3" || clause == "SAR-SUB-1")
     return coordinate;
   return 0;  // decisions on exact decimals (block kinds, alarms) never diverge
 }
@@ -212,8 +213,8 @@ bool parted_after_touching(const RunResult& ref, std::size_t upto, const Toleran
                            Verdict& v) {
   for (std::size_t k = 0; k < upto; ++k) {
     const Decision& p = ref.decisions[k];
-    bool touching_crossing = p.clause == "TRC-CD-3" && p.branch == "cut" && p.has_margin &&
-                             std::fabs(margin_value(p)) <= tol.band(p.clause);
+    bool touching_crossing =
+        p.clause == "TRC-CD-3" && p.branch == "cut" && p.has_margin && std::fabs(margin_value(p)) <= tol.band(p.clause);
     if (touching_crossing || touching_carriers(p, tol)) {
       v.kind = Verdict::Kind::kKnifeEdge;
       v.clause = std::string(p.clause);
@@ -298,9 +299,10 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     if (!(e <= tol.coordinate) && touch && e <= tol.touching) {
       if (v.kind != Verdict::Kind::kKnifeEdge)
         v.kind = Verdict::Kind::kKnifeEdge, v.clause = std::string(touch->clause),
-        v.explanation = fmt::format("element {} ({}) differs by {:.3g} mm after touching carriers at line {} "
-                                    "(within {:.3g} mm)",
-                                    i, describe(r.origin), e, touch->line, tol.touching);
+        v.explanation = fmt::format(
+            "element {} ({}) differs by {:.3g} mm after touching carriers at line {} "
+            "(within {:.3g} mm)",
+            i, describe(r.origin), e, touch->line, tol.touching);
       continue;
     }
     if (!(e <= tol.coordinate))

@@ -3,12 +3,12 @@
 // stored output exactly, and fast must agree with it (PROP-DIFF-1). docs/edge-cases.md explains
 // each case.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "campaign.hpp"
 #include "compare.hpp"
@@ -86,7 +86,8 @@ TEST(Corpus, EveryCaseReplays) {
 // line included (campaign 20261122: the stored output had every line number one short).
 // covers: PROP-CORPUS-1
 TEST(Corpus, AWrittenCaseReplays) {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("cutcom-corpus-test-" + std::to_string(::getpid()));
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("cutcom-corpus-test-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   for (long k : {0L, 3L, 4L, 5L}) {
     SCOPED_TRACE(k);

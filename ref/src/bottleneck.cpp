@@ -42,9 +42,7 @@ struct OnPiece {
   CirclePosition arc_position;
 };
 // The very same exact numbers (shared by construction), without a zero test.
-bool same_point(const Point& p, const Point& q) {
-  return p.x().Rep() == q.x().Rep() && p.y().Rep() == q.y().Rep();
-}
+bool same_point(const Point& p, const Point& q) { return p.x().Rep() == q.x().Rep() && p.y().Rep() == q.y().Rep(); }
 
 OnPiece locate(const PathPiece& piece, const Point& p) {
   OnPiece o;
@@ -115,7 +113,7 @@ std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier
   }
   Vector d = c.point - h.point;
   FT dd = d.squared_length();
-  if (CGAL::sign(dd) == CGAL::ZERO) return {};  // the same circle: no crossing (as concentric ones)
+  if (CGAL::sign(dd) == CGAL::ZERO) return {};         // the same circle: no crossing (as concentric ones)
   Point m = h.point + d * (((q - h.point) * d) / dd);  // q's foot on the line of centres
   if (m == q) return out;                              // on that line: tangent circles
   out.push_back(m + (m - q));
@@ -151,10 +149,8 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     for (const Point& p : xs) {
       OnPiece on_held = locate(held, p), on_entry = locate(e, p);
       bool on = on_held.on && on_entry.on;
-      // The margin: the least slack; off a piece, the violated one.
-      FT slack = on_held.slack;
-      if (on ? approx_less(on_entry.slack, slack) : !on_entry.on && (on_held.on || approx_less(slack, on_entry.slack)))
-        slack = on_entry.slack;
+      // The margin: the least slack (off a piece, the violated one; off both, the worse).
+      FT slack = approx_less(on_entry.slack, on_held.slack) ? on_entry.slack : on_held.slack;
       if (on && depth && approx_less(*depth, slack)) slack = *depth;
       if (!on) {
         if (!out.near_miss || approx_less(*out.near_miss, slack)) out.near_miss = slack;

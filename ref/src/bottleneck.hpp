@@ -4,12 +4,11 @@
 #pragma once
 
 #include <cmath>
-
 #include <optional>
 #include <vector>
 
-#include "equidistant.hpp"
 #include "circle_position.hpp"
+#include "equidistant.hpp"
 
 namespace cutcom::ref {
 
