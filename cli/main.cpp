@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -29,8 +31,45 @@ struct RunOptions {
   std::string output;
   std::vector<std::string> md;
   std::vector<std::string> md_files;
+  std::vector<std::string> tool_files;
+  std::string offsets_file;
   bool trace = false;
 };
+
+// A data file given on the command line is wrong: names the file and line (exit 2).
+class FileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// TOOL-FILE-1, NC-OFFSET-2: the control's tool table and settable offsets from files.
+struct ControlData {
+  cutcom::ToolTable tools;
+  cutcom::OffsetTable offsets;
+  void into(cutcom::ProgramReader& reader) const {
+    reader.tools() = tools;
+    reader.offsets() = offsets;
+  }
+};
+
+template <class Table>
+void load_file(Table& table, const std::string& file, const char* what) {
+  if (std::filesystem::is_directory(file)) throw FileError(fmt::format("{} file '{}' is a directory", what, file));
+  std::ifstream in(file);
+  if (!in) throw FileError(fmt::format("cannot open {} file '{}'", what, file));
+  try {
+    table.load(in, file);
+  } catch (const cutcom::InputError& e) {
+    throw FileError(fmt::format("{}:{}:{}: {}", file, e.line(), e.column(), e.detail()));
+  }
+}
+
+ControlData control_data(const RunOptions& o) {
+  ControlData c;
+  for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
+  if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
+  return c;
+}
 
 cutcom::MachineData machine_data(const RunOptions& o) {
   cutcom::MachineData md;
@@ -54,28 +93,62 @@ std::string read_all(std::istream& in) {
   return s.str();
 }
 
+// The output file is written beside its place and renamed when the run is done, so that a
+// rejected program leaves no empty or partial file behind (NC-ERR-3, CLI-1).
+class OutputFile {
+ public:
+  explicit OutputFile(const std::string& path) : path_(path), part_(path + ".part") {}
+  ~OutputFile() {
+    if (!committed_ && file_.is_open()) {
+      file_.close();
+      std::error_code ec;
+      std::filesystem::remove(part_, ec);
+    }
+  }
+  bool open() {
+    file_.open(part_);
+    return static_cast<bool>(file_);
+  }
+  std::ostream& stream() { return file_; }
+  void commit() {
+    file_.close();
+    std::filesystem::rename(part_, path_);
+    committed_ = true;
+  }
+
+ private:
+  std::string path_, part_;
+  std::ofstream file_;
+  bool committed_ = false;
+};
+
 int run_command(const RunOptions& o) {
   cutcom::MachineData md = machine_data(o);
+  ControlData control = control_data(o);
 
   std::ifstream file;
   std::istream* in = &std::cin;
   if (o.program != "-") {
+    if (std::filesystem::is_directory(o.program)) {
+      std::cerr << fmt::format("cutcom: '{}' is a directory, not an NC program\n", o.program);
+      return kBadInput;
+    }
     file.open(o.program);
     if (!file) {
-      std::cerr << fmt::format("cutcom: cannot open program '{}'\n", o.program);
+      std::cerr << fmt::format("cutcom: cannot open program '{}': {}\n", o.program, std::strerror(errno));
       return kBadInput;
     }
     in = &file;
   }
-  std::ofstream out_file;
+  std::unique_ptr<OutputFile> out_file;
   std::ostream* out = &std::cout;
   if (!o.output.empty() && o.output != "-") {
-    out_file.open(o.output);
-    if (!out_file) {
+    out_file = std::make_unique<OutputFile>(o.output);
+    if (!out_file->open()) {
       std::cerr << fmt::format("cutcom: cannot write '{}'\n", o.output);
       return kBadInput;
     }
-    out = &out_file;
+    out = &out_file->stream();
   }
 
   bool ok = true;
@@ -84,9 +157,11 @@ int run_command(const RunOptions& o) {
     std::string text = read_all(*in);
     std::istringstream first(text), second(text);
     cutcom::ProgramReader reader(first, md.initial_state());
+    control.into(reader);
     cutcom::CollectingSink sink;
     ok = run_engine(o.engine, reader, md, sink);
     cutcom::ProgramReader again(second, md.initial_state());
+    control.into(again);
     std::vector<cutcom::Block> blocks;
     cutcom::Block b;
     cutcom::Plane plane = cutcom::Plane::kG17;
@@ -100,15 +175,19 @@ int run_command(const RunOptions& o) {
   } else if (o.format == "json") {
     cutcom::JsonWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
+    control.into(reader);
     ok = run_engine(o.engine, reader, md, writer);
     writer.finish();
   } else {
     cutcom::TextWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
+    control.into(reader);
     ok = run_engine(o.engine, reader, md, writer);
     writer.finish();
   }
   out->flush();
+  if (in->bad()) throw std::runtime_error("read error on the program");
+  if (out_file) out_file->commit();
   return ok ? kDone : kAlarm;
 }
 
@@ -231,6 +310,9 @@ int main(int argc, char** argv) {
   run->add_option("--md", o.md, "machine datum NAME=VALUE, e.g. --md MD20204=0.02 (repeatable)");
   run->add_option("--md-file", o.md_files, "file of NAME=VALUE lines (repeatable)");
   run->add_flag("--trace", o.trace, "include the decision trace (text and json)");
+  run->add_option("--tools", o.tool_files,
+                  "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");
+  run->add_option("--offsets", o.offsets_file, "settable work offsets ($P_UIFR[n]=CTRANS(X,..,Y,..) lines)");
   std::vector<std::string> md_assignments;
   auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
   md->add_option("--md", md_assignments, "override NAME=VALUE before listing");
@@ -279,6 +361,9 @@ int main(int argc, char** argv) {
     return kBadInput;
   } catch (const cutcom::MachineDataError& e) {
     std::cerr << fmt::format("cutcom: machine data: {}\n", e.what());
+    return kBadInput;
+  } catch (const FileError& e) {
+    std::cerr << fmt::format("cutcom: {}\n", e.what());
     return kBadInput;
   } catch (const std::exception& e) {
     std::cerr << fmt::format("cutcom: internal error: {}\n", e.what());

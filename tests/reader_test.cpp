@@ -120,24 +120,32 @@ struct BadLine {
   std::string contains;
 };
 
-// covers: NC-LEX-6 NC-ERR-1 NC-END-1
+// covers: NC-LEX-6 NC-ERR-1 NC-ERR-3 NC-END-1
 TEST(Reader, BadInputNamesLineAndColumn) {
   const BadLine cases[] = {
-      {"G1 X10\nG1 Q5\n", 2, 4, "unknown address 'Q'"},
+      {"G1 X10\nG1 Q5\n", 2, 4, "'Q' is not a SINUMERIK word cutcom knows"},
       {"G1 X10 X20\n", 1, 8, "X programmed twice"},
       {"G1 G2 X1\n", 1, 4, "two G codes of the motion group"},
-      {"G54 X1\n", 1, 1, "G54 is not supported"},
+      {"G33 X1\n", 1, 1, "'G33' is SINUMERIK NC that cutcom does not simulate"},
+      {"R1=5\n", 1, 1, "'R1' is SINUMERIK NC that cutcom does not simulate (R parameters)"},
+      {"G1 R_T=5\n", 1, 4, "'R_T' is not a SINUMERIK word cutcom knows"},
+      {"G1 X=R1\n", 1, 6, "expressions and variables ('R1') are not supported yet"},
+      {"N10 GOTOF END\n", 1, 5, "'GOTOF' is SINUMERIK NC that cutcom does not simulate (control flow)"},
+      {"G1 X10 RND=2\n", 1, 8, "'RND' is SINUMERIK NC that cutcom does not simulate (contour definitions"},
+      {"G1 X10 Y=5+2\n", 1, 11, "expressions are not supported yet"},
+      {"MSG(\"open\n", 1, 1, "MSG: ')' expected"},
+      {"$P_UIFR[1]=CTRANS(X,1)\n", 1, 1, "system variable '$P_UIFR' is SINUMERIK NC that cutcom does not simulate"},
       {"X1.2.3\n", 1, 2, "X"},
       {"X0.0000000001\n", 1, 2, "more than 9 decimal places"},
       {"OFFN 5\n", 1, 6, "OFFN needs '='"},
       {"X=AC(5\n", 1, 7, "')' expected"},
-      {"$TC_DP3[1,1]=5\n", 1, 1, "$TC_DP3 is not supported"},
+      {"$TC_DP26[1,1]=5\n", 1, 1, "'$TC_DP26' is not a tool edge parameter"},
       {"$TC_DP6[1.1]=5\n", 1, 10, "',' expected"},
       {"N10 X1 M30\nN20 X2\n", 2, 1, "after the end of the program"},
       {"G2 X10 Y0\n", 1, 1, "G2/G3 needs the centre"},
       {"G1 I5 X1\n", 1, 1, "without G2/G3"},
       {"X#1\n", 1, 2, "X needs a number"},
-      {"/N10 X1\n", 1, 1, "unexpected character '/'"},
+      {"N10 X1 / 2\n", 1, 8, "unexpected character '/'"},
       {"T1.5\n", 1, 2, "T needs a whole number"},
   };
   for (const BadLine& c : cases) {

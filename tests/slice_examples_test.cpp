@@ -287,12 +287,29 @@ TEST(SliceExamples, DeselectionBeforeTheContourMeansNoSelection) {
 }
 
 // covers: TRC-DESEL-3
-TEST(SliceExamples, DeselectionWaitsForAPlaneAxis) {
-  // N40 programs G40 with Z only: it runs at N30's normal end (10,2) as an infeed; N50 retracts.
+TEST(SliceExamples, DeselectionWithoutPlaneAxisLeavesTheToolAtTheNormalEnd) {
+  // N40 programs G40 with Z only: N30 ends at its normal end (10,2), N40 lifts there; N50 retracts.
   Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 Z5\nN50 X20 Y-5\n"));
   expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kInfeed, {10, 2, 0}, {10, 2, 5}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {10, 2, 5}),
                   line(K::kRetraction, {10, 2, 5}, {20, -5, 5})});
+}
+
+// covers: TRC-DESEL-3 NC-WORD-3 NC-WORD-4
+TEST(SliceExamples, AJobRunsOnAfterG40WithoutPlaneAxis) {
+  // The blocks between G40 Z100 and the next plane move are no empty blocks of an active
+  // compensation: more of them than MD20250 (5) raise no alarm 10762. N130 selects again from
+  // where the tool is.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G0 G40 Z100\nN50 M5\nN60 M9\nN70 T1 M6\n"
+                            "N80 S1000 M3\nN90 M8\nN100 G4 F2\nN110 Z50\nN120 X30 Y0\nN130 G1 G41 X40 Y0\n"
+                            "N140 X50\nN150 G40 X60 Y-10\n"));
+  ASSERT_TRUE(r.fast.alarms.empty());
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {10, 2, 100}),
+                  line(K::kRetraction, {10, 2, 100}, {10, 2, 50}), line(K::kRetraction, {10, 2, 50}, {30, 0, 50}),
+                  line(K::kApproach, {30, 0, 50}, {40, 2, 50}), line(K::kOffset, {40, 2, 50}, {50, 2, 50}),
+                  line(K::kRetraction, {50, 2, 50}, {60, -10, 50})});
+  EXPECT_EQ(r.ref.actions.size(), 7u);  // M5 M9 M6 S1000 M3 M8 G4 F2, all at (10, 2, 100)
 }
 
 // covers: TRC-END-1

@@ -16,6 +16,15 @@ Decimal checked(Int128 v) {
 }
 }  // namespace
 
+Decimal Decimal::scaled(std::int64_t num, std::int64_t den, bool* exact) const {
+  Int128 p = units_ * num;
+  Int128 q = p / den, rem = p % den;
+  if (exact) *exact = rem == 0;
+  Int128 twice = rem < 0 ? -2 * rem : 2 * rem;
+  if (twice >= (den < 0 ? -den : den)) q += (p < 0) != (den < 0) ? -1 : 1;
+  return checked(q);
+}
+
 Decimal::ParseResult Decimal::parse(std::string_view s) {
   ParseResult r;
   std::size_t i = 0;

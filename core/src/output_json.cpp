@@ -22,7 +22,8 @@ void append(std::string& list, const json& item) {
 }  // namespace
 
 JsonWriter::JsonWriter(std::ostream& out, std::string engine, bool with_trace) : out_(out), with_trace_(with_trace) {
-  out_ << "{\n  \"format\": \"cutcom-path/1\",\n  \"engine\": " << json(engine).dump() << ",\n  \"path\": [";
+  out_ << "{\n  \"format\": \"cutcom-path/1\",\n  \"engine\": " << json(engine).dump()
+       << ",\n  \"unit\": \"mm\",\n  \"path\": [";
 }
 
 void JsonWriter::element(const PathElement& e) {
@@ -53,7 +54,7 @@ void JsonWriter::element(const PathElement& e) {
 void JsonWriter::action(const ActionEvent& a) {
   append(actions_, json{{"line", a.line},
                         {"block", block_ref(a.block)},
-                        {"function", fmt::format("{}{}", a.function.address, a.function.value)},
+                        {"function", a.function.name()},
                         {"at", point(a.at)}});
 }
 

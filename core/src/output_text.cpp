@@ -12,7 +12,7 @@ std::string pt(const PathPoint& p) {
 }  // namespace
 
 TextWriter::TextWriter(std::ostream& out, std::string engine, bool with_trace) : out_(out), with_trace_(with_trace) {
-  out_ << fmt::format("cutcom tool-centre path (engine: {})\n", engine);
+  out_ << fmt::format("cutcom tool-centre path (engine: {}, coordinates in mm)\n", engine);
   out_ << fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}\n", "#", "line", "type", "move", "start", "end",
                       "origin");
 }
@@ -23,6 +23,7 @@ void TextWriter::element(const PathElement& e) {
   out_ << fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}", count_, e.origin.line, type,
                       e.rapid                         ? "rapid"
                       : e.feed_type == FeedType::kG95 ? "feed/r"
+                      : e.feed_type == FeedType::kG93 ? "feed/t"
                                                       : "feed",
                       pt(e.start), pt(e.end), describe(e.origin));
   if (e.type == ElementType::kArc) out_ << fmt::format("  centre {} {}", pt(e.center), e.ccw ? "ccw" : "cw");
@@ -30,7 +31,7 @@ void TextWriter::element(const PathElement& e) {
 }
 
 void TextWriter::action(const ActionEvent& a) {
-  out_ << fmt::format("     {:>5} {}{} at {}\n", a.line, a.function.address, a.function.value, pt(a.at));
+  out_ << fmt::format("     {:>5} {} at {}\n", a.line, a.function.name(), pt(a.at));
 }
 
 void TextWriter::decision(const Decision& d) {

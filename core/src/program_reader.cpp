@@ -1,4 +1,5 @@
-// NC-MODAL-*, NC-POS-*, TOOL-*: modal resolution of blocks, exact positions and tool data.
+// NC-MODAL-*, NC-POS-*, NC-UNIT-*, NC-OFFSET-*, NC-FRAME-*, NC-CYCLE-*, TOOL-*: modal resolution
+// of blocks into exact positions in one coordinate system, and the tool data in force.
 #include <fmt/format.h>
 
 #include <stdexcept>
@@ -7,29 +8,14 @@
 
 namespace cutcom {
 
-void ToolTable::assign(const ToolDataAssignment& a) {
-  EdgeData& e = edges_[{a.tool, a.edge}];
-  switch (a.parameter) {
-    case 1:
-      e.type = a.value;
-      break;
-    case 6:
-      e.radius = a.value;
-      break;
-    case 15:
-      e.wear = a.value;
-      break;
-    default:
-      break;
-  }
+bool AxisFrame::identity() const {
+  for (int a = 0; a < 3; ++a)
+    if (factor[static_cast<std::size_t>(a)] != Decimal::from_int(1) || !shift[static_cast<std::size_t>(a)].is_zero())
+      return false;
+  return true;
 }
 
-const EdgeData* ToolTable::find(std::int64_t tool, std::int64_t edge) const {
-  auto it = edges_.find({tool, edge});
-  return it == edges_.end() ? nullptr : &it->second;
-}
-
-ProgramReader::ProgramReader(std::istream& in, ModalState initial) : in_(in), state_(initial) {}
+ProgramReader::ProgramReader(std::istream& in, ModalState initial) : in_(in), state_(initial), effective_(initial) {}
 
 bool ProgramReader::next(Block& out) {
   while (std::getline(in_, text_)) {
@@ -37,9 +23,11 @@ bool ProgramReader::next(Block& out) {
     parse_block_words(text_, line_, out.words);
     const BlockWords& w = out.words;
     bool empty = w.word_count == 0;
-    if (empty) continue;  // blank or comment-only line
+    if (empty) continue;  // blank, comment-only, header or label-only line
     if (end_line_ != 0)   // NC-END-1: nothing may follow M2/M30
       throw InputError(line_, 1, fmt::format("block after the end of the program (M2/M30 in line {})", end_line_));
+    out.notice.clear();
+    out.notice_clause = {};
     resolve(out);
     if (w.program_end) end_line_ = line_;
     return true;
@@ -48,14 +36,155 @@ bool ProgramReader::next(Block& out) {
   return false;
 }
 
-void ProgramReader::resolve(Block& b) {
+void ProgramReader::note(Block& b, std::string_view clause, std::string text) {
+  if (!b.notice.empty()) {
+    b.notice += "; ";
+    b.notice += text;
+    return;
+  }
+  b.notice_clause = clause;
+  b.notice = std::move(text);
+}
+
+// NC-UNIT-1/2, NC-DIAM-1: a programmed length in mm on the 10^-9 grid.
+Decimal ProgramReader::length(const Decimal& v, int axis) const {
+  Decimal mm = (units_ == Units::kG70 || units_ == Units::kG700) ? v.scaled(254, 10) : v;
+  (void)axis;
+  return mm;
+}
+
+Decimal ProgramReader::to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute) const {
+  std::size_t a = static_cast<std::size_t>(axis);
+  Decimal v = length(aw.value, axis);
+  // NC-DIAM-1: in G18 turning, X is a diameter (DIAMON; DIAM90 only for absolute values).
+  if (axis == 0 && (diameter_ == DiameterMode::kDiamon || (diameter_ == DiameterMode::kDiam90 && absolute)))
+    v = v.scaled(1, 2);
+  Decimal scaled = frame_.factor[a] == Decimal::from_int(1) ? v
+                   : frame_.factor[a] == Decimal::from_int(-1)
+                       ? -v
+                       : v.scaled(static_cast<std::int64_t>(frame_.factor[a].units()), Decimal::kUnitsPerOne);
+  if (!absolute) return current + scaled;
+  Decimal offset = coord(offsets_.translation(offset_index_), axis) -
+                   (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), axis) : Decimal{});
+  return offset + frame_.shift[a] + scaled;
+}
+
+// NC-FRAME-1/2: TRANS/ATRANS/SCALE/ASCALE/MIRROR/AMIRROR; the block's axis words are the values.
+void ProgramReader::apply_frame(const BlockWords& w) {
+  auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
+  FrameWord f = *w.frame;
+  bool replaces = f == FrameWord::kTrans || f == FrameWord::kScale || f == FrameWord::kMirror;
+  if (replaces) frame_ = AxisFrame{};
+  for (int a = 0; a < 3; ++a) {
+    std::size_t i = static_cast<std::size_t>(a);
+    const AxisWord& aw = w.axis[i];
+    if (!aw.present) continue;
+    if (aw.mode != ValueMode::kModal) fail("a frame value takes no AC() or IC()");
+    switch (f) {
+      case FrameWord::kTrans:
+        frame_.shift[i] = length(aw.value, a);
+        break;
+      case FrameWord::kAtrans: {  // in the current frame: the shift turns with mirror and scale
+        Decimal v = length(aw.value, a);
+        frame_.shift[i] = frame_.shift[i] + v.scaled(static_cast<std::int64_t>(frame_.factor[i].units()),
+                                                     Decimal::kUnitsPerOne);
+        break;
+      }
+      case FrameWord::kScale:
+      case FrameWord::kAscale: {
+        if (aw.value.sign() == 0) fail(fmt::format("{}: a scale factor of 0", "XYZ"[a]));
+        if (aw.value > Decimal::from_int(1000) || aw.value < Decimal::from_int(-1000))
+          fail(fmt::format("{}: scale factors up to 1000 are supported", "XYZ"[a]));
+        frame_.factor[i] = frame_.factor[i].scaled(static_cast<std::int64_t>(aw.value.units()), Decimal::kUnitsPerOne);
+        break;
+      }
+      case FrameWord::kMirror:
+      case FrameWord::kAmirror:  // the value is not evaluated: the axis is mirrored
+        frame_.factor[i] = -frame_.factor[i];
+        break;
+    }
+  }
+}
+
+// TOOL-CHANGE-1/2, TOOL-NAME-1: which tool and edge are in force after the block's T, M6 and D.
+void ProgramReader::change_tool(Block& b, ModalState& s) {
   const BlockWords& w = b.words;
+  auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
+  std::optional<std::int64_t> t = w.tool;
+  if (w.tool_name) {
+    t = tools_.number_of(*w.tool_name);
+    if (!t)
+      fail(fmt::format("tool \"{}\" is not in the tool table (give its $TC_TP2 in --tools FILE or in the program)",
+                       *w.tool_name));
+  }
+  bool change = false;
+  if (t) {
+    if (s.md_change_on_m6) {
+      preselected_ = *t;
+    } else {
+      s.tool = *t;
+      change = true;
+    }
+  }
+  if (w.tool_change && s.md_change_on_m6) {
+    if (!preselected_) fail("M6 without a tool selected by T (MD22550 = 1: T selects, M6 changes)");
+    s.tool = *preselected_;
+    change = true;
+  }
+  if (w.edge) {
+    s.edge = *w.edge;
+  } else if (change) {  // TOOL-CHANGE-2: the edge MD20270 makes active on a tool change
+    if (s.tool == 0 || s.md_edge_default == 0)
+      s.edge = 0;
+    else if (s.md_edge_default > 0)
+      s.edge = s.md_edge_default;
+  }
+  if (change || w.edge) {  // TOOL-EDGE-2: the edge data are taken now
+    const EdgeData* e = (s.tool != 0 && s.edge != 0) ? tools_.find(s.tool, s.edge) : nullptr;
+    s.edge_defined = e != nullptr;
+    s.edge_radius = e ? e->radius : Decimal{};
+    s.edge_wear = e ? e->wear : Decimal{};
+    // TOOL-TURN-1: a turning tool whose cutting edge position needs the edge-centre offset.
+    if (e && e->type >= Decimal::from_int(500) && e->type < Decimal::from_int(600) && !e->position.is_zero() &&
+        e->position != Decimal::from_int(9))
+      fail(fmt::format("T{} D{} is a turning tool with cutting edge position {} ($TC_DP2): the offset of the "
+                       "tool tip from the edge centre is SINUMERIK NC that cutcom does not simulate",
+                       s.tool, s.edge, e->position.to_string()));
+  }
+}
+
+void ProgramReader::resolve(Block& b) {
+  BlockWords& w = b.words;
   auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
 
   for (int k = 0; k < w.tool_data_count; ++k) tools_.assign(w.tool_data[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < w.tool_names_count; ++k) tools_.name(w.tool_names[static_cast<std::size_t>(k)]);
 
-  b.previous = state_;
+  b.previous = effective_;
   ModalState& s = state_;
+  if (w.units) units_ = *w.units;
+  if (w.diameter) diameter_ = *w.diameter;
+  if (w.settable_offset) {
+    int idx = *w.settable_offset;
+    if (idx != offset_index_ && idx > 0) {
+      if (first_offset_ < 0) {
+        first_offset_ = idx;
+        note(b, "NC-OFFSET-1",
+             fmt::format("coordinates are in the workpiece system of {}", idx <= 4 ? fmt::format("G{}", idx + 53)
+                                                                                   : fmt::format("G{}", idx + 500)));
+      } else if (!offsets_.defined(idx) || !offsets_.defined(first_offset_)) {
+        note(b, "NC-OFFSET-1", "a second settable offset without --offsets data: taken as equal to the first");
+      }
+    }
+    offset_index_ = idx;
+  }
+  if (w.frame) {
+    if (w.motion || w.side || !w.not_simulated.empty())
+      fail("a frame instruction (TRANS, SCALE, MIRROR, …) must stand in a block of its own");
+    if (state_.side != Side::kOff)
+      fail("a frame change with tool radius compensation G41/G42 in force: deselect with G40 first (not simulated)");
+    apply_frame(w);
+  }
   if (w.motion) s.motion = *w.motion;
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
@@ -69,35 +198,134 @@ void ProgramReader::resolve(Block& b) {
   if (w.sar_segmentation) s.sar_segmentation = *w.sar_segmentation;
   if (w.feed_type) s.feed_type = *w.feed_type;
   if (w.path_mode) s.path_mode = *w.path_mode;
-  if (w.feed) s.feed = *w.feed;
-  if (w.offn) s.offn = *w.offn;
-  // TOOL-EDGE-1/2: T selects the tool, D the edge; edge data are captured when T or D is
-  // programmed, so a later $TC_DP write acts only from the next T or D.
-  if (w.tool) s.tool = *w.tool;
-  if (w.edge) s.edge = *w.edge;
-  if (w.tool || w.edge) {
-    const EdgeData* e = (s.tool != 0 && s.edge != 0) ? tools_.find(s.tool, s.edge) : nullptr;
-    s.edge_defined = e != nullptr;
-    s.edge_radius = e ? e->radius : Decimal{};
-    s.edge_wear = e ? e->wear : Decimal{};
+  bool inch_feed = units_ == Units::kG700;
+  if (w.dwell) {  // NC-WORD-4: G4 F… / G4 S… is a dwell, no feed
+    if (w.programs_any_axis()) fail("G4 (dwell) must stand in a block without axis words");
+    std::string text = w.feed ? fmt::format("G4 F{}", w.feed->to_string()) : "G4";
+    w.feed.reset();
+    AuxFunction a;
+    a.address = 0, a.text = text;
+    if (w.aux_count == BlockWords::kMaxAux) fail("too many actions in one block");
+    w.aux[static_cast<std::size_t>(w.aux_count++)] = a;
   }
-  b.state = s;
+  if (w.feed) s.feed = inch_feed ? w.feed->scaled(254, 10) : *w.feed;
+  if (w.fad && inch_feed) w.fad = w.fad->scaled(254, 10);
+  if (w.offn) s.offn = length(*w.offn, 0);
+  if (w.disr) w.disr = length(*w.disr, 0);
+  if (w.discl.present || w.disrp.present) {
+    PlaneAxes pa = plane_axes(s.plane);
+    std::size_t h = static_cast<std::size_t>(pa.applicate);
+    if (!frame_.identity() && (frame_.factor[h] != Decimal::from_int(1) || !frame_.shift[h].is_zero() ||
+                               frame_.factor[static_cast<std::size_t>(pa.abscissa)] != Decimal::from_int(1) ||
+                               frame_.factor[static_cast<std::size_t>(pa.ordinate)] != Decimal::from_int(1)))
+      fail("DISCL/DISRP with a scaling, mirroring or infeed-shifting frame is not simulated");
+    for (AxisWord* aw : {&w.discl, &w.disrp})
+      if (aw->present) {
+        aw->value = length(aw->value, 0);
+        if (aw->mode == ValueMode::kAbsolute)
+          aw->value = aw->value + coord(offsets_.translation(offset_index_), pa.applicate) -
+                      (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), pa.applicate) : Decimal{});
+      }
+  }
+  change_tool(b, s);
+
+  // NC-CYCLE-1/2: cycles and moves that cutcom does not simulate.
+  bool cycle = !w.not_simulated.empty() && !w.modal_call;
+  if (w.modal_call_end) modal_call_ = false;
+  if (w.modal_call) {
+    modal_call_ = true;
+    modal_cycle_ = w.not_simulated;
+    note(b, "NC-CYCLE-2", fmt::format("MCALL {}: the cycle after each following move is not simulated",
+                                      w.not_simulated));
+  }
+  if (!w.not_simulated.empty() && s.side != Side::kOff)
+    fail(fmt::format("'{}' with tool radius compensation G41/G42 in force: a move cutcom does not simulate "
+                     "cannot be compensated (deselect with G40 first)",
+                     w.not_simulated));
+
+  // The effective state of the block: a mirroring frame swaps G2/G3 and G41/G42 (NC-FRAME-3).
+  ModalState eff = s;
+  {
+    PlaneAxes pa = plane_axes(s.plane);
+    bool mirrored = (frame_.factor[static_cast<std::size_t>(pa.abscissa)].sign() < 0) !=
+                    (frame_.factor[static_cast<std::size_t>(pa.ordinate)].sign() < 0);
+    if (mirrored) {
+      if (eff.motion == Motion::kArcCw)
+        eff.motion = Motion::kArcCcw;
+      else if (eff.motion == Motion::kArcCcw)
+        eff.motion = Motion::kArcCw;
+      if (eff.side == Side::kLeft)
+        eff.side = Side::kRight;
+      else if (eff.side == Side::kRight)
+        eff.side = Side::kLeft;
+    }
+  }
+  b.state = eff;
+  effective_ = eff;
 
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
   b.start = position_;
   Point3 end = position_;
+  bool frame_values = w.frame.has_value();
+  std::string unknown_used;
   for (int a = 0; a < 3; ++a) {
-    const AxisWord& aw = w.axis[static_cast<std::size_t>(a)];
-    if (!aw.present) continue;
+    std::size_t i = static_cast<std::size_t>(a);
+    const AxisWord& aw = w.axis[i];
     bool abs = aw.mode == ValueMode::kAbsolute || (aw.mode == ValueMode::kModal && s.absolute);
+    if (!aw.present || frame_values) {
+      if (unknown_[i] && w.programs_any_axis() && !frame_values && !cycle) unknown_used += "XYZ"[a];
+      continue;
+    }
+    if (cycle) {  // a G53/G75/SUPA move: where it ends is not simulated
+      unknown_[i] = true;
+      continue;
+    }
     Decimal& target = a == 0 ? end.x : a == 1 ? end.y : end.z;
     try {
-      target = abs ? aw.value : target + aw.value;
+      target = to_base(a, aw, target, abs);
     } catch (const std::overflow_error&) {
       fail("position out of range");
     }
+    if (unknown_[i]) {
+      if (abs)
+        unknown_[i] = false;
+      else
+        unknown_used += "XYZ"[a];
+    }
+  }
+  if (!unknown_used.empty()) {
+    PlaneAxes pa = plane_axes(s.plane);
+    bool plane_unknown = unknown_[static_cast<std::size_t>(pa.abscissa)] || unknown_[static_cast<std::size_t>(pa.ordinate)];
+    if (s.side != Side::kOff && plane_unknown)
+      fail(fmt::format("the position of {} is not known since {} in line {}: program the plane axes absolutely "
+                       "before compensating",
+                       unknown_used, unknown_after_, unknown_line_));
+    if (unknown_line_ != 0) {
+      note(b, "NC-CYCLE-1",
+           fmt::format("the position of {} is not known since {} in line {}: the move starts where the tool was "
+                       "before it",
+                       unknown_used, unknown_after_, unknown_line_));
+      unknown_line_ = 0;  // said once per unknown stretch
+    }
   }
   b.end = end;
+  if (cycle) {
+    note(b, "NC-CYCLE-1",
+         fmt::format("{} is not simulated: its motion is not in the path, and the position stays unknown until the "
+                     "axes are programmed absolutely",
+                     w.not_simulated));
+    if (w.not_simulated[0] != 'G' && w.not_simulated != "SUPA") unknown_ = {true, true, true};
+    unknown_after_ = w.not_simulated;
+    unknown_line_ = w.line;
+    // Its axis words were the cycle's, not a move.
+    for (AxisWord& aw : w.axis) aw.present = false;
+  } else if (modal_call_ && !w.modal_call && w.programs_any_axis()) {
+    unknown_ = {true, true, true};
+    unknown_after_ = "MCALL " + modal_cycle_;
+    unknown_line_ = w.line;
+  }
+  if (frame_values)
+    for (AxisWord& aw : w.axis) aw.present = false;  // NC-FRAME-1: the frame's values, not a move
 
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
   bool has_centre = w.centre[0].present || w.centre[1].present || w.centre[2].present;
@@ -115,13 +343,29 @@ void ProgramReader::resolve(Block& b) {
     if (w.centre[static_cast<std::size_t>(pa.applicate)].present)
       fail(fmt::format("{} is not a centre coordinate in the active plane", "IJK"[pa.applicate]));
     if (!has_centre && !w.cr) fail("G2/G3 needs the centre (I, J, K) or the radius (CR=)");
+    Decimal fa = frame_.factor[static_cast<std::size_t>(pa.abscissa)];
+    Decimal fo = frame_.factor[static_cast<std::size_t>(pa.ordinate)];
+    if (fa != fo && fa != -fo) fail("a circle under a frame that scales the plane axes differently is an ellipse: not simulated");
+    if (w.cr) {
+      Decimal f = fa.sign() < 0 ? -fa : fa;
+      Decimal cr = length(*w.cr, pa.abscissa);
+      w.cr = f == Decimal::from_int(1) ? cr : cr.scaled(static_cast<std::int64_t>(f.units()), Decimal::kUnitsPerOne);
+    }
     if (has_centre) {
       Point3 c = b.start;
       for (int a : {pa.abscissa, pa.ordinate}) {
         const AxisWord& cw = w.centre[static_cast<std::size_t>(a)];
         Decimal& target = a == 0 ? c.x : a == 1 ? c.y : c.z;
         if (!cw.present) continue;
-        target = cw.mode == ValueMode::kAbsolute ? cw.value : target + cw.value;
+        // I=AC() is a position; incremental I is a distance (a radius value also under DIAMON).
+        if (cw.mode == ValueMode::kAbsolute) {
+          target = to_base(a, cw, target, true);
+        } else {
+          DiameterMode keep = diameter_;
+          diameter_ = DiameterMode::kDiamof;
+          target = to_base(a, cw, target, false);
+          diameter_ = keep;
+        }
       }
       if (coord(c, pa.abscissa) == coord(b.start, pa.abscissa) && coord(c, pa.ordinate) == coord(b.start, pa.ordinate))
         fail("the circle centre lies on the start point (radius 0)");

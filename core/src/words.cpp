@@ -1,9 +1,13 @@
-// NC-LEX-*: the words of one block. Every rejected input names its column and what is wrong.
+// NC-LEX-*, NC-WORD-*: the words of one block. Every rejected input names its column and what is
+// wrong; an unknown or unsupported word is named whole, in one wording (NC-ERR-3).
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 
 #include "cutcom/reader.hpp"
+#include "nc_vocabulary.hpp"
 
 namespace cutcom {
 
@@ -17,7 +21,20 @@ namespace {
 
 bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
 char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+
+// Modal groups of the G codes kept as actions or state, for "two of one group" (NC-LEX-3).
+enum GGroup : unsigned {
+  kGroupDwell = 1u << 0,        // group 2, non-modal: G4 G74 G75
+  kGroupExactStop = 1u << 1,    // group 11: G9
+  kGroupPathMode = 1u << 2,     // group 10: G60 G64 G641…G645
+  kGroupStopWindow = 1u << 3,   // group 12: G601 G602 G603
+  kGroupUnits = 1u << 4,        // group 13: G70 G71 G700 G710
+  kGroupFeedType = 1u << 5,     // group 15: G93 G94 G95 G96 G97 G961 G971
+  kGroupOffset = 1u << 6,       // group 8: G500 G54…G57 G505…G599
+  kGroupSuppression = 1u << 7,  // group 9: G53 G153
+};
 
 class WordLexer {
  public:
@@ -26,12 +43,15 @@ class WordLexer {
   void run() {
     out_ = BlockWords{};
     out_.line = line_;
+    skip_space();
+    if (peek() == '%') return;  // NC-WORD-1: file header %_N_…_MPF / %: not a block
+    block_start();
     while (true) {
       skip_space();
       if (at_end()) return;
       if (peek() == ';') return;  // NC-LEX-2: comment to end of line
       if (peek() == '$') {
-        tool_data();
+        system_variable();
       } else {
         if (!is_letter(peek())) fail(fmt::format("unexpected character '{}'", peek()));
         word();
@@ -47,15 +67,43 @@ class WordLexer {
   [[noreturn]] void fail(const std::string& what) const { fail(what, i_); }
 
   bool at_end() const { return i_ >= s_.size(); }
-  char peek() const { return at_end() ? '\0' : s_[i_]; }
+  char peek(std::size_t ahead = 0) const { return i_ + ahead >= s_.size() ? '\0' : s_[i_ + ahead]; }
   void skip_space() {
     while (!at_end() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
   }
 
-  std::string name() {
+  // NC-WORD-2: block skip "/" or "/n" (skip levels off: the block runs), main block ":n",
+  // and a jump label "NAME:" (nothing jumps to it without control flow; it is passed over).
+  void block_start() {
+    if (peek() == '/') {
+      ++i_;
+      if (is_digit(peek())) ++i_;
+      skip_space();
+    }
+    if (peek() == ':' && is_digit(peek(1))) {
+      std::size_t at = i_;
+      ++i_;
+      out_.number = integer("main block number");
+      if (*out_.number < 0) fail("block number must not be negative", at);
+      ++out_.word_count;
+      return;
+    }
+    std::size_t j = i_;
+    while (j < s_.size() && is_name_char(s_[j])) ++j;
+    if (j > i_ + 1 && j < s_.size() && s_[j] == ':' && is_letter(s_[i_]) && (j + 1 >= s_.size() || s_[j + 1] != '=')) {
+      label_ = std::string(s_.substr(i_, j - i_));
+      i_ = j + 1;
+    }
+  }
+
+  std::string letters() {
     std::string n;
     while (!at_end() && is_letter(s_[i_])) n.push_back(upper(s_[i_++]));
     return n;
+  }
+  // The rest of a multi-letter name: letters, digits and '_' (CYCLE832, GROUP_BEGIN, R_T).
+  void name_tail(std::string& n) {
+    while (!at_end() && is_name_char(s_[i_])) n.push_back(upper(s_[i_++]));
   }
 
   // A decimal literal [+-]digits[.digits]; must end at a word boundary.
@@ -66,7 +114,13 @@ class WordLexer {
     std::string_view text = s_.substr(start, i_ - start);
     Decimal::ParseResult r = Decimal::parse(text);
     if (!r.value) {
-      if (text.empty() || text == "+" || text == "-") fail(fmt::format("{} needs a number", what), start);
+      if (text.empty() || text == "+" || text == "-") {
+        if (is_letter(peek()) || peek() == '$' || peek() == '(')
+          fail(fmt::format("{} needs a number: expressions and variables ('{}') are not supported yet", what,
+                           rest_of_word()),
+               start);
+        fail(fmt::format("{} needs a number", what), start);
+      }
       switch (r.error) {
         case Decimal::ParseError::kTooManyDecimals:
           fail(fmt::format("{}: '{}' has more than {} decimal places", what, text, Decimal::kFractionDigits), start);
@@ -78,7 +132,14 @@ class WordLexer {
     }
     if (!at_end() && (is_digit(peek()) || peek() == '.' || peek() == '_'))
       fail(fmt::format("{}: malformed number", what));
+    if (!at_end() && (peek() == '+' || peek() == '-' || peek() == '*' || peek() == '/'))
+      fail(fmt::format("{}: expressions are not supported yet", what));
     return *r.value;
+  }
+  std::string rest_of_word() const {
+    std::size_t j = i_;
+    while (j < s_.size() && (is_name_char(s_[j]) || s_[j] == '$')) ++j;
+    return std::string(s_.substr(i_, std::max<std::size_t>(j - i_, 1)));
   }
 
   std::int64_t integer(const std::string& what) {
@@ -103,7 +164,7 @@ class WordLexer {
 
   bool equals() {
     skip_space();
-    if (peek() != '=') return false;
+    if (peek() != '=' || peek(1) == '=') return false;
     ++i_;
     skip_space();
     return true;
@@ -162,6 +223,67 @@ class WordLexer {
     return number(what);
   }
 
+  // --- actions (NC-WORD-*) ----------------------------------------------------------------------
+  void add_action(AuxFunction a, std::size_t at) {
+    if (out_.aux_count == BlockWords::kMaxAux)
+      fail(fmt::format("more than {} actions (M, H, S, G4, MSG, …) in one block", BlockWords::kMaxAux), at);
+    out_.aux[static_cast<std::size_t>(out_.aux_count++)] = std::move(a);
+  }
+  void add_text_action(std::string text, std::size_t at) {
+    AuxFunction a;
+    a.address = 0;
+    a.text = std::move(text);
+    add_action(std::move(a), at);
+  }
+  std::string written(std::size_t from) const { return std::string(s_.substr(from, i_ - from)); }
+
+  // A value of an action word: a number, or NAME(number) such as DC(90) or ACP(0).
+  void action_value(const std::string& what) {
+    skip_space();
+    if (is_letter(peek())) {
+      std::size_t at = i_;
+      std::string fn = letters();
+      if (!is_action_value_wrapper(fn))
+        fail(fmt::format("{} needs a number: expressions and variables ('{}') are not supported yet", what, fn), at);
+      skip_space();
+      if (peek() != '(') fail(fmt::format("{}: '(' expected after {}", what, fn));
+      ++i_;
+      skip_space();
+      number(what);
+      close_paren(what);
+      return;
+    }
+    number(what);
+  }
+
+  // The balanced "(…)" after a call-form word, strings included; returns nothing, checks it closes.
+  void balanced_arguments(const std::string& what, std::size_t at) {
+    skip_space();
+    if (peek() != '(') fail(fmt::format("{} needs its arguments in '(…)'", what));
+    int depth = 0;
+    bool in_string = false;
+    for (; !at_end(); ++i_) {
+      char c = s_[i_];
+      if (in_string) {
+        if (c == '"') in_string = false;
+        continue;
+      }
+      if (c == '"') in_string = true;
+      if (c == ';') break;
+      if (c == '(') ++depth;
+      if (c == ')' && --depth == 0) {
+        ++i_;
+        return;
+      }
+    }
+    fail(fmt::format("{}: ')' expected at the end of its arguments", what), at);
+  }
+
+  void g_group(unsigned group, const char* name, std::size_t at) {
+    if (groups_ & group) fail(fmt::format("two G codes of the {} group in one block", name), at);
+    groups_ |= group;
+  }
+
   void g_code(std::size_t at) {
     skip_space();
     std::int64_t g = integer("G");
@@ -169,120 +291,186 @@ class WordLexer {
       if (slot) fail(fmt::format("two G codes of the {} group in one block", group_name), at);
       slot = value;
     };
+    auto action = [&](unsigned grp, const char* group_name) {
+      g_group(grp, group_name, at);
+      add_text_action(fmt::format("G{}", g), at);
+    };
     BlockWords& o = out_;
     switch (g) {
       case 0:
-        group(o.motion, Motion::kRapid, "motion");
-        break;
+        return group(o.motion, Motion::kRapid, "motion");
       case 1:
-        group(o.motion, Motion::kLinear, "motion");
-        break;
+        return group(o.motion, Motion::kLinear, "motion");
       case 2:
-        group(o.motion, Motion::kArcCw, "motion");
-        break;
+        return group(o.motion, Motion::kArcCw, "motion");
       case 3:
-        group(o.motion, Motion::kArcCcw, "motion");
-        break;
+        return group(o.motion, Motion::kArcCcw, "motion");
+      case 4:  // NC-WORD-4: dwell; its F or S is the time or the revolutions
+        g_group(kGroupDwell, "non-modal (G4/G74/G75)", at);
+        o.dwell = true;
+        return;
+      case 9:  // NC-WORD-5: exact stop for this block
+        return action(kGroupExactStop, "exact stop (G9)");
       case 17:
-        group(o.plane, Plane::kG17, "plane");
-        break;
+        return group(o.plane, Plane::kG17, "plane");
       case 18:
-        group(o.plane, Plane::kG18, "plane");
-        break;
+        return group(o.plane, Plane::kG18, "plane");
       case 19:
-        group(o.plane, Plane::kG19, "plane");
-        break;
+        return group(o.plane, Plane::kG19, "plane");
       case 40:
-        group(o.side, Side::kOff, "tool radius compensation");
-        break;
+        return group(o.side, Side::kOff, "tool radius compensation");
       case 41:
-        group(o.side, Side::kLeft, "tool radius compensation");
-        break;
+        return group(o.side, Side::kLeft, "tool radius compensation");
       case 42:
-        group(o.side, Side::kRight, "tool radius compensation");
-        break;
+        return group(o.side, Side::kRight, "tool radius compensation");
+      case 53:
+      case 153:  // NC-CYCLE-1: a move in machine coordinates is not simulated
+        g_group(kGroupSuppression, "frame suppression (G53/G153)", at);
+        o.not_simulated = fmt::format("G{}", g);
+        return;
       case 60:
-        group(o.path_mode, PathMode::kG60, "exact stop / continuous path");
-        break;
+        g_group(kGroupPathMode, "exact stop / continuous path", at);
+        return group(o.path_mode, PathMode::kG60, "exact stop / continuous path");
       case 64:
-        group(o.path_mode, PathMode::kG64, "exact stop / continuous path");
-        break;
+      case 641:
+      case 642:
+      case 643:
+      case 644:
+      case 645:  // NC-WORD-5: continuous path modes
+        g_group(kGroupPathMode, "exact stop / continuous path", at);
+        o.path_mode = PathMode::kG64;
+        if (g != 64) add_text_action(fmt::format("G{}", g), at);
+        return;
+      case 601:
+      case 602:
+      case 603:
+        return action(kGroupStopWindow, "exact stop window (G601/G602/G603)");
+      case 70:
+        g_group(kGroupUnits, "units", at);
+        o.units = Units::kG70;
+        return;
+      case 71:
+        g_group(kGroupUnits, "units", at);
+        o.units = Units::kG71;
+        return;
+      case 700:
+        g_group(kGroupUnits, "units", at);
+        o.units = Units::kG700;
+        return;
+      case 710:
+        g_group(kGroupUnits, "units", at);
+        o.units = Units::kG710;
+        return;
+      case 74:
+      case 75:  // NC-CYCLE-1: reference point / fixed point approach
+        g_group(kGroupDwell, "non-modal (G4/G74/G75)", at);
+        o.not_simulated = fmt::format("G{}", g);
+        return;
       case 90:
-        group(o.absolute, true, "dimensions");
-        break;
+        return group(o.absolute, true, "dimensions");
       case 91:
-        group(o.absolute, false, "dimensions");
-        break;
+        return group(o.absolute, false, "dimensions");
+      case 93:
+        g_group(kGroupFeedType, "feed type", at);
+        o.feed_type = FeedType::kG93;
+        return add_text_action("G93", at);
       case 94:
-        group(o.feed_type, FeedType::kG94, "feed type");
-        break;
+      case 961:
+      case 971:
+        g_group(kGroupFeedType, "feed type", at);
+        o.feed_type = FeedType::kG94;
+        if (g != 94) add_text_action(fmt::format("G{}", g), at);
+        return;
       case 95:
-        group(o.feed_type, FeedType::kG95, "feed type");
-        break;
+      case 96:
+      case 97:
+        g_group(kGroupFeedType, "feed type", at);
+        o.feed_type = FeedType::kG95;
+        if (g != 95) add_text_action(fmt::format("G{}", g), at);
+        return;
       case 140:
-        group(o.sar_side, SarSide::kG140, "SAR side");
-        break;
+        return group(o.sar_side, SarSide::kG140, "SAR side");
       case 141:
-        group(o.sar_side, SarSide::kG141, "SAR side");
-        break;
+        return group(o.sar_side, SarSide::kG141, "SAR side");
       case 142:
-        group(o.sar_side, SarSide::kG142, "SAR side");
-        break;
+        return group(o.sar_side, SarSide::kG142, "SAR side");
       case 143:
-        group(o.sar_side, SarSide::kG143, "SAR side");
-        break;
+        return group(o.sar_side, SarSide::kG143, "SAR side");
       case 147:
-        group(o.sar_contour, SarContour::kG147, "SAR contour");
-        break;
+        return group(o.sar_contour, SarContour::kG147, "SAR contour");
       case 148:
-        group(o.sar_contour, SarContour::kG148, "SAR contour");
-        break;
+        return group(o.sar_contour, SarContour::kG148, "SAR contour");
       case 247:
-        group(o.sar_contour, SarContour::kG247, "SAR contour");
-        break;
+        return group(o.sar_contour, SarContour::kG247, "SAR contour");
       case 248:
-        group(o.sar_contour, SarContour::kG248, "SAR contour");
-        break;
+        return group(o.sar_contour, SarContour::kG248, "SAR contour");
       case 347:
-        group(o.sar_contour, SarContour::kG347, "SAR contour");
-        break;
+        return group(o.sar_contour, SarContour::kG347, "SAR contour");
       case 348:
-        group(o.sar_contour, SarContour::kG348, "SAR contour");
-        break;
+        return group(o.sar_contour, SarContour::kG348, "SAR contour");
       case 340:
-        group(o.sar_segmentation, SarSegmentation::kG340, "SAR segmentation");
-        break;
+        return group(o.sar_segmentation, SarSegmentation::kG340, "SAR segmentation");
       case 341:
-        group(o.sar_segmentation, SarSegmentation::kG341, "SAR segmentation");
-        break;
+        return group(o.sar_segmentation, SarSegmentation::kG341, "SAR segmentation");
       case 450:
-        group(o.corner, CornerMode::kG450, "outer corner");
-        break;
+        return group(o.corner, CornerMode::kG450, "outer corner");
       case 451:
-        group(o.corner, CornerMode::kG451, "outer corner");
-        break;
+        return group(o.corner, CornerMode::kG451, "outer corner");
       case 460:
-        group(o.edge_strategy, EdgeStrategy::kG460, "approach/retraction (group 48)");
-        break;
+        return group(o.edge_strategy, EdgeStrategy::kG460, "approach/retraction (group 48)");
       case 461:
-        group(o.edge_strategy, EdgeStrategy::kG461, "approach/retraction (group 48)");
-        break;
+        return group(o.edge_strategy, EdgeStrategy::kG461, "approach/retraction (group 48)");
       case 462:
-        group(o.edge_strategy, EdgeStrategy::kG462, "approach/retraction (group 48)");
-        break;
+        return group(o.edge_strategy, EdgeStrategy::kG462, "approach/retraction (group 48)");
       default:
-        fail(fmt::format("G{} is not supported by cutcom", g), at);
+        break;
     }
+    // NC-OFFSET-1: settable work offsets.
+    if (g == 500 || (g >= 54 && g <= 57) || (g >= 505 && g <= 599)) {
+      g_group(kGroupOffset, "settable work offset", at);
+      o.settable_offset = g == 500 ? 0 : g <= 57 ? static_cast<int>(g - 53) : static_cast<int>(g - 500);
+      return;
+    }
+    fail(unsupported_message(fmt::format("G{}", g)), at);
   }
 
+  // M and H (NC-LEX-5); M1=3 style addresses with a spindle or channel number are kept as written.
   void aux(char address, std::size_t at) {
+    if (is_digit(peek()) && extended_address_follows()) {
+      digits("address extension");
+      equals();
+      integer(std::string(1, address));
+      return add_text_action(written(at), at);
+    }
     equals();
     std::int64_t v = integer(std::string(1, address));
     if (v < 0) fail(fmt::format("{}{}: auxiliary function numbers are not negative", address, v), at);
-    if (out_.aux_count == BlockWords::kMaxAux)
-      fail(fmt::format("more than {} auxiliary functions in one block", BlockWords::kMaxAux), at);
-    out_.aux[static_cast<std::size_t>(out_.aux_count++)] = {address, v};
-    if (address == 'M' && (v == 2 || v == 30)) out_.program_end = true;
+    AuxFunction a;
+    a.address = address, a.value = v;
+    add_action(std::move(a), at);
+    if (address != 'M') return;
+    if (v == 2 || v == 30 || v == 17) out_.program_end = true;  // NC-END-1
+    if (v == 6) out_.tool_change = true;                        // TOOL-CHANGE-1
+  }
+  // After a letter: digits, blanks and '=' (M1=3, S1=1000): an address with an extension.
+  bool extended_address_follows() const {
+    std::size_t j = i_;
+    while (j < s_.size() && is_digit(s_[j])) ++j;
+    while (j < s_.size() && s_[j] == ' ') ++j;
+    return j < s_.size() && s_[j] == '=' && (j + 1 >= s_.size() || s_[j + 1] != '=');
+  }
+
+  // S (NC-WORD-3): spindle speed, or with G4 the dwell in revolutions.
+  void spindle(std::size_t at) {
+    if (is_digit(peek()) && extended_address_follows()) {
+      digits("spindle number");
+      equals();
+    } else {
+      equals();
+    }
+    Decimal v = number("S");
+    if (v.sign() < 0) fail("S must not be negative", at);
+    add_text_action(written(at), at);
   }
 
   void keyword_value(const std::string& n, std::size_t at) {
@@ -314,26 +502,93 @@ class WordLexer {
       }
       if (out_.fad->sign() <= 0) fail("FAD must be positive", at);
     } else {
-      fail(fmt::format("unknown address '{}'", n), at);
+      named_word(n, at);
     }
+  }
+
+  // Multi-letter words other than the compensation parameters.
+  void named_word(const std::string& n, std::size_t at) {
+    static constexpr std::pair<std::string_view, FrameWord> kFrames[] = {
+        {"TRANS", FrameWord::kTrans},   {"ATRANS", FrameWord::kAtrans}, {"SCALE", FrameWord::kScale},
+        {"ASCALE", FrameWord::kAscale}, {"MIRROR", FrameWord::kMirror}, {"AMIRROR", FrameWord::kAmirror}};
+    for (const auto& [name, f] : kFrames)
+      if (n == name) return set_once(out_.frame, f, "a frame instruction", at);  // NC-FRAME-1
+    switch (classify_named_word(n)) {
+      case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, TRAFOOF, …
+        return add_text_action(n, at);
+      case NamedWord::kActionValue: {  // NC-WORD-5/3: ADIS=, ADISPOS=, LIMS=, SPOS=, SPOS[n]=
+        if (peek() == '[') {
+          ++i_;
+          skip_space();
+          digits(n + " index");
+          skip_space();
+          if (peek() != ']') fail(fmt::format("{}: ']' expected", n));
+          ++i_;
+        }
+        if (!equals()) fail(fmt::format("{} needs '=' (write {}=...)", n, n));
+        action_value(n);
+        return add_text_action(written(at), at);
+      }
+      case NamedWord::kActionCall:  // NC-WORD-6: MSG("…"), WORKPIECE(…), GROUP_BEGIN(…), CYCLE832(…)
+        balanced_arguments(n, at);
+        return add_text_action(written(at), at);
+      case NamedWord::kDiameter:  // NC-DIAM-1
+        return set_once(out_.diameter,
+                        n == "DIAMON"   ? DiameterMode::kDiamon
+                        : n == "DIAM90" ? DiameterMode::kDiam90
+                                        : DiameterMode::kDiamof,
+                        "DIAMON/DIAMOF/DIAM90", at);
+      case NamedWord::kCycle:  // NC-CYCLE-1: a standard cycle is not simulated
+        if (!out_.not_simulated.empty())
+          fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, n), at);
+        skip_space();
+        if (peek() == '(') balanced_arguments(n, at);
+        out_.not_simulated = n;
+        return;
+      case NamedWord::kModalCall: {  // NC-CYCLE-2: MCALL CYCLEnn(…) / MCALL alone
+        skip_space();
+        if (at_end() || peek() == ';') {
+          out_.modal_call_end = true;
+          return;
+        }
+        std::size_t cat = i_;
+        std::string cycle = letters();
+        name_tail(cycle);
+        if (classify_named_word(cycle) != NamedWord::kCycle)
+          fail(fmt::format("MCALL of '{}': only standard cycles can be called modally (subprograms are not "
+                           "supported yet)",
+                           cycle),
+               cat);
+        skip_space();
+        if (peek() == '(') balanced_arguments(cycle, cat);
+        out_.not_simulated = cycle;
+        out_.modal_call = true;
+        return;
+      }
+      case NamedWord::kSubprogramEnd:  // RET: end of a subprogram run on its own (NC-END-1)
+        add_text_action("RET", at);
+        out_.program_end = true;
+        return;
+      case NamedWord::kNotSimulated:
+        fail(unsupported_message(n), at);
+      case NamedWord::kUnknown:
+        break;
+    }
+    fail(unknown_message(n), at);
   }
 
   void word() {
     std::size_t at = i_;
-    std::string n = name();
-    // Keywords without a value (NC-LEX-5).
+    std::string n = letters();
+    if (n.size() > 1 || peek() == '_') name_tail(n);
+    // Keywords without a value (NC-LEX-3).
     if (n == "NORM") return set_once(out_.approach, ApproachMode::kNorm, "NORM/KONT", at);
     if (n == "KONT") return set_once(out_.approach, ApproachMode::kKont, "NORM/KONT", at);
     if (n == "KONTC") return set_once(out_.approach, ApproachMode::kKontC, "NORM/KONT", at);
     if (n == "KONTT") return set_once(out_.approach, ApproachMode::kKontT, "NORM/KONT", at);
     if (n == "CDON") return set_once(out_.collision, CollisionMode::kCdon, "CDON/CDOF", at);
-    if (n == "CDOF") {
-      if (peek() == '2' && (i_ + 1 >= s_.size() || !is_digit(s_[i_ + 1]))) {
-        ++i_;
-        return set_once(out_.collision, CollisionMode::kCdof2, "CDON/CDOF", at);
-      }
-      return set_once(out_.collision, CollisionMode::kCdof, "CDON/CDOF", at);
-    }
+    if (n == "CDOF") return set_once(out_.collision, CollisionMode::kCdof, "CDON/CDOF", at);
+    if (n == "CDOF2") return set_once(out_.collision, CollisionMode::kCdof2, "CDON/CDOF", at);
     if (n == "STOPRE") {
       out_.stopre = true;
       return;
@@ -354,12 +609,15 @@ class WordLexer {
         return aux('M', at);
       case 'H':
         return aux('H', at);
-      case 'T': {
+      case 'E': {  // NC-WORD-3: E is kept as an action as written
         equals();
-        std::int64_t v = integer("T");
-        if (v < 0) fail("tool number must not be negative", at);
-        return set_once(out_.tool, v, "T", at);
+        number("E");
+        return add_text_action(written(at), at);
       }
+      case 'S':
+        return spindle(at);
+      case 'T':
+        return tool(at);
       case 'D': {
         equals();
         std::int64_t v = integer("D");
@@ -383,48 +641,143 @@ class WordLexer {
         return positional(out_.centre[1], "J", at, true, false);
       case 'K':
         return positional(out_.centre[2], "K", at, true, false);
+      case 'R':
+        if (is_digit(peek()) || peek() == '[')
+          fail(unsupported_message(fmt::format("R{}", rest_of_word()), "R parameters"), at);
+        break;
+      case 'L':
+        if (is_digit(peek())) fail(unsupported_message(fmt::format("L{}", rest_of_word()), "subprogram calls"), at);
+        break;
+      case 'P':
+        fail(unsupported_message("P", "subprogram repetitions"), at);
       default:
-        fail(fmt::format("unknown address '{}'", n), at);
+        break;
     }
+    fail(unknown_message(n), at);
   }
 
-  // $TC_DPn[t,d]=value (NC-LEX-6).
-  void tool_data() {
+  // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
+  void tool(std::size_t at) {
+    if (is_digit(peek()) && extended_address_follows()) {
+      digits("spindle number");
+    }
+    bool eq = equals();
+    if (eq && peek() == '"') {
+      ++i_;
+      std::size_t start = i_;
+      while (!at_end() && peek() != '"') ++i_;
+      if (at_end()) fail("T=\"…\": closing '\"' expected");
+      std::string name(s_.substr(start, i_ - start));
+      ++i_;
+      if (name.empty()) fail("T=\"\": the tool name is empty", at);
+      if (out_.tool || out_.tool_name) fail("T programmed twice in one block", at);
+      out_.tool_name = name;
+      return;
+    }
+    std::int64_t v = integer("T");
+    if (v < 0) fail("tool number must not be negative", at);
+    if (out_.tool_name) fail("T programmed twice in one block", at);
+    set_once(out_.tool, v, "T", at);
+  }
+
+  // System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
+  void system_variable() {
     std::size_t at = i_;
     ++i_;
-    std::string n = name();
-    if (n != "TC" || peek() != '_') fail("only $TC_DP1, $TC_DP6 and $TC_DP15 system variables are supported", at);
+    std::string n = letters();
+    name_tail(n);
+    std::string full = "$" + n;
+    std::size_t dp = n.rfind("TC_DP", 0) == 0 ? 5 : 0;
+    if (dp) {
+      std::string num = n.substr(5);
+      int p = 0;
+      bool ok = !num.empty() && num.size() <= 2 && std::all_of(num.begin(), num.end(), is_digit);
+      if (ok) p = std::stoi(num);
+      if (!ok || p < 1 || p > 25) fail(fmt::format("'{}' is not a tool edge parameter ($TC_DP1 … $TC_DP25)", full), at);
+      return tool_edge_data(p, at);
+    }
+    if (n == "TC_TP2") return tool_name_data(at);
+    if (n == "TC_TP1" || n == "TC_TP3" || n == "TC_TP4" || n == "TC_TP5" || n == "TC_TP6" || n == "TC_TP7" ||
+        n == "TC_TP8" || n == "TC_TP9" || n == "TC_TP10" || n == "TC_TP11") {
+      return ignored_tool_parameter(full);
+    }
+    fail(fmt::format("system variable '{}' is SINUMERIK NC that cutcom does not simulate (supported: $TC_DP1 … "
+                     "$TC_DP25, $TC_TP1 … $TC_TP11)",
+                     full),
+         at);
+  }
+
+  void index_open(const std::string& what) {
+    skip_space();
+    if (peek() != '[') fail(fmt::format("'[' expected after {}", what));
     ++i_;
-    n = name();
-    if (n != "DP") fail("only $TC_DP1, $TC_DP6 and $TC_DP15 system variables are supported", at);
-    std::int64_t p = integer("$TC_DP parameter");
-    if (p != 1 && p != 6 && p != 15)
-      fail(fmt::format("$TC_DP{} is not supported (only $TC_DP1, $TC_DP6, $TC_DP15)", p), at);
     skip_space();
-    if (peek() != '[') fail("'[' expected after $TC_DP" + std::to_string(p));
-    ++i_;
-    skip_space();
-    std::int64_t t = digits("tool number");
-    skip_space();
-    if (peek() != ',') fail("',' expected between tool and edge number (write $TC_DPn[t,d])");
-    ++i_;
-    skip_space();
-    std::int64_t d = digits("edge number");
+  }
+  void index_close() {
     skip_space();
     if (peek() != ']') fail("']' expected");
     ++i_;
+  }
+
+  void tool_edge_data(int p, std::size_t at) {
+    std::string what = fmt::format("$TC_DP{}", p);
+    index_open(what);
+    std::int64_t t = digits("tool number");
+    skip_space();
+    if (peek() != ',') fail(fmt::format("',' expected between tool and edge number (write {}[t,d])", what));
+    ++i_;
+    skip_space();
+    std::int64_t d = digits("edge number");
+    index_close();
     if (!equals()) fail("'=' expected");
-    Decimal v = number("$TC_DP value");
+    Decimal v = number(what + " value");
     if (t < 1 || d < 1) fail("tool and edge numbers start at 1", at);
+    if (d > 32000) fail("edge numbers go up to 32000", at);
     if (out_.tool_data_count == BlockWords::kMaxToolData) fail("too many tool data assignments in one block", at);
-    out_.tool_data[static_cast<std::size_t>(out_.tool_data_count++)] = {static_cast<int>(p), static_cast<int>(t),
-                                                                        static_cast<int>(d), v};
+    out_.tool_data[static_cast<std::size_t>(out_.tool_data_count++)] = {p, static_cast<int>(t), static_cast<int>(d), v};
+  }
+
+  // $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).
+  void tool_name_data(std::size_t at) {
+    index_open("$TC_TP2");
+    std::int64_t t = digits("tool number");
+    index_close();
+    if (!equals()) fail("'=' expected");
+    if (peek() != '"') fail("$TC_TP2 needs a name in quotes: $TC_TP2[t]=\"NAME\"");
+    ++i_;
+    std::size_t start = i_;
+    while (!at_end() && peek() != '"') ++i_;
+    if (at_end()) fail("closing '\"' expected");
+    std::string name(s_.substr(start, i_ - start));
+    ++i_;
+    if (t < 1) fail("tool numbers start at 1", at);
+    if (name.empty()) fail("the tool name is empty", at);
+    if (out_.tool_names_count == BlockWords::kMaxToolData) fail("too many tool names in one block", at);
+    out_.tool_names[static_cast<std::size_t>(out_.tool_names_count++)] = {static_cast<int>(t), name};
+  }
+
+  // $TC_TP1, $TC_TP3 … $TC_TP11 (duplo number, size, place type, …): no effect on the path.
+  void ignored_tool_parameter(const std::string& what) {
+    index_open(what);
+    digits("tool number");
+    index_close();
+    if (!equals()) fail("'=' expected");
+    if (peek() == '"') {
+      ++i_;
+      while (!at_end() && peek() != '"') ++i_;
+      if (at_end()) fail("closing '\"' expected");
+      ++i_;
+      return;
+    }
+    number(what + " value");
   }
 
   std::string_view s_;
   std::size_t i_ = 0;
   int line_;
   BlockWords& out_;
+  unsigned groups_ = 0;
+  std::string label_;
 };
 
 }  // namespace

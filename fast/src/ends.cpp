@@ -269,6 +269,40 @@ void Engine::State::deselect(const Block& b) {
   retraction_line(last, end);
 }
 
+// TRC-DESEL-3: G40 without a plane axis ends the last contour block at its normal end point now;
+// the block (and those after it without a plane axis) run there.
+void Engine::State::deselect_in_place(const Block& b) {
+  decide("TRC-DESEL-3", b.words.line, "in-place");
+  Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+  if (!close_open(end, b.words.line, b.words.number, true)) return;
+  run_dummies(end);
+  retract_from = end;
+  phase = Phase::kRetracting;
+  retraction_pending(b);
+}
+
+void Engine::State::retraction_pending(const Block& b) {
+  if (b.state.plane != plane) return raise(10757, b.words.line, b.words.number);  // TRC-PLANE-1
+  BlockCopy c = copy_of(b);
+  if (!b.programs_plane_axis()) {
+    line(c, xyz(retract_from, h(c.start)), xyz(retract_from, h(c.end)), OriginKind::kRetraction, c.rapid);
+    return;
+  }
+  if (b.state.side == Side::kOff) {
+    if (b.is_arc()) return raise(10754, b.words.line, b.words.number);  // TRC-DESEL-2
+    decide("TRC-DESEL-3", b.words.line, "retraction");
+    return retraction_line(c, retract_from);
+  }
+  // Selected again: the approach starts where the tool is (as after a side change, TRC-SIDE-1).
+  PathPoint tool = xyz(retract_from, h(c.start));
+  phase = Phase::kOff;
+  off(b);
+  if (phase == Phase::kApproach) {
+    selection.start = tool;
+    selection_from_tool = true;
+  }
+}
+
 void Engine::State::retraction_line(BlockCopy& last, Vec2 from_point) {
   PathPoint from = xyz(from_point, h(last.start));
   double length =

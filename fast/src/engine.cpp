@@ -213,10 +213,7 @@ void Engine::State::active(const Block& b) {
   if (looking) return look_ahead(b, current);
   if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
   if (b.state.side == Side::kOff) {
-    if (!b.programs_plane_axis()) {
-      decide("TRC-DESEL-3", b.words.line, "no-plane-axis");
-      return queue_dummy(b);
-    }
+    if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
   }
   if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3
@@ -438,6 +435,7 @@ bool Engine::stopped() const { return state_->stopped; }
 
 void Engine::push(const Block& b) {
   if (state_->stopped) return;
+  if (!b.notice.empty()) state_->sink.notice({b.words.line, b.notice_clause, b.notice});  // the reader's
   state_->take(b);
 }
 
@@ -463,6 +461,9 @@ void Engine::State::step(const Block& b, const PlaneOverride* o) {
         break;
       case Phase::kActive:
         active(b);
+        break;
+      case Phase::kRetracting:
+        retraction_pending(b);
         break;
     }
     release_window(b);

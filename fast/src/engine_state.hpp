@@ -81,7 +81,9 @@ struct BlockCopy {
 inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
 struct Engine::State {
-  enum class Phase { kOff, kApproach, kActive };
+  // kRetracting: a G40 block without a plane axis left the tool at the normal end point of the
+  // last contour block; the next block with a plane axis finishes the retraction (TRC-DESEL-3).
+  enum class Phase { kOff, kApproach, kActive, kRetracting };
 
   State(const MachineData& m, PathSink& out) : md(m), sink(out), sar_seq(m) {
     // TRC-CD-1: what the window can hold: MD20240 + 2 traversing blocks, each with up to MD20250
@@ -108,6 +110,7 @@ struct Engine::State {
 
   BlockCopy selection;               // kApproach: the selection block
   bool selection_from_tool = false;  // its start is the tool after a side change (TRC-SIDE-1)
+  Vec2 retract_from{};                // TRC-DESEL-3: where the tool waits in the plane
   // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
   // output once the first element's end is known.
   bool approach_pending = false;
@@ -473,6 +476,8 @@ struct Engine::State {
   // TRC-DESEL-1: deselection; with KONT from behind the end point TRC-KONT-* travel around it,
   // otherwise (NORM, KONT in front) TRC-RETR-NORM-1.
   void deselect(const Block& b);
+  void deselect_in_place(const Block& b);
+  void retraction_pending(const Block& b);
 
   // TRC-RETR-NORM-1: the straight line to the programmed end point, a tool-centre position.
   void retraction_line(BlockCopy& last, Vec2 from_point);

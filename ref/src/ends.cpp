@@ -212,6 +212,43 @@ void Reference::deselect(const Block& b) {
   retraction_line(b, end);
 }
 
+// TRC-DESEL-3: G40 without a plane axis ends the last contour block at its normal end point now;
+// the block (and those after it without a plane axis) run there.
+void Reference::deselect_in_place(const Block& b) {
+  decide("TRC-DESEL-3", b.words.line, "in-place");
+  Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
+  if (!close_open(end, b, true)) return;
+  run_held_back(end);
+  open_.reset();
+  retract_from_ = end;
+  phase_ = Phase::kRetracting;
+  retraction_pending(b);
+}
+
+void Reference::retraction_pending(const Block& b) {
+  Decimal from_h = coord(b.start, comp_->axes.applicate);
+  if (b.state.plane != comp_->plane) return raise(10757, b);  // TRC-PLANE-1: the tool is off its plane position
+  if (!b.programs_plane_axis()) {
+    emit_line(b, at({*retract_from_, from_h}), at({*retract_from_, coord(b.end, comp_->axes.applicate)}),
+              OriginKind::kRetraction);
+    return;
+  }
+  if (b.state.side == Side::kOff) {
+    if (b.is_arc()) return raise(10754, b);  // TRC-DESEL-2: the retraction is a linear block
+    decide("TRC-DESEL-3", b.words.line, "retraction");
+    Point from = *retract_from_;
+    retract_from_.reset();
+    return retraction_line(b, from);
+  }
+  // Selected again: the approach starts where the tool is (as after a side change, TRC-SIDE-1).
+  ExactPoint tool = at({*retract_from_, from_h});
+  retract_from_.reset();
+  phase_ = Phase::kOff;
+  comp_.reset();
+  compensation_off(b);
+  if (phase_ == Phase::kApproach) selection_from_ = tool;
+}
+
 Reference::KontCorner Reference::retraction_corner(const Block& b, const ContourElement& last) const {
   KontCorner k;
   k.vertex = last.b, k.point = plane_end(b);

@@ -17,6 +17,8 @@ void Reference::step(const Block& b) {
       return waiting_for_contour(b);
     case Phase::kActive:
       return compensation_active(b);
+    case Phase::kRetracting:
+      return retraction_pending(b);
   }
 }
 
@@ -161,10 +163,7 @@ void Reference::compensation_active(const Block& b) {
   if (looking_) return look_ahead(b);
   if (b.state.side != Side::kOff && b.state.side != comp_->side) return change_side(b);
   if (b.state.side == Side::kOff) {
-    if (!b.programs_plane_axis()) {  // TRC-DESEL-3
-      decide("TRC-DESEL-3", b.words.line, "no-plane-axis");
-      return hold_back(b);
-    }
+    if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
   }
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3

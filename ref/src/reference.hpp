@@ -62,7 +62,9 @@ class Reference {
   ExactPath path;
 
  private:
-  enum class Phase { kOff, kApproach, kActive };
+  // kRetracting: a G40 block without a plane axis left the tool at the normal end point of the
+  // last contour block; the next block with a plane axis finishes the retraction (TRC-DESEL-3).
+  enum class Phase { kOff, kApproach, kActive, kRetracting };
 
   // --- the compensation in force ---------------------------------------------------------------
   struct Compensation {
@@ -394,6 +396,8 @@ class Reference {
   // TRC-DESEL-1: deselection; with KONT from behind the end point TRC-KONT-* travel around it,
   // otherwise (NORM, KONT in front) TRC-RETR-NORM-1.
   void deselect(const Block& b);
+  void deselect_in_place(const Block& b);
+  void retraction_pending(const Block& b);
 
   // The corner the retraction line (to b's end) makes with the last block at its end point.
   KontCorner retraction_corner(const Block& b, const ContourElement& last) const;
@@ -430,6 +434,7 @@ class Reference {
   const Block* selection_ = nullptr;
   const Block* prev_block_ = nullptr;         // the last traversing block with compensation (TRC-CD-1)
   std::optional<ExactPoint> selection_from_;  // set after a side change (TRC-SIDE-1)
+  std::optional<Point> retract_from_;         // TRC-DESEL-3: where the tool waits in the plane
   std::vector<const Block*> dummies_;
   // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
   // output once the first element's end is known (TRC-EDGE-* may replace them).

@@ -10,6 +10,7 @@ std::string mm(const Decimal& d) { return d.to_string(); }  // a decimal margin,
 }  // namespace
 
 void Reference::take(Block b) {
+  if (!stopped_ && !b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice});  // the reader's
   std::optional<PlaneOverride> over = after_sar_end(b);
   if (stopped_) return;
   switch (sar_seq_.take(b)) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "cutcom/decimal.hpp"
 
@@ -30,8 +31,16 @@ inline std::string_view g_code(EdgeStrategy s) {
 enum class SarSide : std::uint8_t { kG140, kG141, kG142, kG143 };
 enum class SarSegmentation : std::uint8_t { kG340, kG341 };
 enum class SarContour : std::uint8_t { kG147, kG148, kG247, kG248, kG347, kG348 };
-enum class FeedType : std::uint8_t { kG94, kG95 };
+enum class FeedType : std::uint8_t { kG94, kG95, kG93 };
 enum class PathMode : std::uint8_t { kG60, kG64 };
+
+// Units (NC-UNIT-1): G71/G710 metric, G70/G700 inch; the 7x0 forms scale the feed too.
+enum class Units : std::uint8_t { kG71, kG70, kG710, kG700 };
+// Diameter programming of the transverse axis X in turning (NC-DIAM-1).
+enum class DiameterMode : std::uint8_t { kDiamof, kDiamon, kDiam90 };
+
+// Programmable frames (NC-FRAME-*): the block's axis words are the frame's values, not a move.
+enum class FrameWord : std::uint8_t { kTrans, kAtrans, kScale, kAscale, kMirror, kAmirror };
 
 // How an axis value is to be read: modal G90/G91, or forced by AC()/IC().
 enum class ValueMode : std::uint8_t { kModal, kAbsolute, kIncremental };
@@ -43,18 +52,28 @@ struct AxisWord {
   ValueMode mode = ValueMode::kModal;
 };
 
-// An auxiliary function kept as an action (M or H), executed where the engines place it.
+// An action: a word that does not move the geometry axes, executed where the engines place it
+// (PATH-ACTION-1). M and H functions keep their address and number; every other action word
+// (S, G642, MSG("..."), SPOS=90, G4 F2, ...) is kept as written (NC-WORD-*).
 struct AuxFunction {
-  char address = 'M';
+  char address = 'M';  // 'M' or 'H' with `value`; 0: the word as written in `text`
   std::int64_t value = 0;
+  std::string text;
+  std::string name() const { return address ? address + std::to_string(value) : text; }
 };
 
 // $TC_DPn[t,d] = value
 struct ToolDataAssignment {
-  int parameter = 0;  // 1 (type), 6 (radius), 15 (radius wear)
+  int parameter = 0;  // 1 … 25: 1 type, 2 cutting edge position, 6 radius, 15 radius wear
   int tool = 0;
   int edge = 0;
   Decimal value;
+};
+
+// $TC_TP2[t] = "NAME"
+struct ToolNameAssignment {
+  int tool = 0;
+  std::string name;
 };
 
 template <class T>
@@ -62,7 +81,7 @@ using Opt = std::optional<T>;
 
 // Everything one NC line programs, as written (before modal resolution).
 struct BlockWords {
-  static constexpr int kMaxAux = 10;
+  static constexpr int kMaxAux = 16;
   static constexpr int kMaxToolData = 4;
 
   int line = 0;                    // 1-based source line
@@ -97,12 +116,26 @@ struct BlockWords {
   Opt<Decimal> fad;
   FadMode fad_mode = FadMode::kModal;
   bool stopre = false;
-  bool program_end = false;  // M2 / M30
+  bool program_end = false;  // M2 / M30 (M17 / RET: end of a subprogram run on its own)
+  bool dwell = false;        // G4: F and S in the block are the dwell, not feed or speed
+  bool tool_change = false;  // M6 (TOOL-CHANGE-1)
+  Opt<std::string> tool_name;  // T="NAME" (TOOL-NAME-1)
+  Opt<Units> units;
+  Opt<int> settable_offset;  // G500 = 0, G54…G57 = 1…4, G505…G599 = 5…99 (NC-OFFSET-1)
+  Opt<DiameterMode> diameter;
+  Opt<FrameWord> frame;
+  // NC-CYCLE-1: a block that moves the tool along a path cutcom does not simulate (a standard
+  // cycle, G74/G75, a G53/G153/SUPA move): what it is, as written ("CYCLE81", "SUPA").
+  std::string not_simulated;
+  bool modal_call = false;      // MCALL: the cycle in `not_simulated` runs after every move
+  bool modal_call_end = false;  // MCALL alone
 
   std::array<AuxFunction, kMaxAux> aux{};
   int aux_count = 0;
   std::array<ToolDataAssignment, kMaxToolData> tool_data{};
   int tool_data_count = 0;
+  std::array<ToolNameAssignment, kMaxToolData> tool_names{};
+  int tool_names_count = 0;
 
   bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
 };
@@ -130,6 +163,11 @@ struct ModalState {
   Decimal edge_radius;  // $TC_DP6
   Decimal edge_wear;    // $TC_DP15
   bool edge_defined = false;
+
+  // Settings of the reader that machine data decide, not the program (TOOL-CHANGE-1/2):
+  // MD20270 $MC_CUTTING_EDGE_DEFAULT and MD22550 $MC_TOOL_CHANGE_MODE.
+  std::int64_t md_edge_default = 1;  // >0 that edge, 0 D0, -1 keep the D number
+  bool md_change_on_m6 = false;      // MD22550 = 1: T preselects, M6 changes
 
   // TRC-RADIUS-1: effective radius = $TC_DP6 + $TC_DP15 + OFFN (may be negative).
   Decimal effective_radius() const { return edge_radius + edge_wear + offn; }
@@ -185,6 +223,10 @@ struct Block {
   bool circle = false;  // set by the reader: see is_arc()
 
   SarTag sar;  // a SAR sub-block (engines only; the reader leaves it empty)
+  // A notice of the reader's on this block (a move not simulated, a position assumed): the
+  // engines pass it to the sink when they take the block.
+  std::string_view notice_clause;
+  std::string notice;
 
   // Any geometry axis of the active plane written in the block (spec TRC-SEL-3/4).
   bool programs_plane_axis() const {

@@ -44,6 +44,10 @@ class Decimal {
   // Exact decimal text, trailing zeros removed ("12.5", "-0.001", "3").
   std::string to_string() const;
 
+  // value * num / den on the 10^-9 grid, rounded to the nearest unit (half away from zero), for
+  // the unit and diameter conversions of the reader (NC-UNIT-2); `exact` says whether it was.
+  Decimal scaled(std::int64_t num, std::int64_t den, bool* exact = nullptr) const;
+
   // Checked arithmetic: throws std::overflow_error beyond kMaxUnits * 1000.
   friend Decimal operator+(Decimal a, Decimal b);
   friend Decimal operator-(Decimal a, Decimal b);

@@ -1,0 +1,134 @@
+// NC-WORD-*, NC-CYCLE-*, NC-ERR-3: which multi-letter words are actions, cycles, or known
+// SINUMERIK NC outside cutcom's scope. The lists are the programming manual's words that real
+// part programs carry around their contours; anything else is named as unknown.
+#include "nc_vocabulary.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+
+namespace cutcom {
+
+namespace {
+
+constexpr std::string_view kActionKeywords[] = {
+    "SOFT",   "BRISK",   "DRIVE", "FFWON", "FFWOF",   "CFC",   "CFTCP", "CFIN", "COMPON",
+    "COMPCAD", "COMPCURV", "COMPOF", "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA"};
+constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA"};
+constexpr std::string_view kActionCalls[] = {"MSG",       "WORKPIECE", "GROUP_BEGIN",
+                                                          "GROUP_END", "CYCLE832",  "SETMS"};
+
+// Known SINUMERIK words cutcom does not simulate, and why (the message names the family).
+struct Unsupported {
+  std::string_view word, family;
+};
+constexpr Unsupported kUnsupported[] = {
+    {"DEF", "variables (issue: parametric programs)"},
+    {"IF", "control flow"},
+    {"ELSE", "control flow"},
+    {"ENDIF", "control flow"},
+    {"GOTO", "control flow"},
+    {"GOTOF", "control flow"},
+    {"GOTOB", "control flow"},
+    {"GOTOC", "control flow"},
+    {"WHILE", "control flow"},
+    {"ENDWHILE", "control flow"},
+    {"FOR", "control flow"},
+    {"ENDFOR", "control flow"},
+    {"LOOP", "control flow"},
+    {"ENDLOOP", "control flow"},
+    {"REPEAT", "control flow"},
+    {"REPEATB", "control flow"},
+    {"UNTIL", "control flow"},
+    {"CASE", "control flow"},
+    {"PROC", "subprograms"},
+    {"CALL", "subprogram calls"},
+    {"PCALL", "subprogram calls"},
+    {"EXTCALL", "subprogram calls"},
+    {"SAVE", "subprograms"},
+    {"RND", "contour definitions (rounding)"},
+    {"RNDM", "contour definitions (modal rounding)"},
+    {"CHF", "contour definitions (chamfer)"},
+    {"CHR", "contour definitions (chamfer)"},
+    {"ANG", "contour definitions (angle)"},
+    {"AP", "polar coordinates"},
+    {"RP", "polar coordinates"},
+    {"CIP", "circles through an intermediate point"},
+    {"CT", "tangential circles"},
+    {"AR", "circles by opening angle"},
+    {"TURN", "helices with extra turns"},
+    {"ROT", "programmable rotations"},
+    {"AROT", "programmable rotations"},
+    {"RPL", "programmable rotations"},
+    {"CUTCONON", "keeping the compensation constant (CUTCONON)"},
+    {"CUTCONOF", "keeping the compensation constant (CUTCONOF)"},
+    {"ASPLINE", "splines"},
+    {"BSPLINE", "splines"},
+    {"CSPLINE", "splines"},
+    {"POLY", "polynomials"},
+    {"TRAORI", "transformations"},
+    {"TRANSMIT", "transformations"},
+    {"TRACYL", "transformations"},
+    {"CUT2DF", "compensation in a frame plane"},
+    {"CUT3DC", "3D compensation"},
+    {"CUT3DF", "3D compensation"},
+    {"CUT3DFF", "3D compensation"},
+    {"CUT3DFS", "3D compensation"},
+    {"CUT3DCC", "3D compensation"},
+    {"DL", "sum and setup offsets"},
+    {"TOFFON", "tool offsets in the program"},
+    {"CROT", "frame functions"},
+};
+
+template <std::size_t N>
+bool contains(const std::string_view (&list)[N], std::string_view n) {
+  return std::find(std::begin(list), std::end(list), n) != std::end(list);
+}
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+}  // namespace
+
+NamedWord classify_named_word(std::string_view n) {
+  if (contains(kActionKeywords, n)) return NamedWord::kActionKeyword;
+  if (contains(kActionValues, n)) return NamedWord::kActionValue;
+  if (contains(kActionCalls, n)) return NamedWord::kActionCall;
+  if (n == "DIAMON" || n == "DIAMOF" || n == "DIAM90") return NamedWord::kDiameter;
+  if (n == "MCALL") return NamedWord::kModalCall;
+  if (n == "RET") return NamedWord::kSubprogramEnd;
+  // NC-CYCLE-1: CYCLEnn, POCKETn, SLOTn, LONGHOLE, HOLESn, ShopMill/ShopTurn E_…/F_… and SUPA.
+  if (n == "SUPA" || n == "LONGHOLE") return NamedWord::kCycle;
+  for (std::string_view p : {std::string_view("CYCLE"), std::string_view("POCKET"), std::string_view("SLOT"),
+                             std::string_view("HOLES")})
+    if (n.substr(0, p.size()) == p && all_digits(n.substr(p.size()))) return NamedWord::kCycle;
+  if ((n.substr(0, 2) == "E_" || n.substr(0, 2) == "F_") && n.size() > 2) return NamedWord::kCycle;
+  for (const Unsupported& u : kUnsupported)
+    if (u.word == n) return NamedWord::kNotSimulated;
+  return NamedWord::kUnknown;
+}
+
+bool is_action_value_wrapper(std::string_view n) {
+  return n == "DC" || n == "ACP" || n == "ACN" || n == "AC" || n == "IC";
+}
+
+std::string unsupported_message(std::string_view word, std::string_view what) {
+  std::string family(what);
+  if (family.empty())
+    for (const Unsupported& u : kUnsupported)
+      if (u.word == word) family = u.family;
+  if (family.empty()) return fmt::format("'{}' is SINUMERIK NC that cutcom does not simulate", word);
+  return fmt::format("'{}' is SINUMERIK NC that cutcom does not simulate ({})", word, family);
+}
+
+std::string unknown_message(std::string_view word) {
+  return fmt::format(
+      "'{}' is not a SINUMERIK word cutcom knows (a user variable or subprogram name? those are not supported "
+      "yet)",
+      word);
+}
+
+}  // namespace cutcom

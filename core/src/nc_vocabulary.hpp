@@ -1,0 +1,30 @@
+// The SINUMERIK words cutcom reads beyond the compensation's own (NC-WORD-*, NC-CYCLE-*), and the
+// one wording of every "not supported" and "unknown word" message (NC-ERR-3).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace cutcom {
+
+enum class NamedWord {
+  kActionKeyword,  // SOFT, FFWON, …: kept as an action
+  kActionValue,    // ADIS=…, SPOS=…: kept as an action as written
+  kActionCall,     // MSG("…"), WORKPIECE(…), …: kept as an action as written
+  kDiameter,       // DIAMON, DIAMOF, DIAM90
+  kCycle,          // a standard cycle: not simulated
+  kModalCall,      // MCALL
+  kSubprogramEnd,  // RET
+  kNotSimulated,   // SINUMERIK NC that cutcom does not simulate
+  kUnknown,        // not a SINUMERIK word cutcom knows
+};
+
+NamedWord classify_named_word(std::string_view upper_name);
+bool is_action_value_wrapper(std::string_view upper_name);  // DC, ACP, ACN, AC, IC
+
+// "'X' is SINUMERIK NC that cutcom does not simulate (what)".
+std::string unsupported_message(std::string_view word, std::string_view what = {});
+// "'X' is not a SINUMERIK word cutcom knows (…)".
+std::string unknown_message(std::string_view word);
+
+}  // namespace cutcom

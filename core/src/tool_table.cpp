@@ -1,0 +1,237 @@
+// TOOL-DATA-1, TOOL-NAME-1, TOOL-FILE-1, NC-OFFSET-2: the control's tool table and settable work
+// offsets, from the program's own assignments or from the control's archive files.
+#include <fmt/format.h>
+
+#include <cctype>
+
+#include "cutcom/reader.hpp"
+
+namespace cutcom {
+
+void ToolTable::assign(const ToolDataAssignment& a) {
+  EdgeData& e = edges_[{a.tool, a.edge}];
+  switch (a.parameter) {
+    case 1:
+      e.type = a.value;
+      break;
+    case 2:
+      e.position = a.value;
+      break;
+    case 6:
+      e.radius = a.value;
+      break;
+    case 15:
+      e.wear = a.value;
+      break;
+    default:  // lengths, other wear and base values: no effect on 2D radius compensation
+      break;
+  }
+}
+
+void ToolTable::name(const ToolNameAssignment& a) { names_[a.name] = a.tool; }
+
+const EdgeData* ToolTable::find(std::int64_t tool, std::int64_t edge) const {
+  auto it = edges_.find({tool, edge});
+  return it == edges_.end() ? nullptr : &it->second;
+}
+
+std::optional<std::int64_t> ToolTable::number_of(const std::string& name) const {
+  auto it = names_.find(name);
+  if (it == names_.end()) return std::nullopt;
+  return it->second;
+}
+
+bool ToolTable::has_tool(std::int64_t tool) const {
+  auto it = edges_.lower_bound({tool, 0});
+  return it != edges_.end() && it->first.first == tool;
+}
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+std::string upper(std::string_view s) {
+  std::string u(s);
+  for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return u;
+}
+
+// Lines of an archive that carry no data cutcom needs: header, channel selection, end, comments.
+bool archive_frame_line(const std::string& u) {
+  return u.empty() || u[0] == '%' || u[0] == ';' || u.rfind("CHANDATA", 0) == 0 || u == "M17" || u == "M30" ||
+         u == "M02" || u == "M2";
+}
+
+}  // namespace
+
+void ToolTable::load(std::istream& in, const std::string& source_name) {
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    std::string u = upper(trim(line));
+    if (archive_frame_line(u)) continue;
+    bool ours = u.rfind("$TC_DP", 0) == 0 || u.rfind("$TC_TP2[", 0) == 0 || u.rfind("$TC_TP2 ", 0) == 0;
+    if (!ours) {
+      // Other tool management data ($TC_TP8, $TC_MOP…, $TC_ADPT…, $A_…): no effect on the path.
+      if (u[0] == '$') continue;
+      throw InputError(n, 1, fmt::format("{}: not a line of a tool-offset archive ($TC_DPn[t,d]=…, "
+                                         "$TC_TP2[t]=\"NAME\")",
+                                         source_name));
+    }
+    BlockWords w;
+    try {
+      parse_block_words(line, n, w);
+    } catch (const InputError& e) {
+      throw InputError(n, e.column(), fmt::format("{}: {}", source_name, e.detail()));
+    }
+    for (int k = 0; k < w.tool_data_count; ++k) assign(w.tool_data[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < w.tool_names_count; ++k) name(w.tool_names[static_cast<std::size_t>(k)]);
+  }
+  if (in.bad()) throw std::runtime_error(fmt::format("{}: read error", source_name));
+}
+
+void OffsetTable::set(int index, int axis, Decimal value) {
+  Point3& p = offsets_[index];
+  (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = value;
+}
+
+Point3 OffsetTable::translation(int index) const {
+  auto it = offsets_.find(index);
+  return it == offsets_.end() ? Point3{} : it->second;
+}
+
+bool OffsetTable::defined(int index) const { return index == 0 || offsets_.count(index) != 0; }
+
+namespace {
+
+class OffsetLine {
+ public:
+  OffsetLine(std::string_view s, int line, const std::string& source) : s_(s), line_(line), source_(source) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(line_, static_cast<int>(i_) + 1, fmt::format("{}: {}", source_, what));
+  }
+  void space() {
+    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
+  }
+  void expect(char c) {
+    space();
+    if (i_ >= s_.size() || s_[i_] != c) fail(fmt::format("'{}' expected", c));
+    ++i_;
+    space();
+  }
+  bool accept(char c) {
+    space();
+    if (i_ < s_.size() && s_[i_] == c) {
+      ++i_;
+      space();
+      return true;
+    }
+    return false;
+  }
+  std::string word() {
+    space();
+    std::string w;
+    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_' || s_[i_] == '$'))
+      w.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(s_[i_++]))));
+    return w;
+  }
+  Decimal number() {
+    space();
+    std::size_t start = i_;
+    if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) ++i_;
+    while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.')) ++i_;
+    auto r = Decimal::parse(s_.substr(start, i_ - start));
+    if (!r.value) fail(fmt::format("'{}' is not a number", s_.substr(start, i_ - start)));
+    return *r.value;
+  }
+  int axis() {
+    std::string a = word();
+    if (a == "X") return 0;
+    if (a == "Y") return 1;
+    if (a == "Z") return 2;
+    fail(fmt::format("'{}' is not a geometry axis (X, Y, Z)", a));
+  }
+  bool end() {
+    space();
+    return i_ >= s_.size() || s_[i_] == ';';
+  }
+
+  // $P_UIFR[n]=CTRANS(X,10,Y,20) | $P_UIFR[n,X,TR]=10 (also FI, and RT/SC/MI at their neutral value).
+  void run(OffsetTable& table) {
+    if (word() != "$P_UIFR") fail("only $P_UIFR[n]… lines set settable offsets");
+    expect('[');
+    Decimal idx = number();
+    auto n = idx.to_integer();
+    if (!n || *n < 1 || *n > 99) fail("settable offset numbers are 1 … 99 (G54 = 1, G505 = 5, …)");
+    int index = static_cast<int>(*n);
+    if (accept(',')) {
+      int a = axis();
+      expect(',');
+      std::string component = word();
+      expect(']');
+      expect('=');
+      Decimal v = number();
+      if (component == "TR" || component == "FI") {
+        Decimal prev = component == "FI" ? coord(table.translation(index), a) : Decimal{};
+        if (component == "TR") prev = Decimal{};
+        table.set(index, a, prev + v);
+      } else if (component == "RT") {
+        if (!v.is_zero()) fail("a rotation in a settable offset is SINUMERIK NC that cutcom does not simulate");
+      } else if (component == "SC") {
+        if (v != Decimal::from_int(1) && !v.is_zero()) fail("a scale in a settable offset is not simulated");
+      } else if (component == "MI") {
+        if (!v.is_zero()) fail("a mirror in a settable offset is not simulated");
+      } else {
+        fail(fmt::format("'{}' is not a frame component (TR, FI, RT, SC, MI)", component));
+      }
+    } else {
+      expect(']');
+      expect('=');
+      std::string fn = word();
+      if (fn != "CTRANS") fail(fmt::format("'{}': only CTRANS(axis, value, …) is supported here", fn));
+      expect('(');
+      Point3 p;
+      if (!accept(')')) {
+        do {
+          int a = axis();
+          expect(',');
+          (a == 0 ? p.x : a == 1 ? p.y : p.z) = number();
+        } while (accept(','));
+        expect(')');
+      }
+      for (int a = 0; a < 3; ++a) table.set(index, a, coord(p, a));
+    }
+    if (!end()) fail("unexpected text after the assignment");
+  }
+
+ private:
+  std::string_view s_;
+  std::size_t i_ = 0;
+  int line_;
+  const std::string& source_;
+};
+
+}  // namespace
+
+void OffsetTable::load(std::istream& in, const std::string& source_name) {
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    std::string u = upper(trim(line));
+    if (archive_frame_line(u)) continue;
+    if (u.rfind("$P_UIFR", 0) != 0) {
+      if (u[0] == '$') continue;  // other frames of the archive ($P_CHBFR, …) do not change the path here
+      throw InputError(n, 1, fmt::format("{}: not a settable-offset line ($P_UIFR[n]=CTRANS(…))", source_name));
+    }
+    OffsetLine(trim(line), n, source_name).run(*this);
+  }
+}
+
+}  // namespace cutcom

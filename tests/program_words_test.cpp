@@ -1,0 +1,279 @@
+// The words real part programs carry around their contours: headers, actions, dwell, units,
+// work offsets, frames, tool tables and names, cycles that are not simulated.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "cutcom/fast/engine.hpp"
+#include "cutcom/machine_data.hpp"
+#include "cutcom/reader.hpp"
+#include "cutcom/ref/engine.hpp"
+#include "cutcom/sink.hpp"
+
+namespace cutcom {
+namespace {
+
+std::vector<Block> read(const std::string& text, ModalState initial = {}, const OffsetTable* offsets = nullptr) {
+  std::istringstream in(text);
+  ProgramReader r(in, initial);
+  if (offsets) r.offsets() = *offsets;
+  std::vector<Block> out;
+  Block b;
+  while (r.next(b)) out.push_back(b);
+  return out;
+}
+
+Decimal dec(const char* s) { return *Decimal::parse(s).value; }
+Point3 pt(const char* x, const char* y, const char* z) { return {dec(x), dec(y), dec(z)}; }
+
+std::vector<std::string> actions(const Block& b) {
+  std::vector<std::string> a;
+  for (int i = 0; i < b.words.aux_count; ++i) a.push_back(b.words.aux[static_cast<std::size_t>(i)].name());
+  return a;
+}
+
+struct Both {
+  RunResult fast, ref;
+};
+Both run_both(const std::string& text, const MachineData& md = {}) {
+  Both r;
+  for (int e = 0; e < 2; ++e) {
+    std::istringstream in(text);
+    ProgramReader reader(in, md.initial_state());
+    CollectingSink sink;
+    if (e == 0)
+      fast::run(reader, md, sink);
+    else
+      ref::run(reader, md, sink);
+    (e == 0 ? r.fast : r.ref) = sink.result;
+  }
+  return r;
+}
+
+// covers: NC-WORD-1 NC-WORD-2
+TEST(ProgramWords, HeadersSkipBlocksMainBlocksAndLabels) {
+  auto b = read("%_N_PART_MPF\n;$PATH=/_N_MPF_DIR\n%\n/N10 X1\n/3 N20 X2\n:30 X3\nSTART: N40 X4\nONLY_A_LABEL:\n");
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_EQ(*b[0].words.number, 10);
+  EXPECT_EQ(b[0].end.x, dec("1"));  // skip levels are off: the block runs
+  EXPECT_EQ(*b[1].words.number, 20);
+  EXPECT_EQ(*b[2].words.number, 30);
+  EXPECT_EQ(*b[3].words.number, 40);
+  EXPECT_EQ(b[3].end.x, dec("4"));
+}
+
+// covers: NC-WORD-3 NC-WORD-5 NC-WORD-6 NC-LEX-5
+TEST(ProgramWords, SetUpWordsAreActionsKeptAsWritten) {
+  auto b = read(
+      "G642 SOFT FFWON CFTCP COMPCAD G601 ADIS=0.5 G96 LIMS=3000\n"
+      "S447 M3 M1=4 S1=800 SPOS=DC(90) H2 E5\n"
+      "MSG(\"Roughing; first pass\") WORKPIECE(,\"\",,\"BOX\",0,0,-20,-80,0,0,100,100)\n"
+      "GROUP_BEGIN(0,\"Contour\",0,0) CYCLE832(0.01,_ORI_ROUGH,1)\nG9 G1 X10 F100\n");
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"G642", "SOFT", "FFWON", "CFTCP", "COMPCAD", "G601",
+                                                      "ADIS=0.5", "G96", "LIMS=3000"}));
+  EXPECT_EQ(b[0].state.feed_type, FeedType::kG95);  // G96: feed per revolution
+  EXPECT_EQ(b[0].state.path_mode, PathMode::kG64);
+  EXPECT_EQ(actions(b[1]),
+            (std::vector<std::string>{"S447", "M3", "M1=4", "S1=800", "SPOS=DC(90)", "H2", "E5"}));
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"MSG(\"Roughing; first pass\")",
+                                                      "WORKPIECE(,\"\",,\"BOX\",0,0,-20,-80,0,0,100,100)"}));
+  EXPECT_EQ(actions(b[3]).size(), 2u);
+  EXPECT_EQ(actions(b[4]), (std::vector<std::string>{"G9"}));
+  EXPECT_FALSE(b[1].moves_in_plane());
+  EXPECT_THROW(read("G64 G642\n"), InputError);  // one group, twice
+}
+
+// covers: NC-WORD-4
+TEST(ProgramWords, DwellTakesItsFAsTimeNotFeed) {
+  auto b = read("G1 X10 F300\nG4 F2\nX20\n");
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"G4 F2"}));
+  EXPECT_EQ(b[1].state.feed, dec("300"));
+  EXPECT_EQ(b[2].state.feed, dec("300"));
+  EXPECT_THROW(read("G4 F2 X10\n"), InputError);
+}
+
+// covers: NC-UNIT-1 NC-UNIT-2
+TEST(ProgramWords, InchIsConvertedOntoTheGrid) {
+  auto b = read("G70 X1 Y0.5 F10\nG700 X2 F10\nG71 X10\nG70 G91 X0.000000001\n");
+  EXPECT_EQ(b[0].end.x, dec("25.4"));
+  EXPECT_EQ(b[0].end.y, dec("12.7"));
+  EXPECT_EQ(b[0].state.feed, dec("10"));  // G70: the feed stays in the basic system
+  EXPECT_EQ(b[1].end.x, dec("50.8"));
+  EXPECT_EQ(b[1].state.feed, dec("254"));  // G700: the feed too
+  EXPECT_EQ(b[2].end.x, dec("10"));
+  EXPECT_EQ(b[3].end.x, dec("10.000000025"));  // 0.0000000254 mm rounded to the grid
+  auto c = read("G70 G2 X2 Y0 CR=1\n");
+  EXPECT_EQ(*c[0].words.cr, dec("25.4"));
+  EXPECT_EQ(Decimal(dec("-0.0000000005")).scaled(1, 1), dec("-0.0000000005").scaled(1, 1));
+  EXPECT_EQ(dec("0.000000003").scaled(1, 2), dec("0.000000002"));    // 1.5 units: half away from zero
+  EXPECT_EQ(dec("-0.000000003").scaled(1, 2), dec("-0.000000002"));  // symmetric
+}
+
+// covers: NC-DIAM-1
+TEST(ProgramWords, DiameterProgramming) {
+  auto b = read("G18 DIAMON X40 Z0\nG91 X-10\nG90 DIAM90 X30\nG91 X2\nG90 DIAMOF X30\nDIAMON G3 X20 Z-5 I=AC(10) K-5\n");
+  EXPECT_EQ(b[0].end.x, dec("20"));
+  EXPECT_EQ(b[1].end.x, dec("15"));  // incremental diameter: half of it
+  EXPECT_EQ(b[2].end.x, dec("15"));
+  EXPECT_EQ(b[3].end.x, dec("17"));  // DIAM90: incremental values are radii
+  EXPECT_EQ(b[4].end.x, dec("30"));
+  EXPECT_EQ(b[5].end.x, dec("10"));
+  EXPECT_EQ(b[5].centre->x, dec("5"));
+}
+
+// covers: NC-OFFSET-1 NC-OFFSET-2
+TEST(ProgramWords, SettableOffsetsRelativeToTheFirst) {
+  OffsetTable t;
+  std::istringstream file(
+      "%_N_UFR_INI\nCHANDATA(1)\n$P_UIFR[1]=CTRANS(X,100,Y,50,Z,-20)\n$P_UIFR[2,X,TR]=300\n$P_UIFR[2,Y,TR]=50\n"
+      "$P_UIFR[2,X,FI]=0.5\n$P_UIFR[2,Z,RT]=0\nM17\n");
+  t.load(file, "UFR.INI");
+  auto b = read("G54 G0 X10 Y10\nG55 X10\nY10\nG500 X0 Y0\n", {}, &t);
+  EXPECT_EQ(b[0].end, pt("10", "10", "0"));  // the output is in G54's workpiece system
+  EXPECT_EQ(b[0].notice_clause, "NC-OFFSET-1");
+  EXPECT_EQ(b[1].end, pt("210.5", "10", "0"));  // only the programmed axis moves into G55
+  EXPECT_EQ(b[2].end, pt("210.5", "10", "0"));
+  EXPECT_EQ(b[3].end, pt("-100", "-50", "0"));
+  std::istringstream rotated("$P_UIFR[1,Z,RT]=30\n");
+  try {
+    OffsetTable u;
+    u.load(rotated, "UFR.INI");
+    ADD_FAILURE() << "a rotation was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_NE(std::string(e.what()).find("UFR.INI: a rotation"), std::string::npos) << e.what();
+  }
+}
+
+// covers: NC-FRAME-1 NC-FRAME-2
+TEST(ProgramWords, TranslationScaleAndMirrorFrames) {
+  auto b = read(
+      "TRANS X10 Y20\nG1 X5 Y5\nATRANS X1\nX0\nSCALE X2 Y2\nX3 Y1\nG91 X1\nG90 TRANS\nX3 Y1\nMIRROR X0\nX3\n"
+      "AMIRROR X0\nX3\nMIRROR X0\nATRANS X10\nX3\n");
+  EXPECT_EQ(b[1].end, pt("15", "25", "0"));
+  EXPECT_FALSE(b[0].moves_in_plane());  // the frame block moves nothing
+  EXPECT_EQ(b[3].end, pt("11", "25", "0"));
+  EXPECT_EQ(b[5].end, pt("6", "2", "0"));  // SCALE replaces the translation
+  EXPECT_EQ(b[6].end, pt("8", "2", "0"));  // incremental values are scaled too
+  EXPECT_EQ(b[8].end, pt("3", "1", "0"));
+  EXPECT_EQ(b[10].end.x, dec("-3"));
+  EXPECT_EQ(b[12].end.x, dec("3"));   // mirrored twice
+  EXPECT_EQ(b[15].end.x, dec("-13"));  // ATRANS acts in the mirrored system
+  EXPECT_THROW(read("SCALE X2 Y3\nG2 X10 Y0 CR=5\n"), InputError);  // an ellipse
+  EXPECT_THROW(read("TRANS X10 G1 Y5\n"), InputError);
+  EXPECT_THROW(read("G41 T1 D1\nTRANS X10\n"), InputError);
+}
+
+// covers: NC-FRAME-3
+TEST(ProgramWords, MirroringSwapsCircleSenseAndSide) {
+  auto b = read(
+      "MIRROR X0\nG1 G41 X10 Y0\nG2 X0 Y10 CR=10\nG1 G40 X0 Y20\nMIRROR Y0 Z0\nG2 X0 Y10 CR=10\nMIRROR X0 Y0\n"
+      "G3 X1 Y1 CR=5\n");
+  EXPECT_EQ(b[1].state.side, Side::kRight);
+  EXPECT_EQ(b[2].state.motion, Motion::kArcCcw);
+  EXPECT_EQ(b[5].state.motion, Motion::kArcCcw);  // Y mirrored (Z is not a plane axis)
+  EXPECT_EQ(b[7].state.motion, Motion::kArcCcw);  // both plane axes: a rotation, no swap
+}
+
+// covers: NC-FRAME-3 TRC-RADIUS-2
+TEST(ProgramWords, AMirroredFrameEqualsTheMirroredProgram) {
+  const char* tools = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\n";
+  std::string framed = std::string(tools) +
+                       "T1 D1\nMIRROR X0\nG0 X-10 Y-5\nG1 G41 X0 Y0 F100\nX20\nG2 X30 Y10 CR=10\nG1 Y20\nG40 X40 Y30\n";
+  std::string mirrored = std::string(tools) +
+                         "T1 D1\nG0 X10 Y-5\nG1 G42 X0 Y0 F100\nX-20\nG3 X-30 Y10 CR=10\nG1 Y20\nG40 X-40 Y30\n";
+  Both a = run_both(framed), b = run_both(mirrored);
+  ASSERT_EQ(a.ref.path.size(), b.ref.path.size());
+  for (std::size_t i = 0; i < a.ref.path.size(); ++i) {
+    EXPECT_EQ(a.ref.path[i].end.x, b.ref.path[i].end.x) << i;
+    EXPECT_EQ(a.ref.path[i].end.y, b.ref.path[i].end.y) << i;
+    EXPECT_NEAR(a.fast.path[i].end.x, a.ref.path[i].end.x, 1e-9) << i;
+    EXPECT_NEAR(a.fast.path[i].end.y, a.ref.path[i].end.y, 1e-9) << i;
+  }
+}
+
+// covers: TOOL-CHANGE-1 TOOL-CHANGE-2 TOOL-NAME-1 TOOL-DATA-1
+TEST(ProgramWords, ToolChangeEdgeDefaultAndNames) {
+  const char* table = "$TC_TP2[3]=\"CUTTER 10\"\n$TC_DP1[3,1]=120 $TC_DP6[3,1]=5\n$TC_DP6[3,2]=4\n";
+  auto b = read(std::string(table) + "T=\"CUTTER 10\"\nD2\nT3\nT0\n");
+  EXPECT_EQ(b[3].state.tool, 3);
+  EXPECT_EQ(b[3].state.edge, 1);  // MD20270 = 1: a tool change activates D1
+  EXPECT_EQ(b[3].state.effective_radius(), dec("5"));
+  EXPECT_EQ(b[4].state.edge, 2);
+  EXPECT_EQ(b[5].state.edge, 1);
+  EXPECT_EQ(b[6].state.edge, 0);  // T0: no tool, no edge
+  ModalState m6;
+  m6.md_change_on_m6 = true;
+  auto c = read(std::string(table) + "T3\nM6\nT5 D2\n", m6);
+  EXPECT_EQ(c[3].state.tool, 0);  // MD22550 = 1: T only preselects
+  EXPECT_EQ(c[4].state.tool, 3);
+  EXPECT_EQ(c[4].state.edge, 1);
+  EXPECT_EQ(c[5].state.tool, 3);
+  EXPECT_EQ(c[5].state.edge, 2);
+  ModalState keep;
+  keep.md_edge_default = -1;
+  auto d = read(std::string(table) + "T3 D2\nT3\n", keep);
+  EXPECT_EQ(d[4].state.edge, 2);  // MD20270 = -1: the D number stays
+  EXPECT_THROW(read("T=\"NO SUCH\"\n"), InputError);
+  EXPECT_THROW(read("M6\n", m6), InputError);
+}
+
+// covers: TOOL-FILE-1
+TEST(ProgramWords, ToolArchiveFile) {
+  ToolTable t;
+  std::istringstream file(
+      "%_N_TO_INI\nCHANDATA(1)\n$TC_TP1[1]=1\n$TC_TP2[1]=\"FRAES_12\"\n$TC_TP8[1]=2\n$TC_DP1[1,1]=120\n"
+      "$TC_DP3[1,1]=80.5\n$TC_DP6[1,1]=6\n$TC_DP15[1,1]=-0.01\n$TC_MOP1[1,1]=0\n; end\nM17\n");
+  t.load(file, "TO_INI.INI");
+  ASSERT_NE(t.find(1, 1), nullptr);
+  EXPECT_EQ(t.find(1, 1)->radius, dec("6"));
+  EXPECT_EQ(t.find(1, 1)->wear, dec("-0.01"));
+  EXPECT_EQ(*t.number_of("FRAES_12"), 1);
+  std::istringstream bad("$TC_DP6[1,1]=6\nG1 X10\n");
+  try {
+    ToolTable u;
+    u.load(bad, "TO_INI.INI");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_NE(std::string(e.what()).find("TO_INI.INI"), std::string::npos);
+  }
+}
+
+// covers: TOOL-TURN-1
+TEST(ProgramWords, TurningToolWithEdgePositionIsNotSimulated) {
+  EXPECT_THROW(read("$TC_DP1[1,1]=500 $TC_DP2[1,1]=3 $TC_DP6[1,1]=0.8\nT1 D1\n"), InputError);
+  EXPECT_NO_THROW(read("$TC_DP1[1,1]=500 $TC_DP2[1,1]=9 $TC_DP6[1,1]=0.8\nT1 D1\n"));
+}
+
+// covers: NC-CYCLE-1 NC-CYCLE-2
+TEST(ProgramWords, CyclesAreNotSimulatedAndLeaveThePositionUnknown) {
+  auto b = read("G0 X10 Y10 Z5\nCYCLE81(5,0,1,-10,,0)\nG0 Z50\nX20 Y20\nSUPA G0 Z0\nG0 X1 Y1\n"
+                "MCALL CYCLE82(5,0,1,-10,,1)\nX30 Y30\nX40\nMCALL\n");
+  EXPECT_EQ(b[1].notice_clause, "NC-CYCLE-1");
+  EXPECT_FALSE(b[1].moves_in_plane());
+  EXPECT_NE(b[2].notice.find("the position of XY is not known since CYCLE81 in line 2"), std::string::npos)
+      << b[2].notice;
+  EXPECT_EQ(b[2].start, pt("10", "10", "5"));  // starts where the tool was before the cycle
+  EXPECT_TRUE(b[3].notice.empty());            // said once
+  EXPECT_FALSE(b[4].words.programs_any_axis());  // SUPA's Z is not a move
+  EXPECT_EQ(b[4].end, pt("20", "20", "50"));
+  EXPECT_NE(b[5].notice.find("Z is not known since SUPA"), std::string::npos) << b[5].notice;
+  EXPECT_EQ(b[6].notice_clause, "NC-CYCLE-2");
+  EXPECT_NE(b[8].notice.find("MCALL CYCLE82"), std::string::npos) << b[8].notice;
+  EXPECT_THROW(read("G41 T1 D1 X1 Y1\nCYCLE81(5,0,1,-10)\n"), InputError);
+  EXPECT_THROW(read("CYCLE81(5,0,1,-10)\nG1 G41 T1 D1 X5\n"), InputError);  // Y unknown under G41
+}
+
+// covers: NC-CYCLE-1 PATH-ACTION-1
+TEST(ProgramWords, BothEnginesPassTheReadersNotices) {
+  Both r = run_both("G0 X10 Y10 Z5\nCYCLE83(5,0,1,-10)\nG0 X20 Y20 Z50\n");
+  ASSERT_EQ(r.fast.notices.size(), 1u);
+  ASSERT_EQ(r.ref.notices.size(), 1u);
+  EXPECT_EQ(r.fast.notices[0].text, r.ref.notices[0].text);
+  EXPECT_EQ(r.fast.path.size(), 2u);
+}
+
+}  // namespace
+}  // namespace cutcom
