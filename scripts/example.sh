@@ -6,4 +6,9 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 ./build/cli/cutcom run examples/pocket.mpf
 ./build/cli/cutcom run examples/pocket.mpf --format svg -o examples/pocket.svg
-echo "picture: examples/pocket.svg"
+# A complete shop job: named tools from the control's tool table, work offsets, a mirrored frame,
+# SAR in and out, a drilling cycle reported as not simulated.
+job=examples/job
+./build/cli/cutcom run $job/PLATE.MPF --tools $job/TO_INI.INI --offsets $job/UFR.INI --md MD22550=1 \
+  --format svg -o $job/PLATE.svg
+echo "pictures: examples/pocket.svg, examples/job/PLATE.svg"

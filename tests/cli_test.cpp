@@ -217,3 +217,60 @@ TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
   EXPECT_NE(missing.out.find("cannot open program"), std::string::npos) << missing.out;
 }
 }  // namespace
+
+namespace {
+
+Result sh_err(const std::string& cmd) {
+  Result r{-1, {}};
+  FILE* p = popen((cmd + " 2>&1 >/dev/null").c_str(), "r");
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+// covers: CLI-1 TOOL-FILE-1 NC-OFFSET-2 NC-CYCLE-1 NC-FRAME-3 TRC-DESEL-3
+TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
+  const std::string job = CUTCOM_SOURCE_DIR "/examples/job/";
+  std::string args = " run " + job + "PLATE.MPF --tools " + job + "TO_INI.INI --offsets " + job +
+                     "UFR.INI --md MD22550=1 --format json";
+  for (const char* engine : {"fast", "ref"}) {
+    Result r = sh(kCli + args + " --engine " + engine);
+    ASSERT_EQ(r.status, 0) << engine;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["unit"], "mm");
+    EXPECT_GT(j["path"].size(), 40u);
+    bool cycle_noticed = false;
+    for (const auto& n : j["notices"]) cycle_noticed |= n["text"].get<std::string>().find("CYCLE81") != std::string::npos;
+    EXPECT_TRUE(cycle_noticed);
+    bool msg = false;
+    for (const auto& a : j["actions"]) msg |= a["function"] == "MSG(\"Drilling\")";
+    EXPECT_TRUE(msg);
+  }
+  // Without the tool table the named tool is unknown: exit 2, naming it.
+  Result e = sh_err(kCli + " run " + job + "PLATE.MPF --md MD22550=1");
+  EXPECT_EQ(e.status, 2);
+  EXPECT_NE(e.out.find("tool \"ROUGH_D16\" is not in the tool table"), std::string::npos) << e.out;
+}
+
+// covers: CLI-1 NC-ERR-3
+TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
+  std::string out = std::string(CUTCOM_BINARY_DIR) + "/rejected.txt";
+  std::remove(out.c_str());
+  Result r = sh(kCli + " run " + write_temp("rejected.mpf", "G1 X1\nGOTOF END\n") + " -o " + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(std::ifstream(out).good());
+  EXPECT_FALSE(std::ifstream(out + ".part").good());
+  Result d = sh_err(kCli + " run " + std::string(CUTCOM_BINARY_DIR));
+  EXPECT_EQ(d.status, 2);
+  EXPECT_NE(d.out.find("is a directory"), std::string::npos) << d.out;
+  Result t = sh_err(kCli + " run " + kExample + " --tools " + write_temp("bad-tools.ini", "$TC_DP6[1,1]=5\nG1 X1\n"));
+  EXPECT_EQ(t.status, 2);
+  EXPECT_NE(t.out.find("bad-tools.ini:2:1"), std::string::npos) << t.out;
+  Result g = sh_err(kCli + " run " + write_temp("words.mpf", "G1 X1 R_T=4\n"));
+  EXPECT_NE(g.out.find("line 1, column 7: 'R_T' is not a SINUMERIK word cutcom knows"), std::string::npos) << g.out;
+}
+
+}  // namespace

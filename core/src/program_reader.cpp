@@ -15,6 +15,18 @@ bool AxisFrame::identity() const {
   return true;
 }
 
+namespace {
+// NC-CYCLE-1: the drilling cycles drill at the position they are called at and return to their
+// retraction plane: only the infeed axis is left unknown.
+bool is_drilling_cycle(const std::string& name) {
+  static constexpr const char* kDrilling[] = {"CYCLE81", "CYCLE82", "CYCLE83", "CYCLE84", "CYCLE840",
+                                              "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89"};
+  for (const char* d : kDrilling)
+    if (name == d) return true;
+  return false;
+}
+}  // namespace
+
 ProgramReader::ProgramReader(std::istream& in, ModalState initial) : in_(in), state_(initial), effective_(initial) {}
 
 bool ProgramReader::next(Block& out) {
@@ -212,18 +224,16 @@ void ProgramReader::resolve(Block& b) {
   if (w.fad && inch_feed) w.fad = w.fad->scaled(254, 10);
   if (w.offn) s.offn = length(*w.offn, 0);
   if (w.disr) w.disr = length(*w.disr, 0);
-  if (w.discl.present || w.disrp.present) {
+  if (w.discl.present || w.disrp.present) {  // along the infeed axis: its frame and offset only
     PlaneAxes pa = plane_axes(s.plane);
     std::size_t h = static_cast<std::size_t>(pa.applicate);
-    if (!frame_.identity() && (frame_.factor[h] != Decimal::from_int(1) || !frame_.shift[h].is_zero() ||
-                               frame_.factor[static_cast<std::size_t>(pa.abscissa)] != Decimal::from_int(1) ||
-                               frame_.factor[static_cast<std::size_t>(pa.ordinate)] != Decimal::from_int(1)))
-      fail("DISCL/DISRP with a scaling, mirroring or infeed-shifting frame is not simulated");
+    if (frame_.factor[h] != Decimal::from_int(1))
+      fail("DISCL/DISRP with a frame that scales or mirrors the infeed axis is not simulated");
     for (AxisWord* aw : {&w.discl, &w.disrp})
       if (aw->present) {
         aw->value = length(aw->value, 0);
         if (aw->mode == ValueMode::kAbsolute)
-          aw->value = aw->value + coord(offsets_.translation(offset_index_), pa.applicate) -
+          aw->value = aw->value + frame_.shift[h] + coord(offsets_.translation(offset_index_), pa.applicate) -
                       (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), pa.applicate) : Decimal{});
       }
   }
@@ -258,6 +268,10 @@ void ProgramReader::resolve(Block& b) {
         eff.side = Side::kRight;
       else if (eff.side == Side::kRight)
         eff.side = Side::kLeft;
+      if (eff.sar_side == SarSide::kG141)  // SAR from the left / right: the same side of the contour
+        eff.sar_side = SarSide::kG142;
+      else if (eff.sar_side == SarSide::kG142)
+        eff.sar_side = SarSide::kG141;
     }
   }
   b.state = eff;
@@ -314,13 +328,21 @@ void ProgramReader::resolve(Block& b) {
          fmt::format("{} is not simulated: its motion is not in the path, and the position stays unknown until the "
                      "axes are programmed absolutely",
                      w.not_simulated));
-    if (w.not_simulated[0] != 'G' && w.not_simulated != "SUPA") unknown_ = {true, true, true};
+    if (is_drilling_cycle(w.not_simulated))  // it drills where it stands and ends at its retraction plane
+      unknown_[static_cast<std::size_t>(plane_axes(s.plane).applicate)] = true;
+    else if (w.not_simulated[0] != 'G' && w.not_simulated != "SUPA")
+      unknown_ = {true, true, true};
     unknown_after_ = w.not_simulated;
     unknown_line_ = w.line;
     // Its axis words were the cycle's, not a move.
     for (AxisWord& aw : w.axis) aw.present = false;
   } else if (modal_call_ && !w.modal_call && w.programs_any_axis()) {
-    unknown_ = {true, true, true};
+    if (is_drilling_cycle(modal_cycle_))
+      unknown_[static_cast<std::size_t>(plane_axes(s.plane).applicate)] = true;
+    else
+      unknown_ = {true, true, true};
+  }
+  if (w.modal_call) {  // one notice for the whole modal call
     unknown_after_ = "MCALL " + modal_cycle_;
     unknown_line_ = w.line;
   }
