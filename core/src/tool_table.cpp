@@ -66,19 +66,27 @@ bool archive_frame_line(const std::string& u) {
          u == "M02" || u == "M2";
 }
 
-}  // namespace
-
-void ToolTable::load(std::istream& in, const std::string& source_name) {
+// Calls f(line number, line, upper-case trimmed line) for each line of an archive with data.
+template <class F>
+void archive_lines(std::istream& in, const std::string& source_name, F f) {
   std::string line;
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
     std::string u = upper(trim(line));
-    if (archive_frame_line(u)) continue;
+    if (!archive_frame_line(u)) f(n, line, u);
+  }
+  if (in.bad()) throw std::runtime_error(fmt::format("{}: read error", source_name));
+}
+
+}  // namespace
+
+void ToolTable::load(std::istream& in, const std::string& source_name) {
+  archive_lines(in, source_name, [&](int n, const std::string& line, const std::string& u) {
     bool ours = u.rfind("$TC_DP", 0) == 0 || u.rfind("$TC_TP2[", 0) == 0 || u.rfind("$TC_TP2 ", 0) == 0;
     if (!ours) {
       // Other tool management data ($TC_TP8, $TC_MOP…, $TC_ADPT…, $A_…): no effect on the path.
-      if (u[0] == '$') continue;
+      if (u[0] == '$') return;
       throw InputError(n, 1, fmt::format("{}: not a line of a tool-offset archive ($TC_DPn[t,d]=…, "
                                          "$TC_TP2[t]=\"NAME\")",
                                          source_name));
@@ -91,8 +99,7 @@ void ToolTable::load(std::istream& in, const std::string& source_name) {
     }
     for (int k = 0; k < w.tool_data_count; ++k) assign(w.tool_data[static_cast<std::size_t>(k)]);
     for (int k = 0; k < w.tool_names_count; ++k) name(w.tool_names[static_cast<std::size_t>(k)]);
-  }
-  if (in.bad()) throw std::runtime_error(fmt::format("{}: read error", source_name));
+  });
 }
 
 void OffsetTable::set(int index, int axis, Decimal value) {
@@ -220,18 +227,13 @@ class OffsetLine {
 }  // namespace
 
 void OffsetTable::load(std::istream& in, const std::string& source_name) {
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    std::string u = upper(trim(line));
-    if (archive_frame_line(u)) continue;
+  archive_lines(in, source_name, [&](int n, const std::string& line, const std::string& u) {
     if (u.rfind("$P_UIFR", 0) != 0) {
-      if (u[0] == '$') continue;  // other frames of the archive ($P_CHBFR, …) do not change the path here
+      if (u[0] == '$') return;  // other frames of the archive ($P_CHBFR, …) do not change the path here
       throw InputError(n, 1, fmt::format("{}: not a settable-offset line ($P_UIFR[n]=CTRANS(…))", source_name));
     }
     OffsetLine(trim(line), n, source_name).run(*this);
-  }
+  });
 }
 
 }  // namespace cutcom
