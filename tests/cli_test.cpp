@@ -15,9 +15,10 @@ struct Result {
   std::string out;
 };
 
-Result sh(const std::string& cmd) {
+// Runs cmd; its standard output, or with `errors` its standard error, is the result's text.
+Result sh(const std::string& cmd, bool errors = false) {
   Result r{-1, {}};
-  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
+  FILE* p = popen((cmd + (errors ? " 2>&1 >/dev/null" : " 2>/dev/null")).c_str(), "r");
   std::array<char, 4096> buf{};
   std::size_t n;
   while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
@@ -220,16 +221,7 @@ TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
 
 namespace {
 
-Result sh_err(const std::string& cmd) {
-  Result r{-1, {}};
-  FILE* p = popen((cmd + " 2>&1 >/dev/null").c_str(), "r");
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+Result sh_err(const std::string& cmd) { return sh(cmd, true); }
 
 // covers: CLI-1 TOOL-FILE-1 NC-OFFSET-2 NC-CYCLE-1 NC-FRAME-3 TRC-DESEL-3
 TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {

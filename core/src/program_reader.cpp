@@ -58,23 +58,21 @@ void ProgramReader::note(Block& b, std::string_view clause, std::string text) {
   b.notice = std::move(text);
 }
 
-// NC-UNIT-1/2, NC-DIAM-1: a programmed length in mm on the 10^-9 grid.
-Decimal ProgramReader::length(const Decimal& v, int axis) const {
-  Decimal mm = (units_ == Units::kG70 || units_ == Units::kG700) ? v.scaled(254, 10) : v;
-  (void)axis;
-  return mm;
+// NC-UNIT-1/2: a programmed length in mm on the 10^-9 grid.
+Decimal ProgramReader::length(const Decimal& v) const {
+  return (units_ == Units::kG70 || units_ == Units::kG700) ? v.scaled(254, 10) : v;
 }
 
-Decimal ProgramReader::to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute) const {
+Decimal ProgramReader::to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
+                               bool distance) const {
   std::size_t a = static_cast<std::size_t>(axis);
-  Decimal v = length(aw.value, axis);
-  // NC-DIAM-1: in G18 turning, X is a diameter (DIAMON; DIAM90 only for absolute values).
-  if (axis == 0 && (diameter_ == DiameterMode::kDiamon || (diameter_ == DiameterMode::kDiam90 && absolute)))
+  Decimal v = length(aw.value);
+  // NC-DIAM-1: in G18 turning, X is a diameter (DIAMON; DIAM90 only for absolute values); a
+  // distance such as an incremental centre word is a radius value.
+  if (axis == 0 && !distance &&
+      (diameter_ == DiameterMode::kDiamon || (diameter_ == DiameterMode::kDiam90 && absolute)))
     v = v.scaled(1, 2);
-  Decimal scaled = frame_.factor[a] == Decimal::from_int(1) ? v
-                   : frame_.factor[a] == Decimal::from_int(-1)
-                       ? -v
-                       : v.scaled(static_cast<std::int64_t>(frame_.factor[a].units()), Decimal::kUnitsPerOne);
+  Decimal scaled = v.times(frame_.factor[a]);
   if (!absolute) return current + scaled;
   Decimal offset = coord(offsets_.translation(offset_index_), axis) -
                    (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), axis) : Decimal{});
@@ -94,12 +92,10 @@ void ProgramReader::apply_frame(const BlockWords& w) {
     if (aw.mode != ValueMode::kModal) fail("a frame value takes no AC() or IC()");
     switch (f) {
       case FrameWord::kTrans:
-        frame_.shift[i] = length(aw.value, a);
+        frame_.shift[i] = length(aw.value);
         break;
       case FrameWord::kAtrans: {  // in the current frame: the shift turns with mirror and scale
-        Decimal v = length(aw.value, a);
-        frame_.shift[i] = frame_.shift[i] + v.scaled(static_cast<std::int64_t>(frame_.factor[i].units()),
-                                                     Decimal::kUnitsPerOne);
+        frame_.shift[i] = frame_.shift[i] + length(aw.value).times(frame_.factor[i]);
         break;
       }
       case FrameWord::kScale:
@@ -107,7 +103,7 @@ void ProgramReader::apply_frame(const BlockWords& w) {
         if (aw.value.sign() == 0) fail(fmt::format("{}: a scale factor of 0", "XYZ"[a]));
         if (aw.value > Decimal::from_int(1000) || aw.value < Decimal::from_int(-1000))
           fail(fmt::format("{}: scale factors up to 1000 are supported", "XYZ"[a]));
-        frame_.factor[i] = frame_.factor[i].scaled(static_cast<std::int64_t>(aw.value.units()), Decimal::kUnitsPerOne);
+        frame_.factor[i] = frame_.factor[i].times(aw.value);
         break;
       }
       case FrameWord::kMirror:
@@ -222,8 +218,8 @@ void ProgramReader::resolve(Block& b) {
   }
   if (w.feed) s.feed = inch_feed ? w.feed->scaled(254, 10) : *w.feed;
   if (w.fad && inch_feed) w.fad = w.fad->scaled(254, 10);
-  if (w.offn) s.offn = length(*w.offn, 0);
-  if (w.disr) w.disr = length(*w.disr, 0);
+  if (w.offn) s.offn = length(*w.offn);
+  if (w.disr) w.disr = length(*w.disr);
   if (w.discl.present || w.disrp.present) {  // along the infeed axis: its frame and offset only
     PlaneAxes pa = plane_axes(s.plane);
     std::size_t h = static_cast<std::size_t>(pa.applicate);
@@ -231,7 +227,7 @@ void ProgramReader::resolve(Block& b) {
       fail("DISCL/DISRP with a frame that scales or mirrors the infeed axis is not simulated");
     for (AxisWord* aw : {&w.discl, &w.disrp})
       if (aw->present) {
-        aw->value = length(aw->value, 0);
+        aw->value = length(aw->value);
         if (aw->mode == ValueMode::kAbsolute)
           aw->value = aw->value + frame_.shift[h] + coord(offsets_.translation(offset_index_), pa.applicate) -
                       (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), pa.applicate) : Decimal{});
@@ -369,9 +365,7 @@ void ProgramReader::resolve(Block& b) {
     Decimal fo = frame_.factor[static_cast<std::size_t>(pa.ordinate)];
     if (fa != fo && fa != -fo) fail("a circle under a frame that scales the plane axes differently is an ellipse: not simulated");
     if (w.cr) {
-      Decimal f = fa.sign() < 0 ? -fa : fa;
-      Decimal cr = length(*w.cr, pa.abscissa);
-      w.cr = f == Decimal::from_int(1) ? cr : cr.scaled(static_cast<std::int64_t>(f.units()), Decimal::kUnitsPerOne);
+      w.cr = length(*w.cr).times(fa.sign() < 0 ? -fa : fa);
     }
     if (has_centre) {
       Point3 c = b.start;
@@ -380,14 +374,8 @@ void ProgramReader::resolve(Block& b) {
         Decimal& target = a == 0 ? c.x : a == 1 ? c.y : c.z;
         if (!cw.present) continue;
         // I=AC() is a position; incremental I is a distance (a radius value also under DIAMON).
-        if (cw.mode == ValueMode::kAbsolute) {
-          target = to_base(a, cw, target, true);
-        } else {
-          DiameterMode keep = diameter_;
-          diameter_ = DiameterMode::kDiamof;
-          target = to_base(a, cw, target, false);
-          diameter_ = keep;
-        }
+        bool abs = cw.mode == ValueMode::kAbsolute;
+        target = to_base(a, cw, target, abs, !abs);
       }
       if (coord(c, pa.abscissa) == coord(b.start, pa.abscissa) && coord(c, pa.ordinate) == coord(b.start, pa.ordinate))
         fail("the circle centre lies on the start point (radius 0)");

@@ -41,11 +41,6 @@ std::optional<std::int64_t> ToolTable::number_of(const std::string& name) const 
   return it->second;
 }
 
-bool ToolTable::has_tool(std::int64_t tool) const {
-  auto it = edges_.lower_bound({tool, 0});
-  return it != edges_.end() && it->first.first == tool;
-}
-
 namespace {
 
 std::string_view trim(std::string_view s) {
@@ -184,10 +179,10 @@ class OffsetLine {
       expect(']');
       expect('=');
       Decimal v = number();
-      if (component == "TR" || component == "FI") {
-        Decimal prev = component == "FI" ? coord(table.translation(index), a) : Decimal{};
-        if (component == "TR") prev = Decimal{};
-        table.set(index, a, prev + v);
+      if (component == "TR") {
+        table.set(index, a, v);
+      } else if (component == "FI") {  // the fine offset adds to the coarse one
+        table.set(index, a, coord(table.translation(index), a) + v);
       } else if (component == "RT") {
         if (!v.is_zero()) fail("a rotation in a settable offset is SINUMERIK NC that cutcom does not simulate");
       } else if (component == "SC") {

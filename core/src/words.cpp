@@ -91,7 +91,6 @@ class WordLexer {
     std::size_t j = i_;
     while (j < s_.size() && is_name_char(s_[j])) ++j;
     if (j > i_ + 1 && j < s_.size() && s_[j] == ':' && is_letter(s_[i_]) && (j + 1 >= s_.size() || s_[j + 1] != '=')) {
-      label_ = std::string(s_.substr(i_, j - i_));
       i_ = j + 1;
     }
   }
@@ -777,7 +776,6 @@ class WordLexer {
   int line_;
   BlockWords& out_;
   unsigned groups_ = 0;
-  std::string label_;
 };
 
 }  // namespace

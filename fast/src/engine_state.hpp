@@ -64,7 +64,7 @@ struct BlockCopy {
     if (b.words.cr) c.cr = b.words.cr->to_double();
     c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
     c.feed = b.state.feed;
-    c.aux = b.words.aux;
+    std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
     c.aux_count = b.words.aux_count;
     c.kont = b.state.approach == ApproachMode::kKont;
     c.g451 = b.state.corner == CornerMode::kG451;

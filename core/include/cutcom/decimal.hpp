@@ -47,6 +47,12 @@ class Decimal {
   // value * num / den on the 10^-9 grid, rounded to the nearest unit (half away from zero), for
   // the unit and diameter conversions of the reader (NC-UNIT-2); `exact` says whether it was.
   Decimal scaled(std::int64_t num, std::int64_t den, bool* exact = nullptr) const;
+  // value * factor on the grid (NC-UNIT-2); |factor| must stay below 9.2e9 (frames allow 1000).
+  Decimal times(Decimal factor) const {
+    return factor == from_int(1) ? *this
+           : factor == from_int(-1) ? -*this
+                                    : scaled(static_cast<std::int64_t>(factor.units()), kUnitsPerOne);
+  }
 
   // Checked arithmetic: throws std::overflow_error beyond kMaxUnits * 1000.
   friend Decimal operator+(Decimal a, Decimal b);

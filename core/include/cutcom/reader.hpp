@@ -44,7 +44,6 @@ class ToolTable {
   void name(const ToolNameAssignment& a);
   const EdgeData* find(std::int64_t tool, std::int64_t edge) const;
   std::optional<std::int64_t> number_of(const std::string& name) const;
-  bool has_tool(std::int64_t tool) const;
   // TOOL-FILE-1: a tool-offset archive (TO_INI.INI convention). Errors name the file and line.
   void load(std::istream& in, const std::string& source_name);
 
@@ -91,8 +90,8 @@ class ProgramReader {
   void resolve(Block& b);
   void change_tool(Block& b, ModalState& s);
   void apply_frame(const BlockWords& w);
-  Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute) const;
-  Decimal length(const Decimal& v, int axis) const;  // units and diameter of a programmed value
+  Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
+  Decimal length(const Decimal& v) const;  // the unit of a programmed length
   void note(Block& b, std::string_view clause, std::string text);
 
   std::istream& in_;
