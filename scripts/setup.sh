@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ make cmake ca-certificates
-  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
   librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev)
 missing=()

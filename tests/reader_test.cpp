@@ -131,7 +131,7 @@ TEST(Reader, BadInputNamesLineAndColumn) {
       {"G1 R_T=5\n", 1, 4, "'R_T' is not a SINUMERIK word cutcom knows"},
       {"G1 X=R1\n", 1, 6, "expressions and variables ('R1') are not supported yet"},
       {"N10 GOTOF END\n", 1, 5, "'GOTOF' is SINUMERIK NC that cutcom does not simulate (control flow)"},
-      {"G1 X10 RND=2\n", 1, 8, "'RND' is SINUMERIK NC that cutcom does not simulate (contour definitions"},
+      {"G1 X10 ASPLINE\n", 1, 8, "'ASPLINE' is SINUMERIK NC that cutcom does not simulate (splines)"},
       {"G1 X10 Y=5+2\n", 1, 11, "expressions are not supported yet"},
       {"MSG(\"open\n", 1, 1, "MSG: ')' expected"},
       {"$P_UIFR[1]=CTRANS(X,1)\n", 1, 1, "system variable '$P_UIFR' is SINUMERIK NC that cutcom does not simulate"},

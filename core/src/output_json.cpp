@@ -43,6 +43,11 @@ void JsonWriter::element(const PathElement& e) {
   o["line"] = e.origin.line;
   if (e.origin.kind == OriginKind::kTransitionCircle) o["next_line"] = e.origin.next_line;
   if (e.origin.sar != SarMove::kNone) o["sar"] = sar_move_name(e.origin.sar);
+  if (e.origin.insert.kind != InsertKind::kNone) {  // NC-CONTOUR-*: an element the reader inserted
+    o["inserted"] = insert_kind_name(e.origin.insert.kind);
+    if (e.origin.insert.kind == InsertKind::kTurn) o["turn"] = e.origin.insert.turn;
+    else o["corner_next_line"] = e.origin.insert.next_line;
+  }
   o["text"] = describe(e.origin);
   j["origin"] = o;
   if (!e.rapid) j["feed"] = e.feed.to_string();

@@ -54,8 +54,39 @@ std::string describe(const Origin& o) {
   return text;
 }
 
+// "N40", or for an inserted element "(rounding of N40/N50)", "(turn 2 of N60)" (NC-CONTOUR-*).
+std::string inserted_name(int line, const std::optional<std::int64_t>& block, const ContourInsert& insert) {
+  std::string b = block_name(line, block);
+  const ContourInsert& o = insert;
+  switch (o.kind) {
+    case InsertKind::kNone:
+      return b;
+    case InsertKind::kRounding:
+      return fmt::format("(rounding of {}/{})", b, block_name(o.next_line, o.next_block));
+    case InsertKind::kChamfer:
+      return fmt::format("(chamfer of {}/{})", b, block_name(o.next_line, o.next_block));
+    case InsertKind::kTurn:
+      return fmt::format("(turn {} of {})", o.turn, b);
+  }
+  return b;
+}
+
+std::string insert_kind_name(InsertKind k) {
+  switch (k) {
+    case InsertKind::kNone:
+      return "";
+    case InsertKind::kRounding:
+      return "rounding";
+    case InsertKind::kChamfer:
+      return "chamfer";
+    case InsertKind::kTurn:
+      return "turn";
+  }
+  return "?";
+}
+
 std::string describe_kind(const Origin& o) {
-  std::string b = block_name(o.line, o.block);
+  std::string b = inserted_name(o.line, o.block, o.insert);
   switch (o.kind) {
     case OriginKind::kProgrammed:
       return fmt::format("{} without compensation", b);
@@ -64,7 +95,7 @@ std::string describe_kind(const Origin& o) {
     case OriginKind::kOffset:
       return fmt::format("offset of {}", b);
     case OriginKind::kTransitionCircle:
-      return fmt::format("transition circle at corner {}/{}", b, block_name(o.next_line, o.next_block));
+      return fmt::format("transition circle at corner {}/{}", b, inserted_name(o.next_line, o.next_block, o.next_insert));
     case OriginKind::kRetraction:
       return fmt::format("retraction {}", b);
     case OriginKind::kInfeed:

@@ -4,16 +4,10 @@
 
 #include <stdexcept>
 
+#include "contour_geometry.hpp"
 #include "cutcom/reader.hpp"
 
 namespace cutcom {
-
-bool AxisFrame::identity() const {
-  for (int a = 0; a < 3; ++a)
-    if (factor[static_cast<std::size_t>(a)] != Decimal::from_int(1) || !shift[static_cast<std::size_t>(a)].is_zero())
-      return false;
-  return true;
-}
 
 namespace {
 // NC-CYCLE-1: the drilling cycles drill at the position they are called at and return to their
@@ -30,6 +24,22 @@ bool is_drilling_cycle(const std::string& name) {
 ProgramReader::ProgramReader(std::istream& in, ModalState initial) : in_(in), state_(initial), effective_(initial) {}
 
 bool ProgramReader::next(Block& out) {
+  for (;;) {
+    if (pop_ready(out)) return true;
+    if (!read_block(out)) {
+      if (!pending_) return false;
+      finish_pending(nullptr);
+      continue;
+    }
+    if (!pending_ && !needs_contour_stage(out)) {
+      out.index = index_++;
+      return true;
+    }
+    contour_stage(out);
+  }
+}
+
+bool ProgramReader::read_block(Block& out) {
   while (std::getline(in_, text_)) {
     ++line_;
     parse_block_words(text_, line_, out.words);
@@ -40,6 +50,7 @@ bool ProgramReader::next(Block& out) {
       throw InputError(line_, 1, fmt::format("block after the end of the program (M2/M30 in line {})", end_line_));
     out.notice.clear();
     out.notice_clause = {};
+    out.insert = {};
     resolve(out);
     if (w.program_end) end_line_ = line_;
     return true;
@@ -77,41 +88,6 @@ Decimal ProgramReader::to_base(int axis, const AxisWord& aw, const Decimal& curr
   Decimal offset = coord(offsets_.translation(offset_index_), axis) -
                    (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), axis) : Decimal{});
   return offset + frame_.shift[a] + scaled;
-}
-
-// NC-FRAME-1/2: TRANS/ATRANS/SCALE/ASCALE/MIRROR/AMIRROR; the block's axis words are the values.
-void ProgramReader::apply_frame(const BlockWords& w) {
-  auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
-  FrameWord f = *w.frame;
-  bool replaces = f == FrameWord::kTrans || f == FrameWord::kScale || f == FrameWord::kMirror;
-  if (replaces) frame_ = AxisFrame{};
-  for (int a = 0; a < 3; ++a) {
-    std::size_t i = static_cast<std::size_t>(a);
-    const AxisWord& aw = w.axis[i];
-    if (!aw.present) continue;
-    if (aw.mode != ValueMode::kModal) fail("a frame value takes no AC() or IC()");
-    switch (f) {
-      case FrameWord::kTrans:
-        frame_.shift[i] = length(aw.value);
-        break;
-      case FrameWord::kAtrans: {  // in the current frame: the shift turns with mirror and scale
-        frame_.shift[i] = frame_.shift[i] + length(aw.value).times(frame_.factor[i]);
-        break;
-      }
-      case FrameWord::kScale:
-      case FrameWord::kAscale: {
-        if (aw.value.sign() == 0) fail(fmt::format("{}: a scale factor of 0", "XYZ"[a]));
-        if (aw.value > Decimal::from_int(1000) || aw.value < Decimal::from_int(-1000))
-          fail(fmt::format("{}: scale factors up to 1000 are supported", "XYZ"[a]));
-        frame_.factor[i] = frame_.factor[i].times(aw.value);
-        break;
-      }
-      case FrameWord::kMirror:
-      case FrameWord::kAmirror:  // the value is not evaluated: the axis is mirrored
-        frame_.factor[i] = -frame_.factor[i];
-        break;
-    }
-  }
 }
 
 // TOOL-CHANGE-1/2, TOOL-NAME-1: which tool and edge are in force after the block's T, M6 and D.
@@ -184,15 +160,27 @@ void ProgramReader::resolve(Block& b) {
         note(b, "NC-OFFSET-1", "a second settable offset without --offsets data: taken as equal to the first");
       }
     }
+    bool changed = idx != offset_index_;
     offset_index_ = idx;
+    if (changed) refresh_programmed();
   }
   if (w.frame) {
     if (w.motion || w.side || !w.not_simulated.empty())
       fail("a frame instruction (TRANS, SCALE, MIRROR, …) must stand in a block of its own");
     if (state_.side != Side::kOff)
       fail("a frame change with tool radius compensation G41/G42 in force: deselect with G40 first (not simulated)");
-    apply_frame(w);
+    apply_frame(w, w.plane ? *w.plane : state_.plane);
+    refresh_programmed();
   }
+  if (w.pole) {
+    if (w.motion || w.frame) fail("a pole (G110/G111/G112) stands in a block without motion or frame words");
+    set_pole(w, w.plane ? *w.plane : state_.plane);
+  }
+  if (w.rpl && !w.frame) fail("RPL= belongs to ROT or AROT");
+  if (w.motion) circle_definition_.reset();
+  if (w.circle_definition) circle_definition_ = *w.circle_definition;
+  if (w.rndm) rounding_modal_ = length(*w.rndm);  // NC-CONTOUR-2
+  if (w.frcm) corner_feed_modal_ = *w.frcm;
   if (w.motion) s.motion = *w.motion;
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
@@ -276,7 +264,7 @@ void ProgramReader::resolve(Block& b) {
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
   b.start = position_;
   Point3 end = position_;
-  bool frame_values = w.frame.has_value();
+  bool frame_values = w.frame.has_value() || w.pole.has_value();  // the frame's or pole's values
   std::string unknown_used;
   for (int a = 0; a < 3; ++a) {
     std::size_t i = static_cast<std::size_t>(a);
@@ -350,8 +338,10 @@ void ProgramReader::resolve(Block& b) {
   b.centre.reset();
   // A SAR block is never a circle itself (SAR-BLOCK-1): its contour is generated, whatever G2/G3
   // is modally in force.
-  b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw) && !w.sar_contour &&
-             (w.programs_any_axis() || has_centre || w.cr.has_value());
+  bool polar = (w.ap.present || w.rp.has_value()) && !w.pole;
+  bool defined_circle = circle_definition_.has_value() || w.ar.has_value() || polar;
+  b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw || circle_definition_) && !w.sar_contour &&
+             (w.programs_any_axis() || has_centre || w.cr.has_value() || w.ar.has_value() || polar);
   if (has_centre || w.cr) {
     if (!b.is_arc()) fail("I, J, K or CR= programmed in a block without G2/G3");
     if (has_centre && w.cr) fail("an arc takes either I/J/K or CR=, not both");
@@ -360,7 +350,7 @@ void ProgramReader::resolve(Block& b) {
     PlaneAxes pa = plane_axes(s.plane);
     if (w.centre[static_cast<std::size_t>(pa.applicate)].present)
       fail(fmt::format("{} is not a centre coordinate in the active plane", "IJK"[pa.applicate]));
-    if (!has_centre && !w.cr) fail("G2/G3 needs the centre (I, J, K) or the radius (CR=)");
+    if (!has_centre && !w.cr && !defined_circle) fail("G2/G3 needs the centre (I, J, K) or the radius (CR=)");
     Decimal fa = frame_.factor[static_cast<std::size_t>(pa.abscissa)];
     Decimal fo = frame_.factor[static_cast<std::size_t>(pa.ordinate)];
     if (fa != fo && fa != -fo) fail("a circle under a frame that scales the plane axes differently is an ellipse: not simulated");
@@ -382,8 +372,26 @@ void ProgramReader::resolve(Block& b) {
       b.centre = c;
     }
   }
-  position_ = end;
-  b.index = index_++;
+  bool defined = false;
+  try {
+    defined = plane_definition(b, eff);
+  } catch (const contour::ContourError& e) {
+    fail(e.what);
+  } catch (const std::domain_error&) {
+    fail("the contour definition has no solution (a quantity that must not be 0 is 0)");
+  } catch (const std::overflow_error&) {
+    fail("position out of range");
+  }
+  if (!defined) update_programmed(w, s.absolute);
+  if (w.turn && *w.turn > 0 && (!b.is_arc() || !b.centre))
+    fail("TURN= needs a circle given by its centre (I, J, K, AR= with the centre, or a polar circle)");
+  if (b.moves_in_plane()) {  // CT continues from here
+    last_element_.start = b.start, last_element_.end = b.end, last_element_.centre = b.centre;
+    last_element_.circle = b.circle, last_element_.state.plane = s.plane, last_element_.state.motion = b.state.motion;
+    last_element_.words.cr = w.cr;
+    last_element_valid_ = true;
+  }
+  position_ = b.end;
 }
 
 }  // namespace cutcom

@@ -199,6 +199,7 @@ void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entr
   named.line = en.before_line, named.block = en.before_number;
   if (en.lead == Entry::Lead::kCircle) {
     named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
+    named.next_insert = m.insert;
     arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
     return open_element(owner, en.element, en.normal_start, en.radius, true);
   }

@@ -126,7 +126,7 @@ void Engine::State::approach_around(const BlockCopy& first, const Element& e, do
     run_dummies(a);
     Vec2 q = Element::offset(k.vertex, e.start_tangent(), s * r);
     Origin corner = origin(selection, OriginKind::kTransitionCircle);
-    corner.next_line = first.line, corner.next_block = first.number;
+    corner.next_line = first.line, corner.next_block = first.number, corner.next_insert = first.insert;
     open_element(first, e, q, radius, true);
     double h1 = h(first.start);                                                      // after the held-back blocks
     if (r > 0) arc(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
@@ -194,7 +194,7 @@ void Engine::State::retract_edge_around(BlockCopy& d, const BlockCopy& last_bloc
   skipped.clear();
   if (!on_circle) return retraction_line(d, x);
   Origin corner = origin(last_block, OriginKind::kTransitionCircle);
-  corner.next_line = d.line, corner.next_block = d.number;
+  corner.next_line = d.line, corner.next_block = d.number, corner.next_insert = d.insert;
   double hv = h(d.start);
   arc(d, xyz(x, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);
   retraction_line(d, rp);
@@ -322,7 +322,7 @@ void Engine::State::retract_around(BlockCopy& last, const Kont& k) {
     decide("TRC-KONT-3", last.line, "circle");
     Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
     Origin corner = origin(open, OriginKind::kTransitionCircle);
-    corner.next_line = last.line, corner.next_block = last.number;
+    corner.next_line = last.line, corner.next_block = last.number, corner.next_insert = last.insert;
     if (!close_open(from, last.line, last.number, true)) return;
     run_dummies(from);
     double hv = h(last.start);

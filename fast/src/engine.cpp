@@ -353,7 +353,7 @@ void Engine::State::transition_circle(const BlockCopy& b, const Element& next, d
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
   Origin corner = origin(open, OriginKind::kTransitionCircle);
   open_element(b, next, to, next_radius, true);
-  corner.next_line = open.line, corner.next_block = open.number;
+  corner.next_line = open.line, corner.next_block = open.number, corner.next_insert = open.insert;
   if (r > 0) {  // TRC-G450-2: no circle for a zero radius
     double hv = h(open.start);
     // Around the outside: clockwise on the left, counter-clockwise on the right.

@@ -44,6 +44,7 @@ struct BlockCopy {
   EdgeStrategy edge_strategy = EdgeStrategy::kG462;
   FeedType feed_type = FeedType::kG94;
   SarMove sar = SarMove::kNone;
+  ContourInsert insert;  // NC-CONTOUR-*: an element the reader inserted
   bool moves = false;  // motion in the plane
   bool exact = true;   // start and end are the programmed decimals (`delta` is valid)
   // SAR-POINTS-1/2: a SAR element is tangent to the contour at P4 by construction: after it on
@@ -72,6 +73,7 @@ struct BlockCopy {
     c.edge_strategy = b.state.edge_strategy;
     c.feed_type = b.state.feed_type;
     c.sar = b.sar.move;
+    c.insert = b.insert;
     c.moves = b.moves_in_plane();
     c.exact = b.sar.move == SarMove::kNone;
     return c;
@@ -255,7 +257,7 @@ struct Engine::State {
   void actions(BlockCopy& b, const PathPoint& at);
   Origin origin(const BlockCopy& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.line, o.block = b.number, o.sar = b.sar;
+    o.kind = kind, o.line = b.line, o.block = b.number, o.sar = b.sar, o.insert = b.insert;
     return o;
   }
   void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, OriginKind kind, bool rapid) {

@@ -214,7 +214,7 @@ void Reference::continue_entry(const Block& m, const Entry& en, int entry_piece,
   Decimal h = coord(m.start, comp_->axes.applicate);
   if (lead == Entry::Lead::kCircle) {
     Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
-    corner.next_line = m.words.line, corner.next_block = m.words.number;
+    corner.next_line = m.words.line, corner.next_block = m.words.number, corner.next_insert = m.insert;
     emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
              comp_->axes);
     return open(m, en.element, en.normal_start, en.radius, true);

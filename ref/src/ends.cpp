@@ -95,6 +95,7 @@ void Reference::approach_around(const Block& first_block, const ContourElement& 
     Point q = equidistant_point<Kernel>(k.vertex, first.start_normal(), comp_->side_radius);
     Origin corner = origin(*selection_, OriginKind::kTransitionCircle);
     corner.next_line = first_block.words.line, corner.next_block = first_block.words.number;
+    corner.next_insert = first_block.insert;
     Decimal h1 = coord(first_block.start, comp_->axes.applicate);  // after the held-back blocks
     if (comp_->radius.sign() != 0)                                 // TRC-G450-2
       emit_arc(first_block, at({a, h1}), at({q, h1}), at({k.vertex, h1}), comp_->side_radius, comp_->s < 0, corner,
@@ -284,7 +285,7 @@ void Reference::retract_edge_around(const Block& b, const Block& last_block, con
   run_skipped(x);
   if (!on_circle) return retraction_line(b, x);
   Origin corner = origin(last_block, OriginKind::kTransitionCircle);
-  corner.next_line = b.words.line, corner.next_block = b.words.number;
+  corner.next_line = b.words.line, corner.next_block = b.words.number, corner.next_insert = b.insert;
   Decimal h = coord(b.start, comp_->axes.applicate);
   emit_arc(b, at({x, h}), at({r_point, h}), at({k.vertex, h}), comp_->side_radius, comp_->s < 0, corner, comp_->axes);
   retraction_line(b, r_point);
@@ -310,7 +311,7 @@ void Reference::retract_around(const Block& b, const KontCorner& k) {
     decide("TRC-KONT-3", b.words.line, "circle");
     Point from = equidistant_point<Kernel>(k.vertex, open_->end_normal(), comp_->side_radius);
     Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
-    corner.next_line = b.words.line, corner.next_block = b.words.number;
+    corner.next_line = b.words.line, corner.next_block = b.words.number, corner.next_insert = b.insert;
     if (!close_open(from, b, true)) return;
     run_held_back(from);
     Decimal h = coord(b.start, comp_->axes.applicate);

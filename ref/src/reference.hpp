@@ -109,7 +109,7 @@ class Reference {
 
   Origin origin(const Block& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.words.line, o.block = b.words.number, o.sar = b.sar.move;
+    o.kind = kind, o.line = b.words.line, o.block = b.words.number, o.sar = b.sar.move, o.insert = b.insert;
     return o;
   }
 

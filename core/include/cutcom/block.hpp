@@ -40,7 +40,22 @@ enum class Units : std::uint8_t { kG71, kG70, kG710, kG700 };
 enum class DiameterMode : std::uint8_t { kDiamof, kDiamon, kDiam90 };
 
 // Programmable frames (NC-FRAME-*): the block's axis words are the frame's values, not a move.
-enum class FrameWord : std::uint8_t { kTrans, kAtrans, kScale, kAscale, kMirror, kAmirror };
+enum class FrameWord : std::uint8_t { kTrans, kAtrans, kScale, kAscale, kMirror, kAmirror, kRot, kArot };
+
+// Contour definitions (NC-CONTOUR-*): circles by an intermediate point (CIP) or tangential (CT),
+// poles of polar coordinates (NC-POLAR-1).
+enum class CircleDefinition : std::uint8_t { kCip, kCt };
+enum class PoleWord : std::uint8_t { kG110, kG111, kG112 };
+
+// An element the reader inserted (NC-CONTOUR-*): the rounding or chamfer at the corner of the
+// block and the next, or one of the full turns of a helix with TURN=.
+enum class InsertKind : std::uint8_t { kNone, kRounding, kChamfer, kTurn };
+struct ContourInsert {
+  InsertKind kind = InsertKind::kNone;
+  int next_line = 0;  // rounding / chamfer: the second block of the corner
+  std::optional<std::int64_t> next_block;
+  int turn = 0;  // kTurn: 1 … TURN
+};
 
 // How an axis value is to be read: modal G90/G91, or forced by AC()/IC().
 enum class ValueMode : std::uint8_t { kModal, kAbsolute, kIncremental };
@@ -124,6 +139,18 @@ struct BlockWords {
   Opt<int> settable_offset;  // G500 = 0, G54…G57 = 1…4, G505…G599 = 5…99 (NC-OFFSET-1)
   Opt<DiameterMode> diameter;
   Opt<FrameWord> frame;
+  Opt<Decimal> rpl;  // ROT/AROT RPL=: rotation in the working plane (NC-FRAME-4)
+
+  // Contour definitions (NC-CONTOUR-*) and polar coordinates (NC-POLAR-*), as written.
+  Opt<Decimal> rnd, rndm, chf, chr, frc, frcm;
+  Opt<Decimal> ang;
+  AxisWord ap;      // AP= / AP=IC()
+  Opt<Decimal> rp;  // RP=
+  Opt<PoleWord> pole;
+  Opt<Decimal> ar;  // opening angle AR=
+  Opt<std::int64_t> turn;
+  Opt<CircleDefinition> circle_definition;
+  std::array<AxisWord, 3> intermediate;  // I1= J1= K1= (CIP)
   // NC-CYCLE-1: a block that moves the tool along a path cutcom does not simulate (a standard
   // cycle, G74/G75, a G53/G153/SUPA move): what it is, as written ("CYCLE81", "SUPA").
   std::string not_simulated;
@@ -223,6 +250,7 @@ struct Block {
   bool circle = false;  // set by the reader: see is_arc()
 
   SarTag sar;  // a SAR sub-block (engines only; the reader leaves it empty)
+  ContourInsert insert;  // an element the reader inserted (NC-CONTOUR-*); kNone for programmed ones
   // A notice of the reader's on this block (a move not simulated, a position assumed): the
   // engines pass it to the sink when they take the block.
   std::string_view notice_clause;

@@ -32,7 +32,9 @@ struct Origin {
   std::optional<std::int64_t> block;  // its N number
   int next_line = 0;                  // transition circle: line of the second corner block
   std::optional<std::int64_t> next_block;
+  ContourInsert next_insert;     // transition circle: the second corner block is an inserted one
   SarMove sar = SarMove::kNone;  // the element belongs to this movement of a SAR block
+  ContourInsert insert;          // the block is a rounding, chamfer or turn the reader inserted
 };
 
 struct PathElement {
@@ -56,5 +58,6 @@ struct ActionEvent {
 std::string origin_kind_name(OriginKind k);  // "offset", "transition_circle", ...
 std::string describe(const Origin& o);       // "transition circle at corner N30/N40"
 std::string sar_move_name(SarMove m);        // "lead", "fast_infeed", ... ("" for kNone)
+std::string insert_kind_name(InsertKind k);  // "rounding", "chamfer", "turn" ("" for kNone)
 
 }  // namespace cutcom

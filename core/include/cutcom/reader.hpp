@@ -5,6 +5,8 @@
 
 #include <istream>
 #include <array>
+#include <deque>
+#include <vector>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -65,34 +67,52 @@ class OffsetTable {
   std::map<int, Point3> offsets_;
 };
 
-// A frame without rotation: base = offset + D·p + t per axis (NC-FRAME-2), D = ±scale.
-struct AxisFrame {
+// The programmable frame (NC-FRAME-2/4): base = offset + shift + R(rotation)·(factor ⊙ p), the
+// rotation about one axis (the applicate of the plane it turns), factor = ±scale per axis.
+struct ProgrammableFrame {
   std::array<Decimal, 3> factor{Decimal::from_int(1), Decimal::from_int(1), Decimal::from_int(1)};
   std::array<Decimal, 3> shift{};
+  Decimal rotation;       // degrees, counter-clockwise seen from the positive rotation axis
+  int rotation_axis = 2;  // 0 X, 1 Y, 2 Z
   bool identity() const;
+  bool rotated() const { return !rotation.is_zero(); }
 };
-
 // Reads blocks one by one and resolves modal state and positions (NC-MODAL-*, NC-POS-*).
 class ProgramReader {
  public:
   explicit ProgramReader(std::istream& in, ModalState initial = {});
   // Next block, or false at the end of the text or after M2/M30. Throws InputError.
+  // Contour definitions (NC-CONTOUR-*) may hold a block back until the next element is read.
   bool next(Block& out);
   // SAR-END-3: after a SAR retraction without end point the tool is where the retraction ended;
   // blocks read after it start there (the engines give the in-plane position exactly).
-  void set_position(const Point3& p) { position_ = p; }
+  void set_position(const Point3& p);
   ToolTable& tools() { return tools_; }
   OffsetTable& offsets() { return offsets_; }
   const std::string& source_name() const { return source_; }
   void set_source_name(std::string name) { source_ = std::move(name); }
 
  private:
+  bool read_block(Block& out);
   void resolve(Block& b);
   void change_tool(Block& b, ModalState& s);
-  void apply_frame(const BlockWords& w);
+  void apply_frame(const BlockWords& w, Plane plane);
   Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
   Decimal length(const Decimal& v) const;  // the unit of a programmed length
-  void note(Block& b, std::string_view clause, std::string text);
+  Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute) const;
+  Point3 offset_difference() const;  // the selected settable offset relative to the first
+  void refresh_programmed();         // programmed_ from position_ after a frame or offset change
+  void update_programmed(const BlockWords& w, bool absolute_mode);
+  void set_pole(const BlockWords& w, Plane plane);
+  bool plane_definition(Block& b, ModalState& eff);  // NC-POLAR-*, NC-CONTOUR-3..5, NC-FRAME-4
+  static void note(Block& b, std::string_view clause, std::string text);
+
+  // NC-CONTOUR-1/2/3/6: the stage that holds a block until the element after it is known.
+  bool needs_contour_stage(const Block& b) const;
+  void contour_stage(Block& b);
+  void finish_pending(Block* next);
+  void push_ready(Block&& b);
+  bool pop_ready(Block& out);
 
   std::istream& in_;
   std::string text_;
@@ -111,7 +131,20 @@ class ProgramReader {
   DiameterMode diameter_ = DiameterMode::kDiamof;
   int offset_index_ = 0;         // G500
   int first_offset_ = -1;        // the settable offset whose workpiece system the output uses
-  AxisFrame frame_;              // programmable frame
+  ProgrammableFrame frame_;      // programmable frame
+  Point3 programmed_;            // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
+  std::array<Decimal, 2> pole_{};  // NC-POLAR-1: in the frame's system, plane abscissa/ordinate
+  Decimal polar_angle_, polar_radius_;  // NC-POLAR-2: the last AP and RP
+  std::optional<CircleDefinition> circle_definition_;  // CIP/CT in force (motion group)
+  Decimal rounding_modal_;          // RNDM (0: off)
+  Decimal corner_feed_modal_;       // FRCM (0: off)
+  std::optional<Block> pending_;    // NC-CONTOUR-*: held until the next element
+  bool pending_ang_ = false;
+  bool ang_open_ = false;           // the block just resolved opens a two-block ANG definition
+  Block last_element_;              // geometry of the last block that moved in the plane (CT)
+  bool last_element_valid_ = false;        // pending_ is the first block of a two-block ANG definition
+  std::vector<Block> between_;      // up to three blocks without plane motion after pending_
+  std::deque<Block> ready_;         // resolved blocks waiting to be handed out
   std::array<bool, 3> unknown_{};  // NC-CYCLE-1: axes whose position a cycle left unknown
   std::string unknown_after_;      // what left them unknown
   int unknown_line_ = 0;
