@@ -57,7 +57,9 @@ Element element_of(const Block& b) {
 Interval sweep(const IPoint& c, const IPoint& from, const IPoint& to, int sense) {
   IPoint u = from - c, v = to - c;
   // The angle from u to v counter-clockwise, in (-π, π], then turned into [0, 2π) for the sense.
-  Interval angle = atan2(cross(u, v), dot(u, v));
+  // On the branch cut (u, v parallel) it is exactly 0 or π (NC-GRID-1: an undecided sign is 0).
+  Interval y = cross(u, v), x = dot(u, v);
+  Interval angle = y.sign() != 0 ? atan2(y, x) : x.sign() > 0 ? Interval() : Interval::pi();
   if (sense < 0) angle = -angle;
   Interval two_pi = Interval::integer(2) * Interval::pi();
   if (angle.sign() < 0) angle = angle + two_pi;

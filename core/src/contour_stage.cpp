@@ -66,6 +66,8 @@ void ProgramReader::contour_stage(Block& b) {
   if (has_corner_word(w) && b.is_sar_block())
     throw InputError(w.line, 1, "RND/CHF/CHR in a SAR block is SINUMERIK NC that cutcom does not simulate");
   if (corner || ang_open_) {
+    pending_radius_ = w.rnd ? length(*w.rnd) : rounding_modal_;  // modal values as of this block
+    pending_feed_ = corner_feed_modal_;
     pending_ = std::move(b);
     pending_ang_ = ang_open_;
     ang_open_ = false;
@@ -126,9 +128,8 @@ void ProgramReader::finish_pending(Block* next) {
   // NC-CONTOUR-1/2: the rounding or chamfer at the end of p.
   const BlockWords& w = p.words;
   std::optional<Block> insert;
-  bool corner = w.rnd || w.chf || w.chr || (rounding_modal_.sign() > 0 && p.moves_in_plane());
-  Decimal radius = w.rnd ? length(*w.rnd) : rounding_modal_;
-  if (corner && !(w.rnd || w.chf || w.chr) && !w.rndm && radius.sign() <= 0) corner = false;
+  Decimal radius = pending_radius_;
+  bool corner = w.rnd || w.chf || w.chr || (radius.sign() > 0 && p.moves_in_plane());
   if (corner && (w.rnd ? w.rnd->is_zero() : w.chf ? w.chf->is_zero() : w.chr ? w.chr->is_zero() : radius.is_zero()))
     corner = false;
   std::string why_not;
@@ -207,7 +208,7 @@ void ProgramReader::finish_pending(Block* next) {
       bool rounding = kind == contour::CornerKind::kRounding;
       bool rapid = p.state.motion == Motion::kRapid;
       if (w.frc) ins.state.feed = *w.frc;  // FRC / FRCM: the feed of the inserted element
-      else if (corner_feed_modal_.sign() > 0) ins.state.feed = corner_feed_modal_;
+      else if (pending_feed_.sign() > 0) ins.state.feed = pending_feed_;
       ins.start = p.end;
       ins.end = p.end;
       set_plane(ins.end, ax, v[2], v[3]);

@@ -116,8 +116,9 @@ Interval sqrt(const Interval& a) {
 }
 Interval atan2(const Interval& y, const Interval& x) {
   Interval r;
-  if (mpfi_has_zero(y.value) && mpfr_sgn(&x.value->left) <= 0) {  // near the branch cut
+  if (mpfi_has_zero(y.value) && mpfr_sgn(&x.value->left) <= 0) {  // on the branch cut: callers decide
     if (!last_precision()) throw Undecided{};
+    throw std::domain_error("NC-GRID-1: an angle on the branch cut");
   }
   mpfi_atan2(r.value, y.value, x.value);
   return r;

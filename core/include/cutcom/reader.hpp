@@ -140,6 +140,8 @@ class ProgramReader {
   Decimal corner_feed_modal_;       // FRCM (0: off)
   std::optional<Block> pending_;    // NC-CONTOUR-*: held until the next element
   bool pending_ang_ = false;
+  Decimal pending_radius_;          // RND/RNDM radius and FRCM feed in force when pending_ was read
+  Decimal pending_feed_;
   bool ang_open_ = false;           // the block just resolved opens a two-block ANG definition
   Block last_element_;              // geometry of the last block that moved in the plane (CT)
   bool last_element_valid_ = false;        // pending_ is the first block of a two-block ANG definition
