@@ -1,5 +1,7 @@
 #include "contour_case.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace cutcom::props {
@@ -48,6 +50,7 @@ std::string to_program(const ContourCase& c) {
   p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}{} {}\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
                    fixed(c.start_y, c.decimals), h, fixed(sar.approach ? sar.start_h : 0, c.decimals), tool);
   n += 10;
+  if (c.rotation_mdeg != 0) p += fmt::format("N{} ROT RPL={}\n", n - 5, fixed(c.rotation_mdeg, 3));  // NC-FRAME-4
   if (v == 2 && !sar.approach) {  // TRC-SEL-4: G41/G42 first in a block without a plane axis
     p += fmt::format("N{} G1 {} {}-0.5 F500\n", n, c.right ? "G42" : "G41", h);
     n += 10;
@@ -109,9 +112,19 @@ std::string to_program(const ContourCase& c) {
       std::string words = v == 7 && last ? side_word(Step{s.dx, s.dy, s.g451}, right) + " G40" : side_word(s, right);
       p += fmt::format("N{} {} {}{} {}{} {}{} {}{} {}\n", n, s.ccw ? "G3" : "G2", a, fixed(x, c.decimals), b,
                        fixed(y, c.decimals), ci, fixed(s.ci, c.decimals), cj, fixed(s.cj, c.decimals), words);
+    } else if (s.polar) {  // NC-POLAR-2: the same end point in polar coordinates, 9 decimals
+      double xa = static_cast<double>(x), yb = static_cast<double>(y);
+      double scale = std::pow(10.0, -c.decimals);
+      p += fmt::format("N{} G1 AP={:.9f} RP={:.9f} {}\n", n, std::atan2(yb, xa) * 180.0 / M_PI,
+                       std::hypot(xa, yb) * scale, side_word(s, right));
     } else {
       p += fmt::format("N{} G1 {}{} {}{} {}{}\n", n, a, fixed(x, c.decimals), b, fixed(y, c.decimals),
                        side_word(s, right), v == 9 && i == 0 ? " DISC=1" : "");  // TRC-DISC-1
+    }
+    if (s.corner != 0) {  // NC-CONTOUR-1: appended to the block just written
+      p.pop_back();
+      p += fmt::format(" {}={}\n", s.corner == 1 ? "RND" : s.corner == 2 ? "CHR" : "CHF",
+                       fixed(s.corner_value, c.decimals));
     }
   }
   if (v == 7 && (c.steps.empty() || !c.steps.back().arc || c.steps.back().cr != 0)) {

@@ -18,6 +18,10 @@ struct Step {
   std::int64_t ci = 0, cj = 0;  // centre relative to the block's start (I, J in the plane)
   std::int64_t cr = 0;          // != 0: the circle is written with CR= instead
   bool flip = false;            // the block changes G41 <-> G42 (TRC-SIDE-1)
+  // NC-CONTOUR-1: 1 RND, 2 CHR, 3 CHF at the block's end corner, of `corner_value` (case units).
+  int corner = 0;
+  std::int64_t corner_value = 0;
+  bool polar = false;  // NC-POLAR-2: a straight block written as AP= RP= about the workpiece zero
 };
 
 // A smooth approach in the selection block and/or a smooth retraction in the deselection block
@@ -59,6 +63,7 @@ struct ContourCase {
   // A variant of the program for the rules of selection, deselection and the blocks between
   // (the campaign draws them: the properties keep well-formed programs). See kVariantNames.
   int variant = 0;
+  std::int64_t rotation_mdeg = 0;  // NC-FRAME-4: ROT RPL= (millidegrees) after the first block
 };
 
 // Names of ContourCase::variant: 0 "none", then one rule each (TRC-SEL-3 ... TRC-DUMMY-3,

@@ -473,4 +473,27 @@ rc::Gen<ContourCase> any_contour() {
                                               {2, bottleneck()}});
 }
 
+rc::Gen<ContourCase> contour_definitions() {
+  return rc::gen::exec([] {
+    ContourCase c = *rc::gen::weightedOneOf<ContourCase>(
+        {{3, random_walk()}, {3, grid_walk()}, {3, with_circles()}, {1, tiny_blocks()}, {1, near_tangent()}});
+    c.style = "definitions/" + c.style;
+    auto length = [](const Step& s) { return std::hypot(static_cast<double>(s.dx), static_cast<double>(s.dy)); };
+    for (std::size_t i = 0; i < c.steps.size(); ++i) {
+      Step& s = c.steps[i];
+      if (!s.arc && *rc::gen::inRange(0, 5) == 0) s.polar = true;
+      if (i + 1 == c.steps.size() || *rc::gen::inRange(0, 3) != 0) continue;
+      // Small against both elements, so that most fit (a rounding that does not fit is an error).
+      double room = 0.3 * std::min(length(s), length(c.steps[i + 1]));
+      if (s.arc || c.steps[i + 1].arc) room *= 0.3;
+      if (room < 2) continue;
+      s.corner = *rc::gen::inRange(1, 4);
+      s.corner_value = *rc::gen::inRange<std::int64_t>(1, static_cast<std::int64_t>(room));
+    }
+    if (*rc::gen::inRange(0, 3) == 0)
+      c.rotation_mdeg = *rc::gen::element<std::int64_t>(90000, 30000, 45000, 12345, -60000, 180000, 7000, -135500);
+    return c;
+  });
+}
+
 }  // namespace cutcom::props

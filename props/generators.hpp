@@ -9,6 +9,9 @@
 namespace cutcom::props {
 
 rc::Gen<ContourCase> any_contour();    // all styles below, weighted
+// Contours of the other styles with roundings and chamfers (RND CHR CHF) at their corners, straight
+// blocks in polar coordinates and a rotated frame (NC-CONTOUR-1, NC-POLAR-2, NC-FRAME-4).
+rc::Gen<ContourCase> contour_definitions();
 rc::Gen<ContourCase> random_walk();    // free directions and lengths
 rc::Gen<ContourCase> grid_walk();      // multiples of a grid step: exact 45/90 deg corners, ties
 rc::Gen<ContourCase> near_tangent();   // successive directions differ by a few micrometres

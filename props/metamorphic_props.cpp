@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <fmt/format.h>
+
 #include "generators.hpp"
 #include "run_case.hpp"
 
@@ -91,6 +93,75 @@ void check_image(const ContourCase& c, const PlaneMap& f) {
     return;
   }
   if (!why.empty()) RC_FAIL(why + "\nimage program:\n" + to_program(image));
+}
+
+// NC-FRAME-*: the program under a programmable frame against the same program under "TRANS"
+// (no frame, same line numbers): the first is the exact image of the second.
+void check_frame(const ContourCase& c, const std::string& frame, const PlaneMap& f) {
+  RC_TAG(c.style);
+  MachineData md = machine_data_of(c);
+  std::string plain = "TRANS\n" + to_program(c), framed = frame + "\n" + to_program(c);
+  std::string why;
+  try {
+    why = ref::exact_image_mismatch(plain, framed, md, workpiece_map(f, c.plane, c.decimals), 5);
+  } catch (const UnsupportedError&) {
+    RC_TAG("not supported");
+    return;
+  }
+  if (!why.empty()) RC_FAIL(why + "\nframed program:\n" + framed);
+}
+
+const char* abscissa(int plane) { return plane == 17 ? "X" : plane == 18 ? "Z" : "Y"; }
+const char* ordinate(int plane) { return plane == 17 ? "Y" : plane == 18 ? "X" : "Z"; }
+
+// covers: PROP-META-7 NC-FRAME-1 NC-FRAME-2
+RC_GTEST_PROP(Metamorphic, TransFrameEqualsTranslatedCoordinates, ()) {
+  ContourCase c = *any_contour();
+  PlaneMap f;
+  f.ta = *rc::gen::inRange<std::int64_t>(-50000, 50001);
+  f.tb = *rc::gen::inRange<std::int64_t>(-50000, 50001);
+  check_frame(c, fmt::format("TRANS {}{} {}{}", abscissa(c.plane), fixed(f.ta, c.decimals), ordinate(c.plane),
+                             fixed(f.tb, c.decimals)),
+              f);
+}
+
+// covers: PROP-META-7 NC-FRAME-3
+RC_GTEST_PROP(Metamorphic, MirrorFrameEqualsTheMirroredProgram, ()) {
+  ContourCase c = *any_contour();
+  PlaneMap f;
+  f.m00 = -1;
+  check_frame(c, fmt::format("MIRROR {}0", abscissa(c.plane)), f);
+}
+
+// covers: PROP-META-7 NC-FRAME-4
+RC_GTEST_PROP(Metamorphic, QuarterTurnFrameEqualsTheTurnedProgram, ()) {
+  ContourCase c = *any_contour();
+  int sign = *rc::gen::arbitrary<bool>() ? -1 : 1;
+  PlaneMap f;
+  f.m00 = 0, f.m01 = -sign, f.m10 = sign, f.m11 = 0;
+  check_frame(c, fmt::format("G{} ROT RPL={}", c.plane, sign * 90), f);
+}
+
+// covers: PROP-META-7 NC-UNIT-1
+RC_GTEST_PROP(Metamorphic, InchProgramEqualsTheProgramInMm, ()) {
+  ContourCase c = *any_contour();
+  c.sar = {}, c.variant = 0;
+  for (Step& s : c.steps) s.dummies = 0;  // their Z words would be inches too
+  PlaneMap f;
+  f.m00 = 254, f.m11 = 254, f.den = 10;  // lengths times 25.4, one more decimal
+  ContourCase metric = apply(c, f);
+  for (std::size_t i = 0; i < c.steps.size(); ++i) metric.steps[i].cr = c.steps[i].cr * 254;
+  metric.radius_um = c.radius_um * 10;  // tool data are metric in both
+  RC_TAG(c.style);
+  std::string why;
+  try {
+    why = ref::exact_image_mismatch("G71\n" + to_program(metric), "G70\n" + to_program(c), machine_data_of(c),
+                                    ref::AffineMap{}, 1);
+  } catch (const UnsupportedError&) {
+    RC_TAG("not supported");
+    return;
+  }
+  if (!why.empty()) RC_FAIL(why + "\ninch program:\nG70\n" + to_program(c));
 }
 
 // covers: PROP-META-1

@@ -145,7 +145,7 @@ void Engine::State::cut(const BlockCopy& m, const Entry& en, int record, const P
 }
 
 bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number) {
-  int last_run = -1;  // the last block run again from held records
+  int last_run = -1;  // the last block (BlockCopy::block) run again from held records
   if (record >= 0) {
     HeldRecord& rec = held[static_cast<std::size_t>(record)];
     const HeldRecord crossed = rec;
@@ -157,16 +157,16 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
     // itself would read as a full circle.
     double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
     if (along <= 64 * std::numeric_limits<double>::epsilon() * scale) held.erase(held.begin() + record);
-    bool rest = open.line == crossed.owner_line;  // its equidistant was still open
-    for (const HeldRecord& k : held_scratch) rest = rest || k.owner_line == crossed.owner_line;
+    bool rest = open.block == crossed.owner_block;  // its equidistant was still open
+    for (const HeldRecord& k : held_scratch) rest = rest || k.owner_block == crossed.owner_block;
     if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
     for (std::size_t i = 0; i < held_scratch.size(); ++i) {
       const HeldRecord& k = held_scratch[i];
-      if (k.owner_line == crossed.owner_line) continue;
-      if (k.owner_line != last_run) {
+      if (k.owner_block == crossed.owner_block) continue;
+      if (k.owner_block != last_run) {
         if (last_run >= 0) infeed_of(held_scratch[i - 1], x);
         decide("TRC-LOOK-3", k.owner_line, "skipped");
-        last_run = k.owner_line;
+        last_run = k.owner_block;
       }
       if (!k.is_element) {
         HeldRecord a = k;
@@ -175,7 +175,7 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
       }
     }
     if (last_run >= 0) infeed_of(held_scratch.back(), x);
-    if (open.line != crossed.owner_line && open.line != last_run) skip_at(open, x);
+    if (open.block != crossed.owner_block && open.block != last_run) skip_at(open, x);
   } else {
     looking = false;
     if (!close_open(x, line_no, number)) return false;

@@ -24,6 +24,7 @@ namespace cutcom::fast {
 // What fast keeps of a block: converted once, copied into fixed slots (no allocation).
 struct BlockCopy {
   int line = 0;
+  int block = 0;  // the block's index in the program: its identity (inserted elements share a line)
   std::optional<std::int64_t> number;
   PathPoint start, end;  // programmed, workpiece coordinates
   bool rapid = false;
@@ -54,6 +55,7 @@ struct BlockCopy {
   static BlockCopy of(const Block& b) {
     BlockCopy c;
     c.line = b.words.line;
+    c.block = b.index;
     c.number = b.words.number;
     c.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
     c.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
@@ -146,6 +148,8 @@ struct Engine::State {
     double radius = 0;  // arcs: radius in the plane
     ActionEvent action;
     int owner_line = 0;  // the block it belongs to, to run it again at a cut
+    int owner_block = -1;  // that block's identity (BlockCopy::block)
+    ContourInsert owner_insert;
     std::optional<std::int64_t> owner_number;
     PathPoint owner_start, owner_end;
     bool owner_rapid = false;
@@ -214,6 +218,7 @@ struct Engine::State {
   HeldRecord record_of(const BlockCopy& owner) const {
     HeldRecord k;
     k.seq = owner.seq, k.owner_line = owner.line, k.owner_number = owner.number, k.owner_start = owner.start;
+    k.owner_block = owner.block, k.owner_insert = owner.insert;
     k.owner_end = owner.end, k.owner_rapid = owner.rapid, k.owner_feed = owner.feed;
     k.owner_feed_type = owner.feed_type, k.owner_sar = owner.sar;
     return k;
@@ -464,6 +469,7 @@ struct Engine::State {
   void infeed_of(const HeldRecord& k, const PathPoint& from, const PathPoint& to) {
     BlockCopy owner;
     owner.line = k.owner_line, owner.number = k.owner_number, owner.rapid = k.owner_rapid, owner.feed = k.owner_feed;
+    owner.block = k.owner_block, owner.insert = k.owner_insert;
     owner.feed_type = k.owner_feed_type, owner.sar = k.owner_sar;
     owner.start = k.owner_start, owner.end = k.owner_end;  // a second cut runs it again from this record
     owner.actions_done = true, owner.seq = k.seq;
