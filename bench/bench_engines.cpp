@@ -166,6 +166,23 @@ void BM_FastLongProgram(benchmark::State& state, bool cdon) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
   state.counters["allocations"] = static_cast<double>(allocations);
 }
+// The reader alone (words, modal state, exact positions): blocks per second on the same text.
+// Programs without contour definitions pass the contour stage by (NC-CONTOUR-*).
+void BM_ReaderLongProgram(benchmark::State& state) {
+  MachineData md;
+  for (auto _ : state) {
+    ZigZagProgram text(state.range(0));
+    std::istream in(&text);
+    ProgramReader reader(in, md.initial_state());
+    Block b;
+    long n = 0;
+    while (reader.next(b)) ++n;
+    benchmark::DoNotOptimize(n);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_ReaderLongProgram)->Arg(100000)->Unit(benchmark::kMillisecond);
+
 BENCHMARK_CAPTURE(BM_FastLongProgram, cdof, false)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_FastLongProgram, cdon, true)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 

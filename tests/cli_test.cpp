@@ -223,7 +223,7 @@ namespace {
 
 Result sh_err(const std::string& cmd) { return sh(cmd, true); }
 
-// covers: CLI-1 TOOL-FILE-1 NC-OFFSET-2 NC-CYCLE-1 NC-FRAME-3 TRC-DESEL-3
+// covers: CLI-1 TOOL-FILE-1 NC-OFFSET-2 NC-CYCLE-1 NC-FRAME-3 TRC-DESEL-3 NC-CONTOUR-1 NC-CONTOUR-2
 TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
   const std::string job = CUTCOM_SOURCE_DIR "/examples/job/";
   std::string args = " run " + job + "PLATE.MPF --tools " + job + "TO_INI.INI --offsets " + job +
@@ -240,6 +240,14 @@ TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
     bool msg = false;
     for (const auto& a : j["actions"]) msg |= a["function"] == "MSG(\"Drilling\")";
     EXPECT_TRUE(msg);
+    int roundings = 0, chamfers = 0;  // RND and RNDM at 9 corners, CHR at 3, each offset once
+    for (const auto& el : j["path"]) {
+      if (!el["origin"].contains("inserted")) continue;
+      roundings += el["origin"]["inserted"] == "rounding";
+      chamfers += el["origin"]["inserted"] == "chamfer";
+    }
+    EXPECT_EQ(roundings, 9) << engine;
+    EXPECT_EQ(chamfers, 3) << engine;
   }
   // Without the tool table the named tool is unknown: exit 2, naming it.
   Result e = sh_err(kCli + " run " + job + "PLATE.MPF --md MD22550=1");

@@ -406,6 +406,7 @@ void Reference::transition_circle(const Block& next_block, const ContourElement&
   Decimal h = coord(next_block.start, comp_->axes.applicate);
   Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
   corner.next_line = next_block.words.line, corner.next_block = next_block.words.number;
+  corner.next_insert = next_block.insert;
   open(next_block, next, to, next_radius, true);
   if (comp_->radius.sign() != 0) {  // TRC-G450-2: no circle for a zero radius
     // Around the outside of the corner: clockwise on the left, counter-clockwise on the right.
