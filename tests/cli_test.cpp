@@ -242,7 +242,7 @@ TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
     EXPECT_TRUE(msg);
     int roundings = 0, chamfers = 0;  // RND and RNDM at 9 corners, CHR at 3, each offset once
     for (const auto& el : j["path"]) {
-      if (!el["origin"].contains("inserted")) continue;
+      if (!el["origin"].contains("inserted") || el["origin"]["kind"] != "offset") continue;
       roundings += el["origin"]["inserted"] == "rounding";
       chamfers += el["origin"]["inserted"] == "chamfer";
     }
