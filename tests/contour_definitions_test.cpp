@@ -12,18 +12,14 @@
 #include "cutcom/reader.hpp"
 #include "cutcom/ref/engine.hpp"
 #include "cutcom/sink.hpp"
+#include "program_runs.hpp"
 
 namespace cutcom {
 namespace {
 
-std::vector<Block> read(const std::string& text) {
-  std::istringstream in(text);
-  ProgramReader r(in);
-  std::vector<Block> out;
-  Block b;
-  while (r.next(b)) out.push_back(b);
-  return out;
-}
+std::vector<Block> read(const std::string& text) { return testing::read_blocks(text); }
+using testing::Both;
+using testing::run_both;
 
 Decimal dec(const char* s) { return *Decimal::parse(s).value; }
 
@@ -39,25 +35,6 @@ std::string error_of(const std::string& text) {
     return e.what();
   }
   return "accepted";
-}
-
-struct Both {
-  RunResult fast, ref;
-};
-Both run_both(const std::string& text) {
-  Both r;
-  MachineData md;
-  for (int e = 0; e < 2; ++e) {
-    std::istringstream in(text);
-    ProgramReader reader(in, md.initial_state());
-    CollectingSink sink;
-    if (e == 0)
-      fast::run(reader, md, sink);
-    else
-      ref::run(reader, md, sink);
-    (e == 0 ? r.fast : r.ref) = sink.result;
-  }
-  return r;
 }
 
 void expect_same_path(const RunResult& a, const RunResult& b, double tolerance = 1e-9) {

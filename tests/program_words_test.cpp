@@ -10,18 +10,13 @@
 #include "cutcom/reader.hpp"
 #include "cutcom/ref/engine.hpp"
 #include "cutcom/sink.hpp"
+#include "program_runs.hpp"
 
 namespace cutcom {
 namespace {
 
 std::vector<Block> read(const std::string& text, ModalState initial = {}, const OffsetTable* offsets = nullptr) {
-  std::istringstream in(text);
-  ProgramReader r(in, initial);
-  if (offsets) r.offsets() = *offsets;
-  std::vector<Block> out;
-  Block b;
-  while (r.next(b)) out.push_back(b);
-  return out;
+  return testing::read_blocks(text, initial, offsets);
 }
 
 Decimal dec(const char* s) { return *Decimal::parse(s).value; }
@@ -33,23 +28,8 @@ std::vector<std::string> actions(const Block& b) {
   return a;
 }
 
-struct Both {
-  RunResult fast, ref;
-};
-Both run_both(const std::string& text, const MachineData& md = {}) {
-  Both r;
-  for (int e = 0; e < 2; ++e) {
-    std::istringstream in(text);
-    ProgramReader reader(in, md.initial_state());
-    CollectingSink sink;
-    if (e == 0)
-      fast::run(reader, md, sink);
-    else
-      ref::run(reader, md, sink);
-    (e == 0 ? r.fast : r.ref) = sink.result;
-  }
-  return r;
-}
+using testing::Both;
+using testing::run_both;
 
 // covers: NC-WORD-1 NC-WORD-2
 TEST(ProgramWords, HeadersSkipBlocksMainBlocksAndLabels) {

@@ -8,17 +8,12 @@
 #include <sstream>
 #include <string>
 
+#include "program_runs.hpp"
+
 namespace cutcom {
 namespace {
 
-std::vector<Block> read(const std::string& text) {
-  std::istringstream in(text);
-  ProgramReader r(in);
-  std::vector<Block> out;
-  Block b;
-  while (r.next(b)) out.push_back(b);
-  return out;
-}
+std::vector<Block> read(const std::string& text) { return testing::read_blocks(text); }
 
 Decimal dec(const char* s) { return *Decimal::parse(s).value; }
 
