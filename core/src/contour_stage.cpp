@@ -13,7 +13,7 @@ using grid::Interval;
 
 namespace {
 
-bool has_corner_word(const BlockWords& w) { return w.rnd || w.chf || w.chr; }
+bool has_corner_word(const BlockWords& w) { return w.cw().rnd || w.cw().chf || w.cw().chr; }
 
 void set_plane(Point3& p, PlaneAxes ax, Decimal a, Decimal o) {
   (ax.abscissa == 0 ? p.x : ax.abscissa == 1 ? p.y : p.z) = a;
@@ -33,7 +33,7 @@ std::string name_of(const Block& b) {
 
 bool ProgramReader::needs_contour_stage(const Block& b) const {
   const BlockWords& w = b.words;
-  return ang_open_ || has_corner_word(w) || (w.turn && *w.turn > 0) ||
+  return ang_open_ || has_corner_word(w) || (w.cw().turn && *w.cw().turn > 0) ||
          (rounding_modal_.sign() > 0 && b.moves_in_plane() && !b.is_sar_block());
 }
 
@@ -66,7 +66,7 @@ void ProgramReader::contour_stage(Block& b) {
   if (has_corner_word(w) && b.is_sar_block())
     throw InputError(w.line, 1, "RND/CHF/CHR in a SAR block is SINUMERIK NC that cutcom does not simulate");
   if (corner || ang_open_) {
-    pending_radius_ = w.rnd ? length(*w.rnd) : rounding_modal_;  // modal values as of this block
+    pending_radius_ = w.cw().rnd ? length(*w.cw().rnd) : rounding_modal_;  // modal values as of this block
     pending_feed_ = corner_feed_modal_;
     pending_ = std::move(b);
     pending_ang_ = ang_open_;
@@ -87,7 +87,7 @@ void ProgramReader::finish_pending(Block* next) {
   auto fail = [&](int line, const std::string& what) { throw InputError(line, 1, what); };
 
   if (ang) {  // NC-CONTOUR-3: the corner of two lines given by their angles
-    if (!next || !next->words.ang || !next->words.axis[static_cast<std::size_t>(ax.abscissa)].present ||
+    if (!next || !next->words.cw().ang || !next->words.axis[static_cast<std::size_t>(ax.abscissa)].present ||
         !next->words.axis[static_cast<std::size_t>(ax.ordinate)].present || next->is_arc())
       fail(p.words.line, "ANG= without an end point opens a two-block definition: the next block with motion in "
                          "the plane must give the end point in both plane axes and its own ANG=");
@@ -97,7 +97,7 @@ void ProgramReader::finish_pending(Block* next) {
         fail(next->words.line, "the end point of a two-block ANG definition is programmed absolutely");
     const ProgrammableFrame f = frame_;
     Decimal fa = f.factor[static_cast<std::size_t>(ax.abscissa)], fo = f.factor[static_cast<std::size_t>(ax.ordinate)];
-    Decimal a1 = *p.words.ang, a2 = *next->words.ang;
+    Decimal a1 = *p.words.cw().ang, a2 = *next->words.cw().ang;
     Point3 s = p.start, e = next->end;
     std::array<Decimal, 2> corner;
     try {
@@ -129,8 +129,8 @@ void ProgramReader::finish_pending(Block* next) {
   const BlockWords& w = p.words;
   std::optional<Block> insert;
   Decimal radius = pending_radius_;
-  bool corner = w.rnd || w.chf || w.chr || (radius.sign() > 0 && p.moves_in_plane());
-  if (corner && (w.rnd ? w.rnd->is_zero() : w.chf ? w.chf->is_zero() : w.chr ? w.chr->is_zero() : radius.is_zero()))
+  bool corner = w.cw().rnd || w.cw().chf || w.cw().chr || (radius.sign() > 0 && p.moves_in_plane());
+  if (corner && (w.cw().rnd ? w.cw().rnd->is_zero() : w.cw().chf ? w.cw().chf->is_zero() : w.cw().chr ? w.cw().chr->is_zero() : radius.is_zero()))
     corner = false;
   std::string why_not;
   if (corner && !next)
@@ -141,7 +141,7 @@ void ProgramReader::finish_pending(Block* next) {
   else if (corner && next->state.plane != p.state.plane)
     why_not = "the plane changes";
   if (corner && !why_not.empty()) {
-    note(p, "NC-CONTOUR-1", fmt::format("{} of {} not inserted: {}", w.rnd || !(w.chf || w.chr) ? "rounding" : "chamfer",
+    note(p, "NC-CONTOUR-1", fmt::format("{} of {} not inserted: {}", w.cw().rnd || !(w.cw().chf || w.cw().chr) ? "rounding" : "chamfer",
                                          name_of(p), why_not));
     corner = false;
   }
@@ -154,12 +154,12 @@ void ProgramReader::finish_pending(Block* next) {
     if (fa != fo && fa != -fo) fail(p.words.line, "a rounding or chamfer under a frame that scales the plane axes "
                                                   "differently is not simulated");
     Decimal scale = fa.sign() < 0 ? -fa : fa;
-    contour::CornerKind kind = (w.rnd || !(w.chf || w.chr)) ? contour::CornerKind::kRounding
-                               : w.chf                      ? contour::CornerKind::kChamferLength
+    contour::CornerKind kind = (w.cw().rnd || !(w.cw().chf || w.cw().chr)) ? contour::CornerKind::kRounding
+                               : w.cw().chf                      ? contour::CornerKind::kChamferLength
                                                             : contour::CornerKind::kChamferLeg;
     Decimal value = (kind == contour::CornerKind::kRounding ? radius
-                     : kind == contour::CornerKind::kChamferLength ? length(*w.chf)
-                                                                   : length(*w.chr))
+                     : kind == contour::CornerKind::kChamferLength ? length(*w.cw().chf)
+                                                                   : length(*w.cw().chr))
                         .times(scale);
     std::optional<std::array<Decimal, 12>> cut;
     try {
@@ -207,7 +207,7 @@ void ProgramReader::finish_pending(Block* next) {
       ins.state = p.state;
       bool rounding = kind == contour::CornerKind::kRounding;
       bool rapid = p.state.motion == Motion::kRapid;
-      if (w.frc) ins.state.feed = *w.frc;  // FRC / FRCM: the feed of the inserted element
+      if (w.cw().frc) ins.state.feed = *w.cw().frc;  // FRC / FRCM: the feed of the inserted element
       else if (pending_feed_.sign() > 0) ins.state.feed = pending_feed_;
       ins.start = p.end;
       ins.end = p.end;
@@ -238,12 +238,12 @@ void ProgramReader::finish_pending(Block* next) {
 // NC-CONTOUR-6: a helix with TURN=n runs n full circles before its arc; the infeed is shared in
 // proportion to the angle turned (NC-GRID-1).
 void ProgramReader::push_ready(Block&& b) {
-  if (!b.words.turn || *b.words.turn == 0) {
+  if (!b.words.cw().turn || *b.words.cw().turn == 0) {
     ready_.push_back(std::move(b));
     return;
   }
   PlaneAxes ax = plane_axes(b.state.plane);
-  int n = static_cast<int>(*b.words.turn);
+  int n = static_cast<int>(*b.words.cw().turn);
   Decimal h0 = coord(b.start, ax.applicate), h1 = coord(b.end, ax.applicate);
   std::vector<Decimal> levels(static_cast<std::size_t>(n));
   Point3 centre = *b.centre;
@@ -280,13 +280,13 @@ void ProgramReader::push_ready(Block&& b) {
     (ax.applicate == 0 ? turn.centre->x : ax.applicate == 1 ? turn.centre->y : turn.centre->z) = coord(turn.start, ax.applicate);
     turn.insert.kind = InsertKind::kTurn;
     turn.insert.turn = k;
-    turn.words.turn.reset();
+    turn.words.cw_set().turn.reset();
     at = turn.end;
     ready_.push_back(std::move(turn));
   }
   b.start = at;
   b.words.aux_count = 0, b.notice.clear(), b.words.tool_data_count = 0;
-  b.words.turn.reset();
+  b.words.cw_set().turn.reset();
   if (b.centre) (ax.applicate == 0 ? b.centre->x : ax.applicate == 1 ? b.centre->y : b.centre->z) = coord(at, ax.applicate);
   ready_.push_back(std::move(b));
 }

@@ -38,7 +38,7 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
   FrameWord f = *w.frame;
   bool replaces = f == FrameWord::kTrans || f == FrameWord::kScale || f == FrameWord::kMirror || f == FrameWord::kRot;
   if (replaces) frame_ = ProgrammableFrame{};
-  if (w.rpl && f != FrameWord::kRot && f != FrameWord::kArot) fail("RPL= belongs to ROT or AROT");
+  if (w.cw().rpl && f != FrameWord::kRot && f != FrameWord::kArot) fail("RPL= belongs to ROT or AROT");
   if (f == FrameWord::kRot || f == FrameWord::kArot) {
     // NC-FRAME-4: one rotation about the applicate of the working plane (RPL= or that axis); a
     // half turn about another axis mirrors the two axes it turns; anything else tilts the plane.
@@ -58,10 +58,10 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
       frame_.factor[p] = -frame_.factor[p];
       frame_.factor[q] = -frame_.factor[q];
     }
-    Decimal turn = w.rpl ? *w.rpl : w.axis[static_cast<std::size_t>(applicate)].present
+    Decimal turn = w.cw().rpl ? *w.cw().rpl : w.axis[static_cast<std::size_t>(applicate)].present
                                         ? w.axis[static_cast<std::size_t>(applicate)].value
                                         : Decimal{};
-    if (w.rpl && w.axis[static_cast<std::size_t>(applicate)].present)
+    if (w.cw().rpl && w.axis[static_cast<std::size_t>(applicate)].present)
       fail("RPL= and a rotation about the applicate in one block");
     turn = reduced(turn);
     if (turn.is_zero()) return;
@@ -153,6 +153,7 @@ void ProgramReader::refresh_programmed() {
     return b;
   });
   programmed_ = Point3{v[0], v[1], v[2]};
+  programmed_known_ = true;
 }
 
 }  // namespace cutcom

@@ -41,12 +41,13 @@ void ProgramReader::update_programmed(const BlockWords& w, bool absolute_mode) {
 void ProgramReader::set_pole(const BlockWords& w, Plane plane) {
   PlaneAxes pa = plane_axes(plane);
   std::array<Decimal, 2> from{};
-  if (*w.pole == PoleWord::kG110) from = {coord(programmed_, pa.abscissa), coord(programmed_, pa.ordinate)};
-  if (*w.pole == PoleWord::kG112) from = pole_;
-  if (w.ap.present || w.rp) {
-    if (w.ap.mode == ValueMode::kIncremental) throw InputError(w.line, 1, "a pole takes AP= without IC()");
-    Decimal ap = w.ap.present ? w.ap.value : Decimal{};
-    Decimal rp = w.rp ? length(*w.rp) : Decimal{};
+  if (!programmed_known_) refresh_programmed();
+  if (*w.cw().pole == PoleWord::kG110) from = {coord(programmed_, pa.abscissa), coord(programmed_, pa.ordinate)};
+  if (*w.cw().pole == PoleWord::kG112) from = pole_;
+  if (w.cw().ap.present || w.cw().rp) {
+    if (w.cw().ap.mode == ValueMode::kIncremental) throw InputError(w.line, 1, "a pole takes AP= without IC()");
+    Decimal ap = w.cw().ap.present ? w.cw().ap.value : Decimal{};
+    Decimal rp = w.cw().rp ? length(*w.cw().rp) : Decimal{};
     pole_ = grid::to_grid<2>([&] {
       IPoint p = IPoint{Interval(from[0]), Interval(from[1])} + Interval(rp) * unit(ap);
       return std::array<Interval, 2>{p.a, p.o};
@@ -57,7 +58,7 @@ void ProgramReader::set_pole(const BlockWords& w, Plane plane) {
   for (std::size_t k = 0; k < 2; ++k) {
     const AxisWord& aw = w.axis[static_cast<std::size_t>(axes[k])];
     if (aw.present) pole_[k] = from[k] + frame_value(axes[k], aw, Decimal{}, true);
-    else if (*w.pole == PoleWord::kG111) pole_[k] = Decimal{};
+    else if (*w.cw().pole == PoleWord::kG111) pole_[k] = Decimal{};
     else pole_[k] = from[k];
   }
 }
@@ -68,13 +69,13 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   const ModalState& s = state_;
   PlaneAxes pa = plane_axes(s.plane);
   const std::size_t ia = static_cast<std::size_t>(pa.abscissa), io = static_cast<std::size_t>(pa.ordinate);
-  bool polar = (w.ap.present || w.rp) && !w.pole;
+  bool polar = (w.cw().ap.present || w.cw().rp) && !w.cw().pole;
   bool has_a = w.axis[ia].present, has_o = w.axis[io].present;
   bool has_centre = w.centre[ia].present || w.centre[io].present;
   bool cip = b.is_arc() && circle_definition_ == CircleDefinition::kCip;
   bool ct = b.is_arc() && circle_definition_ == CircleDefinition::kCt;
-  bool ar = w.ar.has_value();
-  bool ang = w.ang.has_value();
+  bool ar = w.cw().ar.has_value();
+  bool ang = w.cw().ang.has_value();
   bool rotated = frame_.rotated();
   ang_open_ = false;
   if (rotated && frame_.rotation_axis != pa.applicate && (w.programs_any_axis() || has_centre || polar))
@@ -88,14 +89,15 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   if (ar && !arc) fail("AR= (opening angle) needs G2 or G3");
   if (ar && (w.cr || (has_centre && (has_a || has_o)) || polar)) fail("AR= with the centre or the end point, not both");
   if (ar && !has_centre && !has_a && !has_o) fail("AR= needs the centre (I, J) or the end point");
-  if (cip && !(w.intermediate[ia].present && w.intermediate[io].present))
+  if (cip && !(w.cw().intermediate[ia].present && w.cw().intermediate[io].present))
     fail(fmt::format("CIP needs the intermediate point in both plane axes ({}1=, {}1=)", "IJK"[ia], "IJK"[io]));
-  if (!cip && (w.intermediate[0].present || w.intermediate[1].present || w.intermediate[2].present))
+  if (!cip && (w.cw().intermediate[0].present || w.cw().intermediate[1].present || w.cw().intermediate[2].present))
     fail("I1=/J1=/K1= (intermediate point) belong to CIP");
   if ((cip || ct) && (has_centre || w.cr || ar)) fail("CIP and CT take no centre, CR= or AR=");
   if (polar && arc && has_centre) fail("a polar circle turns about the pole: no I, J, K");
 
   // The start point in the frame's system, and the end point's plane words.
+  if (!programmed_known_) refresh_programmed();
   const Decimal sa = coord(programmed_, pa.abscissa), so = coord(programmed_, pa.ordinate);
   auto abs_of = [&](const AxisWord& aw) {
     return aw.mode == ValueMode::kAbsolute || (aw.mode == ValueMode::kModal && s.absolute);
@@ -104,8 +106,8 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   Decimal eo = has_o ? frame_value(pa.ordinate, w.axis[io], so, abs_of(w.axis[io])) : so;
 
   if (polar) {  // NC-POLAR-2: AP and RP are modal; AP=IC() turns from the last AP
-    if (w.ap.present) polar_angle_ = w.ap.mode == ValueMode::kIncremental ? polar_angle_ + w.ap.value : w.ap.value;
-    if (w.rp) polar_radius_ = length(*w.rp);
+    if (w.cw().ap.present) polar_angle_ = w.cw().ap.mode == ValueMode::kIncremental ? polar_angle_ + w.cw().ap.value : w.cw().ap.value;
+    if (w.cw().rp) polar_radius_ = length(*w.cw().rp);
   }
   if (ang) {  // NC-CONTOUR-3
     if (has_a && has_o) {
@@ -115,13 +117,13 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
       ang_open_ = true;  // the first block of a two-block definition: its end is the corner
     }
   }
-  Decimal angle = ang ? *w.ang : Decimal{};
+  Decimal angle = ang ? *w.cw().ang : Decimal{};
   const Point3 off = offset_difference();
   const ProgrammableFrame f = frame_;
   const Decimal fa = f.factor[ia], fo = f.factor[io];
   Decimal intermediate[2];
   for (std::size_t k = 0; k < 2 && cip; ++k) {
-    const AxisWord& aw = w.intermediate[k == 0 ? ia : io];
+    const AxisWord& aw = w.cw().intermediate[k == 0 ? ia : io];
     int axis = k == 0 ? pa.abscissa : pa.ordinate;
     intermediate[k] = frame_value(axis, aw, k == 0 ? sa : so, abs_of(aw));
   }
@@ -140,7 +142,7 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
     if (!last_element_valid_ || last_element_.state.plane != s.plane)
       fail("CT needs an element in the plane before it (a line or circle to continue tangentially)");
   }
-  const Decimal ar_value = ar ? *w.ar : Decimal{};
+  const Decimal ar_value = ar ? *w.cw().ar : Decimal{};
   if (ar && (ar_value.sign() <= 0 || ar_value >= Decimal::from_int(360)))
     fail("AR= (opening angle) must lie between 0 and 360 degrees");
   const bool ar_by_centre = ar && has_centre;

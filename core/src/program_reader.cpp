@@ -172,15 +172,15 @@ void ProgramReader::resolve(Block& b) {
     apply_frame(w, w.plane ? *w.plane : state_.plane);
     refresh_programmed();
   }
-  if (w.pole) {
+  if (w.cw().pole) {
     if (w.motion || w.frame) fail("a pole (G110/G111/G112) stands in a block without motion or frame words");
     set_pole(w, w.plane ? *w.plane : state_.plane);
   }
-  if (w.rpl && !w.frame) fail("RPL= belongs to ROT or AROT");
+  if (w.cw().rpl && !w.frame) fail("RPL= belongs to ROT or AROT");
   if (w.motion) circle_definition_.reset();
-  if (w.circle_definition) circle_definition_ = *w.circle_definition;
-  if (w.rndm) rounding_modal_ = length(*w.rndm);  // NC-CONTOUR-2
-  if (w.frcm) corner_feed_modal_ = *w.frcm;
+  if (w.cw().circle_definition) circle_definition_ = *w.cw().circle_definition;
+  if (w.cw().rndm) rounding_modal_ = length(*w.cw().rndm);  // NC-CONTOUR-2
+  if (w.cw().frcm) corner_feed_modal_ = *w.cw().frcm;
   if (w.motion) s.motion = *w.motion;
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
@@ -264,7 +264,7 @@ void ProgramReader::resolve(Block& b) {
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
   b.start = position_;
   Point3 end = position_;
-  bool frame_values = w.frame.has_value() || w.pole.has_value();  // the frame's or pole's values
+  bool frame_values = w.frame.has_value() || w.cw().pole.has_value();  // the frame's or pole's values
   std::string unknown_used;
   for (int a = 0; a < 3; ++a) {
     std::size_t i = static_cast<std::size_t>(a);
@@ -338,10 +338,10 @@ void ProgramReader::resolve(Block& b) {
   b.centre.reset();
   // A SAR block is never a circle itself (SAR-BLOCK-1): its contour is generated, whatever G2/G3
   // is modally in force.
-  bool polar = (w.ap.present || w.rp.has_value()) && !w.pole;
-  bool defined_circle = circle_definition_.has_value() || w.ar.has_value() || polar;
+  bool polar = (w.cw().ap.present || w.cw().rp.has_value()) && !w.cw().pole;
+  bool defined_circle = circle_definition_.has_value() || w.cw().ar.has_value() || polar;
   b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw || circle_definition_) && !w.sar_contour &&
-             (w.programs_any_axis() || has_centre || w.cr.has_value() || w.ar.has_value() || polar);
+             (w.programs_any_axis() || has_centre || w.cr.has_value() || w.cw().ar.has_value() || polar);
   if (has_centre || w.cr) {
     if (!b.is_arc()) fail("I, J, K or CR= programmed in a block without G2/G3");
     if (has_centre && w.cr) fail("an arc takes either I/J/K or CR=, not both");
@@ -382,8 +382,10 @@ void ProgramReader::resolve(Block& b) {
   } catch (const std::overflow_error&) {
     fail("position out of range");
   }
-  if (!defined) update_programmed(w, s.absolute);
-  if (w.turn && *w.turn > 0 && (!b.is_arc() || !b.centre))
+  // Outside a rotated frame the frame's position is its inverse image, taken only when needed.
+  if (!defined && frame_.rotated()) update_programmed(w, s.absolute);
+  else if (!defined) programmed_known_ = false;
+  if (w.cw().turn && *w.cw().turn > 0 && (!b.is_arc() || !b.centre))
     fail("TURN= needs a circle given by its centre (I, J, K, AR= with the centre, or a polar circle)");
   if (b.moves_in_plane()) {  // CT continues from here
     last_element_.start = b.start, last_element_.end = b.end, last_element_.centre = b.centre;

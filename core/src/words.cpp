@@ -297,16 +297,16 @@ class WordLexer {
     BlockWords& o = out_;
     switch (g) {
       case 0:
-        if (o.circle_definition) fail("two G codes of the motion group in one block", at);
+        if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
         return group(o.motion, Motion::kRapid, "motion");
       case 1:
-        if (o.circle_definition) fail("two G codes of the motion group in one block", at);
+        if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
         return group(o.motion, Motion::kLinear, "motion");
       case 2:
-        if (o.circle_definition) fail("two G codes of the motion group in one block", at);
+        if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
         return group(o.motion, Motion::kArcCw, "motion");
       case 3:
-        if (o.circle_definition) fail("two G codes of the motion group in one block", at);
+        if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
         return group(o.motion, Motion::kArcCcw, "motion");
       case 4:  // NC-WORD-4: dwell; its F or S is the time or the revolutions
         g_group(kGroupDwell, "non-modal (G4/G74/G75)", at);
@@ -418,7 +418,7 @@ class WordLexer {
       case 110:
       case 111:
       case 112:  // NC-POLAR-1: the pole
-        return group(o.pole, g == 110 ? PoleWord::kG110 : g == 111 ? PoleWord::kG111 : PoleWord::kG112, "pole");
+        return group(o.cw_set().pole, g == 110 ? PoleWord::kG110 : g == 111 ? PoleWord::kG111 : PoleWord::kG112, "pole");
       case 450:
         return group(o.corner, CornerMode::kG450, "outer corner");
       case 451:
@@ -511,25 +511,25 @@ class WordLexer {
     } else if (n == "RND" || n == "RNDM" || n == "CHF" || n == "CHR" || n == "FRC" || n == "FRCM") {
       contour_value(n, at);  // NC-CONTOUR-1/2
     } else if (n == "ANG") {
-      set_once(out_.ang, plain_value("ANG", true), "ANG", at);  // NC-CONTOUR-3
+      set_once(out_.cw_set().ang, plain_value("ANG", true), "ANG", at);  // NC-CONTOUR-3
     } else if (n == "AP") {
-      positional(out_.ap, "AP", at, true, true);  // NC-POLAR-2
+      positional(out_.cw_set().ap, "AP", at, true, true);  // NC-POLAR-2
     } else if (n == "RP") {
       Decimal v = plain_value("RP", true);
       if (v.sign() < 0) fail("RP (polar radius) must not be negative", at);
-      set_once(out_.rp, v, "RP", at);
+      set_once(out_.cw_set().rp, v, "RP", at);
     } else if (n == "AR") {
-      set_once(out_.ar, plain_value("AR", true), "AR", at);  // NC-CONTOUR-5
+      set_once(out_.cw_set().ar, plain_value("AR", true), "AR", at);  // NC-CONTOUR-5
     } else if (n == "TURN") {
       if (!equals()) fail("TURN needs '=' (write TURN=...)");
       std::int64_t v = integer("TURN");
       if (v < 0 || v > 999) fail("TURN: 0 to 999 full turns", at);
-      set_once(out_.turn, v, "TURN", at);
+      set_once(out_.cw_set().turn, v, "TURN", at);
     } else if (n == "RPL") {
-      set_once(out_.rpl, plain_value("RPL", true), "RPL", at);  // NC-FRAME-4
+      set_once(out_.cw_set().rpl, plain_value("RPL", true), "RPL", at);  // NC-FRAME-4
     } else if (n == "CIP" || n == "CT") {  // NC-CONTOUR-4: circles of the motion group
-      if (out_.circle_definition || out_.motion) fail("two G codes of the motion group in one block", at);
-      out_.circle_definition = n == "CIP" ? CircleDefinition::kCip : CircleDefinition::kCt;
+      if (out_.cw().circle_definition || out_.motion) fail("two G codes of the motion group in one block", at);
+      out_.cw_set().circle_definition = n == "CIP" ? CircleDefinition::kCip : CircleDefinition::kCt;
     } else {
       named_word(n, at);
     }
@@ -539,8 +539,8 @@ class WordLexer {
   void contour_value(const std::string& n, std::size_t at) {
     Decimal v = plain_value(n, true);
     if (v.sign() < 0) fail(fmt::format("{} must not be negative", n), at);
-    Opt<Decimal>& slot = n == "RND" ? out_.rnd : n == "RNDM" ? out_.rndm : n == "CHF" ? out_.chf
-                       : n == "CHR" ? out_.chr : n == "FRC" ? out_.frc : out_.frcm;
+    Opt<Decimal>& slot = n == "RND" ? out_.cw_set().rnd : n == "RNDM" ? out_.cw_set().rndm : n == "CHF" ? out_.cw_set().chf
+                       : n == "CHR" ? out_.cw_set().chr : n == "FRC" ? out_.cw_set().frc : out_.cw_set().frcm;
     set_once(slot, v, n, at);
   }
 
@@ -680,7 +680,7 @@ class WordLexer {
         std::size_t k = static_cast<std::size_t>(n[0] - 'I');
         if (peek() == '1' && !is_digit(peek(1)) && extended_address_follows()) {  // I1= J1= K1= (CIP)
           ++i_;
-          return positional(out_.intermediate[k], n + "1", at, true, true);
+          return positional(out_.cw_set().intermediate[k], n + "1", at, true, true);
         }
         return positional(out_.centre[k], n, at, true, false);
       }

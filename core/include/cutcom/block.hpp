@@ -94,6 +94,19 @@ struct ToolNameAssignment {
 template <class T>
 using Opt = std::optional<T>;
 
+struct ContourWords {
+  Opt<Decimal> rpl;  // ROT/AROT RPL=: rotation in the working plane (NC-FRAME-4)
+  Opt<Decimal> rnd, rndm, chf, chr, frc, frcm;
+  Opt<Decimal> ang;
+  AxisWord ap;      // AP= / AP=IC()
+  Opt<Decimal> rp;  // RP=
+  Opt<PoleWord> pole;
+  Opt<Decimal> ar;  // opening angle AR=
+  Opt<std::int64_t> turn;
+  Opt<CircleDefinition> circle_definition;
+  std::array<AxisWord, 3> intermediate;  // I1= J1= K1= (CIP)
+};
+
 // Everything one NC line programs, as written (before modal resolution).
 struct BlockWords {
   static constexpr int kMaxAux = 16;
@@ -139,18 +152,15 @@ struct BlockWords {
   Opt<int> settable_offset;  // G500 = 0, G54…G57 = 1…4, G505…G599 = 5…99 (NC-OFFSET-1)
   Opt<DiameterMode> diameter;
   Opt<FrameWord> frame;
-  Opt<Decimal> rpl;  // ROT/AROT RPL=: rotation in the working plane (NC-FRAME-4)
+  // Contour definitions, polar coordinates and RPL: rare words, kept apart so that a block
+  // without them stays small to reset and copy (NC-CONTOUR-*, NC-POLAR-*, NC-FRAME-4).
+  Opt<ContourWords> contour;
+  const ContourWords& cw() const {
+    static const ContourWords kNone{};
+    return contour ? *contour : kNone;
+  }
+  ContourWords& cw_set() { return contour ? *contour : contour.emplace(); }
 
-  // Contour definitions (NC-CONTOUR-*) and polar coordinates (NC-POLAR-*), as written.
-  Opt<Decimal> rnd, rndm, chf, chr, frc, frcm;
-  Opt<Decimal> ang;
-  AxisWord ap;      // AP= / AP=IC()
-  Opt<Decimal> rp;  // RP=
-  Opt<PoleWord> pole;
-  Opt<Decimal> ar;  // opening angle AR=
-  Opt<std::int64_t> turn;
-  Opt<CircleDefinition> circle_definition;
-  std::array<AxisWord, 3> intermediate;  // I1= J1= K1= (CIP)
   // NC-CYCLE-1: a block that moves the tool along a path cutcom does not simulate (a standard
   // cycle, G74/G75, a G53/G153/SUPA move): what it is, as written ("CYCLE81", "SUPA").
   std::string not_simulated;

@@ -133,6 +133,7 @@ class ProgramReader {
   int first_offset_ = -1;        // the settable offset whose workpiece system the output uses
   ProgrammableFrame frame_;      // programmable frame
   Point3 programmed_;            // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
+  bool programmed_known_ = true;  // else recomputed from position_ when a block needs it
   std::array<Decimal, 2> pole_{};  // NC-POLAR-1: in the frame's system, plane abscissa/ordinate
   Decimal polar_angle_, polar_radius_;  // NC-POLAR-2: the last AP and RP
   std::optional<CircleDefinition> circle_definition_;  // CIP/CT in force (motion group)
