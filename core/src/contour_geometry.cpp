@@ -15,6 +15,10 @@ Interval dot(const IPoint& p, const IPoint& q) { return p.a * q.a + p.o * q.o; }
 Interval cross(const IPoint& p, const IPoint& q) { return p.a * q.o - p.o * q.a; }
 IPoint perp(const IPoint& p) { return {-p.o, p.a}; }
 Interval norm(const IPoint& p) { return sqrt(dot(p, p)); }
+IPoint turned(const IPoint& p, Decimal degrees) {
+  Interval c = Interval::cos_deg(degrees), s = Interval::sin_deg(degrees);
+  return {c * p.a - s * p.o, s * p.a + c * p.o};
+}
 
 IPoint Element::tangent_at_start() const {
   return arc ? Interval::integer(sense) * perp(start - centre) : end - start;

@@ -23,6 +23,7 @@ IPoint operator*(const Interval& k, const IPoint& p);
 Interval dot(const IPoint& p, const IPoint& q);
 Interval cross(const IPoint& p, const IPoint& q);
 IPoint perp(const IPoint& p);  // turned by +90°
+IPoint turned(const IPoint& p, Decimal degrees);  // turned counter-clockwise (NC-GRID-1 sines)
 Interval norm(const IPoint& p);
 
 // A programmed element of the plane: a line, or a circle (centre per ARC-CENTRE-1 / ARC-CR-1).

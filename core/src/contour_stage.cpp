@@ -15,10 +15,7 @@ namespace {
 
 bool has_corner_word(const BlockWords& w) { return w.cw().rnd || w.cw().chf || w.cw().chr; }
 
-void set_plane(Point3& p, PlaneAxes ax, Decimal a, Decimal o) {
-  (ax.abscissa == 0 ? p.x : ax.abscissa == 1 ? p.y : p.z) = a;
-  (ax.ordinate == 0 ? p.x : ax.ordinate == 1 ? p.y : p.z) = o;
-}
+void set_plane(Point3& p, PlaneAxes ax, Decimal a, Decimal o) { coord(p, ax.abscissa) = a, coord(p, ax.ordinate) = o; }
 
 bool moves_applicate(const Block& b) {
   int h = plane_axes(b.state.plane).applicate;
@@ -103,10 +100,8 @@ void ProgramReader::finish_pending(Block* next) {
     try {
       corner = grid::to_grid<2>([&] {
         auto direction = [&](Decimal deg) {  // the line's direction in the output system
-          IPoint u{Interval(fa) * Interval::cos_deg(deg), Interval(fo) * Interval::sin_deg(deg)};
-          if (!f.rotated()) return u;
-          Interval c = Interval::cos_deg(f.rotation), sn = Interval::sin_deg(f.rotation);
-          return IPoint{c * u.a - sn * u.o, sn * u.a + c * u.o};
+          return contour::turned({Interval(fa) * Interval::cos_deg(deg), Interval(fo) * Interval::sin_deg(deg)},
+                                 f.rotation);
         };
         IPoint d1 = direction(a1), d2 = direction(a2);
         IPoint q1 = contour::in_plane(s, ax), q2 = contour::in_plane(e, ax);
@@ -126,12 +121,15 @@ void ProgramReader::finish_pending(Block* next) {
   }
 
   // NC-CONTOUR-1/2: the rounding or chamfer at the end of p.
-  const BlockWords& w = p.words;
+  const ContourWords& cw = p.words.cw();
   std::optional<Block> insert;
-  Decimal radius = pending_radius_;
-  bool corner = w.cw().rnd || w.cw().chf || w.cw().chr || (radius.sign() > 0 && p.moves_in_plane());
-  if (corner && (w.cw().rnd ? w.cw().rnd->is_zero() : w.cw().chf ? w.cw().chf->is_zero() : w.cw().chr ? w.cw().chr->is_zero() : radius.is_zero()))
-    corner = false;
+  // The rounding (RND or RNDM) wins over a chamfer in the same block; a value of 0 inserts nothing.
+  const contour::CornerKind kind = (cw.rnd || !(cw.chf || cw.chr)) ? contour::CornerKind::kRounding
+                                   : cw.chf                        ? contour::CornerKind::kChamferLength
+                                                                   : contour::CornerKind::kChamferLeg;
+  const bool rounding = kind == contour::CornerKind::kRounding;
+  Decimal value = rounding ? pending_radius_ : length(cw.chf ? *cw.chf : *cw.chr);
+  bool corner = value.sign() > 0 && p.moves_in_plane();
   std::string why_not;
   if (corner && !next)
     why_not = between_.size() >= 3 ? "more than three blocks without motion in the plane follow"
@@ -141,8 +139,8 @@ void ProgramReader::finish_pending(Block* next) {
   else if (corner && next->state.plane != p.state.plane)
     why_not = "the plane changes";
   if (corner && !why_not.empty()) {
-    note(p, "NC-CONTOUR-1", fmt::format("{} of {} not inserted: {}", w.cw().rnd || !(w.cw().chf || w.cw().chr) ? "rounding" : "chamfer",
-                                         name_of(p), why_not));
+    note(p, "NC-CONTOUR-1",
+         fmt::format("{} of {} not inserted: {}", rounding ? "rounding" : "chamfer", name_of(p), why_not));
     corner = false;
   }
   if (corner) {
@@ -153,14 +151,7 @@ void ProgramReader::finish_pending(Block* next) {
     Decimal fo = frame_.factor[static_cast<std::size_t>(ax.ordinate)];
     if (fa != fo && fa != -fo) fail(p.words.line, "a rounding or chamfer under a frame that scales the plane axes "
                                                   "differently is not simulated");
-    Decimal scale = fa.sign() < 0 ? -fa : fa;
-    contour::CornerKind kind = (w.cw().rnd || !(w.cw().chf || w.cw().chr)) ? contour::CornerKind::kRounding
-                               : w.cw().chf                      ? contour::CornerKind::kChamferLength
-                                                            : contour::CornerKind::kChamferLeg;
-    Decimal value = (kind == contour::CornerKind::kRounding ? radius
-                     : kind == contour::CornerKind::kChamferLength ? length(*w.cw().chf)
-                                                                   : length(*w.cw().chr))
-                        .times(scale);
+    value = value.times(fa.sign() < 0 ? -fa : fa);  // a uniform scale scales the rounding too
     std::optional<std::array<Decimal, 12>> cut;
     try {
       // [0..1] new end of p, [2..3] new start of next, [4..5] the rounding's centre, [6..9] the
@@ -176,7 +167,7 @@ void ProgramReader::finish_pending(Block* next) {
       if (v[10] == Decimal::from_int(1)) cut = v;
     } catch (const contour::ContourError& err) {
       fail(p.words.line, fmt::format("{} of {}/{}: {} (the control shortens it; cutcom does not simulate that)",
-                                     kind == contour::CornerKind::kRounding ? "the rounding" : "the chamfer", name_of(p),
+                                     rounding ? "the rounding" : "the chamfer", name_of(p),
                                      name_of(*next), err.what));
     } catch (const std::domain_error&) {
       fail(p.words.line, "the rounding or chamfer has no solution at this corner");
@@ -205,9 +196,8 @@ void ProgramReader::finish_pending(Block* next) {
       }
       ins.previous = p.state;
       ins.state = p.state;
-      bool rounding = kind == contour::CornerKind::kRounding;
       bool rapid = p.state.motion == Motion::kRapid;
-      if (w.cw().frc) ins.state.feed = *w.cw().frc;  // FRC / FRCM: the feed of the inserted element
+      if (cw.frc) ins.state.feed = *cw.frc;  // FRC / FRCM: the feed of the inserted element
       else if (pending_feed_.sign() > 0) ins.state.feed = pending_feed_;
       ins.start = p.end;
       ins.end = p.end;
@@ -275,9 +265,9 @@ void ProgramReader::push_ready(Block&& b) {
     if (k > 1) turn.words.aux_count = 0, turn.notice.clear(), turn.words.tool_data_count = 0;
     turn.start = at;
     turn.end = at;
-    (ax.applicate == 0 ? turn.end.x : ax.applicate == 1 ? turn.end.y : turn.end.z) = levels[static_cast<std::size_t>(k - 1)];
+    coord(turn.end, ax.applicate) = levels[static_cast<std::size_t>(k - 1)];
     turn.centre = centre;
-    (ax.applicate == 0 ? turn.centre->x : ax.applicate == 1 ? turn.centre->y : turn.centre->z) = coord(turn.start, ax.applicate);
+    coord(*turn.centre, ax.applicate) = coord(turn.start, ax.applicate);
     turn.insert.kind = InsertKind::kTurn;
     turn.insert.turn = k;
     turn.words.cw_set().turn.reset();
@@ -287,7 +277,7 @@ void ProgramReader::push_ready(Block&& b) {
   b.start = at;
   b.words.aux_count = 0, b.notice.clear(), b.words.tool_data_count = 0;
   b.words.cw_set().turn.reset();
-  if (b.centre) (ax.applicate == 0 ? b.centre->x : ax.applicate == 1 ? b.centre->y : b.centre->z) = coord(at, ax.applicate);
+  if (b.centre) coord(*b.centre, ax.applicate) = coord(at, ax.applicate);
   ready_.push_back(std::move(b));
 }
 

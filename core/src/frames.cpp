@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "cutcom/reader.hpp"
-#include "grid_value.hpp"
+#include "contour_geometry.hpp"
 
 namespace cutcom {
 
@@ -16,11 +16,10 @@ bool ProgrammableFrame::identity() const {
 }
 
 namespace {
-// The plane that a rotation about `axis` turns: abscissa and ordinate (right-handed with it).
+// The plane that a rotation about `axis` turns: the one whose applicate it is (NC-PLANE-1).
 std::pair<std::size_t, std::size_t> rotation_plane(int axis) {
-  return axis == 2 ? std::pair<std::size_t, std::size_t>{0, 1}
-         : axis == 1 ? std::pair<std::size_t, std::size_t>{2, 0}
-                     : std::pair<std::size_t, std::size_t>{1, 2};
+  PlaneAxes pa = plane_axes(axis == 2 ? Plane::kG17 : axis == 1 ? Plane::kG18 : Plane::kG19);
+  return {static_cast<std::size_t>(pa.abscissa), static_cast<std::size_t>(pa.ordinate)};
 }
 // Angle reduced to (-180, 180].
 Decimal reduced(Decimal deg) {
@@ -38,7 +37,6 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
   FrameWord f = *w.frame;
   bool replaces = f == FrameWord::kTrans || f == FrameWord::kScale || f == FrameWord::kMirror || f == FrameWord::kRot;
   if (replaces) frame_ = ProgrammableFrame{};
-  if (w.cw().rpl && f != FrameWord::kRot && f != FrameWord::kArot) fail("RPL= belongs to ROT or AROT");
   if (f == FrameWord::kRot || f == FrameWord::kArot) {
     // NC-FRAME-4: one rotation about the applicate of the working plane (RPL= or that axis); a
     // half turn about another axis mirrors the two axes it turns; anything else tilts the plane.
@@ -86,6 +84,7 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
         frame_.shift[i] = length(aw.value);
         break;
       case FrameWord::kAtrans:  // in the current frame: the shift turns with mirror and scale
+        if (frame_.rotated() && a != frame_.rotation_axis) break;  // and with the rotation: below
         frame_.shift[i] = frame_.shift[i] + length(aw.value).times(frame_.factor[i]);
         break;
       case FrameWord::kScale:
@@ -107,20 +106,22 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
   if (f == FrameWord::kAtrans && frame_.rotated()) {
     // NC-FRAME-4: the translation is in the rotated system: turn its plane part (NC-GRID-1).
     auto [p, q] = rotation_plane(frame_.rotation_axis);
-    Decimal before_p = frame_.shift[p], before_q = frame_.shift[q];
     Decimal tp = w.axis[p].present ? length(w.axis[p].value).times(frame_.factor[p]) : Decimal{};
     Decimal tq = w.axis[q].present ? length(w.axis[q].value).times(frame_.factor[q]) : Decimal{};
-    Decimal sp = w.axis[p].present ? before_p - tp : before_p;
-    Decimal sq = w.axis[q].present ? before_q - tq : before_q;
-    Decimal rot = frame_.rotation;
     auto v = grid::to_grid<2>([&] {
-      Interval c = Interval::cos_deg(rot), s = Interval::sin_deg(rot);
-      Interval a(tp), b(tq);
-      return std::array<Interval, 2>{Interval(sp) + c * a - s * b, Interval(sq) + s * a + c * b};
+      contour::IPoint t = contour::turned({Interval(tp), Interval(tq)}, frame_.rotation);
+      return std::array<Interval, 2>{Interval(frame_.shift[p]) + t.a, Interval(frame_.shift[q]) + t.o};
     });
     frame_.shift[p] = v[0];
     frame_.shift[q] = v[1];
   }
+}
+
+// NC-FRAME-3: exactly one of the plane's axes is mirrored.
+bool ProgramReader::mirrors_plane(Plane plane) const {
+  PlaneAxes pa = plane_axes(plane);
+  return (frame_.factor[static_cast<std::size_t>(pa.abscissa)].sign() < 0) !=
+         (frame_.factor[static_cast<std::size_t>(pa.ordinate)].sign() < 0);
 }
 
 // The selected settable offset relative to the first one (NC-OFFSET-1).
@@ -144,10 +145,8 @@ void ProgramReader::refresh_programmed() {
   auto v = grid::to_grid<3>([&] {
     std::array<Interval, 3> b{Interval(base[0]), Interval(base[1]), Interval(base[2])};
     if (f.rotated()) {  // turn back by the rotation
-      Interval c = Interval::cos_deg(f.rotation), s = Interval::sin_deg(f.rotation);
-      Interval bp = b[p], bq = b[q];
-      b[p] = c * bp + s * bq;
-      b[q] = c * bq - s * bp;
+      contour::IPoint t = contour::turned({b[p], b[q]}, -f.rotation);
+      b[p] = t.a, b[q] = t.o;
     }
     for (std::size_t a = 0; a < 3; ++a) b[a] = b[a] / Interval(f.factor[a]);
     return b;

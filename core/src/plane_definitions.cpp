@@ -18,10 +18,14 @@ Interval half() { return Interval::integer(1) / Interval::integer(2); }
 IPoint unit(Decimal degrees) { return {Interval::cos_deg(degrees), Interval::sin_deg(degrees)}; }
 }  // namespace
 
-// A programmed value of `axis` in the frame's system, in mm (units and diameter applied).
-Decimal ProgramReader::frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute) const {
+// A programmed value of `axis` in the frame's system, in mm (NC-UNIT-1). NC-DIAM-1: in G18
+// turning, X is a diameter (DIAMON; DIAM90 only for absolute values); a distance such as an
+// incremental centre word is a radius value.
+Decimal ProgramReader::frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
+                                   bool distance) const {
   Decimal v = length(aw.value);
-  if (axis == 0 && (diameter_ == DiameterMode::kDiamon || (diameter_ == DiameterMode::kDiam90 && absolute)))
+  if (axis == 0 && !distance &&
+      (diameter_ == DiameterMode::kDiamon || (diameter_ == DiameterMode::kDiam90 && absolute)))
     v = v.scaled(1, 2);
   return absolute ? v : current + v;
 }
@@ -31,7 +35,7 @@ void ProgramReader::update_programmed(const BlockWords& w, bool absolute_mode) {
     const AxisWord& aw = w.axis[static_cast<std::size_t>(a)];
     if (!aw.present) continue;
     bool abs = aw.mode == ValueMode::kAbsolute || (aw.mode == ValueMode::kModal && absolute_mode);
-    Decimal& p = a == 0 ? programmed_.x : a == 1 ? programmed_.y : programmed_.z;
+    Decimal& p = coord(programmed_, a);
     p = frame_value(a, aw, p, abs);
   }
 }
@@ -132,10 +136,8 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
     const AxisWord& aw = w.centre[k == 0 ? ia : io];
     int axis = k == 0 ? pa.abscissa : pa.ordinate;
     if (!aw.present) continue;
-    bool abs = aw.mode == ValueMode::kAbsolute;
-    Decimal v = length(aw.value);
-    if (axis == 0 && abs && diameter_ != DiameterMode::kDiamof) v = v.scaled(1, 2);
-    centre_words[k] = abs ? v : centre_words[k] + v;
+    bool abs = aw.mode == ValueMode::kAbsolute;  // NC-ARC-1: I=AC() a position, else a distance
+    centre_words[k] = frame_value(axis, aw, centre_words[k], abs, !abs);
   }
   // CT: the end tangent of the element before, turned back into the frame's system.
   if (ct) {
@@ -151,14 +153,10 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   int geometric_sense = sense;
 
   auto to_base = [&](const IPoint& p) {
-    // base = offset + shift + R·(F ⊙ p)
-    Interval x = Interval(fa) * p.a, y = Interval(fo) * p.o;
-    if (f.rotated()) {
-      Interval c = Interval::cos_deg(f.rotation), sn = Interval::sin_deg(f.rotation);
-      Interval rx = c * x - sn * y, ry = sn * x + c * y;
-      x = rx, y = ry;
-    }
-    return IPoint{Interval(coord(off, pa.abscissa) + f.shift[ia]) + x, Interval(coord(off, pa.ordinate) + f.shift[io]) + y};
+    // base = offset + shift + R·(F ⊙ p); a rotation of 0 is the exact identity
+    IPoint r = contour::turned({Interval(fa) * p.a, Interval(fo) * p.o}, f.rotation);
+    return IPoint{Interval(coord(off, pa.abscissa) + f.shift[ia]) + r.a,
+                  Interval(coord(off, pa.ordinate) + f.shift[io]) + r.o};
   };
   auto v = grid::to_grid<6>([&] {
     IPoint start{Interval(sa), Interval(so)};
@@ -186,10 +184,7 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
       centre = half() * (start + end) + (Interval::integer(sense) * half() * cot_half) * contour::perp(d);
     }
     if (ar_by_centre) {  // the end turns from the start about the centre by σ·AR
-      IPoint r = start - centre;
-      Decimal turn = sense > 0 ? ar_value : -ar_value;
-      Interval c = Interval::cos_deg(turn), sn = Interval::sin_deg(turn);
-      end = centre + IPoint{c * r.a - sn * r.o, sn * r.a + c * r.o};
+      end = centre + contour::turned(start - centre, sense > 0 ? ar_value : -ar_value);
     }
     if (cip) {  // the circle through start, intermediate point and end
       IPoint q{Interval(intermediate[0]), Interval(intermediate[1])};
@@ -202,11 +197,7 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
     }
     if (ct) {  // NC-CONTOUR-4: the centre on the normal at the start, equidistant from the end
       contour::Element e = contour::element_of(last_element_);
-      IPoint tb = e.tangent_at_end();  // in the output system: turn back, unscale
-      if (f.rotated()) {
-        Interval c = Interval::cos_deg(f.rotation), sn = Interval::sin_deg(f.rotation);
-        tb = IPoint{c * tb.a + sn * tb.o, c * tb.o - sn * tb.a};
-      }
+      IPoint tb = contour::turned(e.tangent_at_end(), -f.rotation);  // into the frame's system
       IPoint t{tb.a / Interval(fa), tb.o / Interval(fo)};
       IPoint n = contour::perp(t), d = end - start;
       Interval nd = contour::dot(n, d);
@@ -218,41 +209,30 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
     IPoint eb = to_base(end), cb = to_base(centre);
     return std::array<Interval, 6>{eb.a, eb.o, cb.a, cb.o, end.a, end.o};
   });
-  Point3 end_base = b.end;
-  (ia == 0 ? end_base.x : ia == 1 ? end_base.y : end_base.z) = v[0];
-  (io == 0 ? end_base.x : io == 1 ? end_base.y : end_base.z) = v[1];
-  if (ang_open_) {  // the corner is not known yet: the block stays at its start in the plane
-    (ia == 0 ? end_base.x : ia == 1 ? end_base.y : end_base.z) = coord(b.start, pa.abscissa);
-    (io == 0 ? end_base.x : io == 1 ? end_base.y : end_base.z) = coord(b.start, pa.ordinate);
-  } else {
+  if (!ang_open_) {  // (an open ANG block stays at its start in the plane: its corner comes later)
+    coord(b.end, pa.abscissa) = v[0], coord(b.end, pa.ordinate) = v[1];
+    coord(programmed_, pa.abscissa) = v[4], coord(programmed_, pa.ordinate) = v[5];
     w.axis[ia].present = w.axis[io].present = true;  // the block moves in both plane axes
     w.axis[ia].value = v[0], w.axis[io].value = v[1];
     w.axis[ia].mode = w.axis[io].mode = ValueMode::kAbsolute;
   }
-  b.end = end_base;
   if (arc && !w.cr) {
     Point3 c = b.start;
-    (ia == 0 ? c.x : ia == 1 ? c.y : c.z) = v[2];
-    (io == 0 ? c.x : io == 1 ? c.y : c.z) = v[3];
+    coord(c, pa.abscissa) = v[2], coord(c, pa.ordinate) = v[3];
     if (coord(c, pa.abscissa) == coord(b.start, pa.abscissa) && coord(c, pa.ordinate) == coord(b.start, pa.ordinate))
       fail("the circle centre lies on the start point (radius 0)");
     b.centre = c;
   }
   if (cip || ct) {  // the sense follows from the geometry; a mirroring frame reverses it (NC-FRAME-3)
-    bool mirrored = (fa.sign() < 0) != (fo.sign() < 0);
-    bool ccw = (geometric_sense > 0) != mirrored;
+    bool ccw = (geometric_sense > 0) != mirrors_plane(s.plane);
     eff.motion = ccw ? Motion::kArcCcw : Motion::kArcCw;
     b.state.motion = eff.motion;
     effective_.motion = eff.motion;
   }
-  if (!ang_open_) {
-    (ia == 0 ? programmed_.x : ia == 1 ? programmed_.y : programmed_.z) = v[4];
-    (io == 0 ? programmed_.x : io == 1 ? programmed_.y : programmed_.z) = v[5];
-  }
   // The applicate as usual.
   const AxisWord& ah = w.axis[static_cast<std::size_t>(pa.applicate)];
   if (ah.present) {
-    Decimal& p = pa.applicate == 0 ? programmed_.x : pa.applicate == 1 ? programmed_.y : programmed_.z;
+    Decimal& p = coord(programmed_, pa.applicate);
     p = frame_value(pa.applicate, ah, p, abs_of(ah));
   }
   return true;

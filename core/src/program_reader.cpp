@@ -77,17 +77,9 @@ Decimal ProgramReader::length(const Decimal& v) const {
 Decimal ProgramReader::to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
                                bool distance) const {
   std::size_t a = static_cast<std::size_t>(axis);
-  Decimal v = length(aw.value);
-  // NC-DIAM-1: in G18 turning, X is a diameter (DIAMON; DIAM90 only for absolute values); a
-  // distance such as an incremental centre word is a radius value.
-  if (axis == 0 && !distance &&
-      (diameter_ == DiameterMode::kDiamon || (diameter_ == DiameterMode::kDiam90 && absolute)))
-    v = v.scaled(1, 2);
-  Decimal scaled = v.times(frame_.factor[a]);
+  Decimal scaled = frame_value(axis, aw, Decimal{}, absolute, distance).times(frame_.factor[a]);
   if (!absolute) return current + scaled;
-  Decimal offset = coord(offsets_.translation(offset_index_), axis) -
-                   (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), axis) : Decimal{});
-  return offset + frame_.shift[a] + scaled;
+  return coord(offset_difference(), axis) + frame_.shift[a] + scaled;
 }
 
 // TOOL-CHANGE-1/2, TOOL-NAME-1: which tool and edge are in force after the block's T, M6 and D.
@@ -176,7 +168,7 @@ void ProgramReader::resolve(Block& b) {
     if (w.motion || w.frame) fail("a pole (G110/G111/G112) stands in a block without motion or frame words");
     set_pole(w, w.plane ? *w.plane : state_.plane);
   }
-  if (w.cw().rpl && !w.frame) fail("RPL= belongs to ROT or AROT");
+  if (w.cw().rpl && !(w.frame == FrameWord::kRot || w.frame == FrameWord::kArot)) fail("RPL= belongs to ROT or AROT");
   if (w.motion) circle_definition_.reset();
   if (w.cw().circle_definition) circle_definition_ = *w.cw().circle_definition;
   if (w.cw().rndm) rounding_modal_ = length(*w.cw().rndm);  // NC-CONTOUR-2
@@ -217,8 +209,7 @@ void ProgramReader::resolve(Block& b) {
       if (aw->present) {
         aw->value = length(aw->value);
         if (aw->mode == ValueMode::kAbsolute)
-          aw->value = aw->value + frame_.shift[h] + coord(offsets_.translation(offset_index_), pa.applicate) -
-                      (first_offset_ > 0 ? coord(offsets_.translation(first_offset_), pa.applicate) : Decimal{});
+          aw->value = aw->value + frame_.shift[h] + coord(offset_difference(), pa.applicate);
       }
   }
   change_tool(b, s);
@@ -240,10 +231,7 @@ void ProgramReader::resolve(Block& b) {
   // The effective state of the block: a mirroring frame swaps G2/G3 and G41/G42 (NC-FRAME-3).
   ModalState eff = s;
   {
-    PlaneAxes pa = plane_axes(s.plane);
-    bool mirrored = (frame_.factor[static_cast<std::size_t>(pa.abscissa)].sign() < 0) !=
-                    (frame_.factor[static_cast<std::size_t>(pa.ordinate)].sign() < 0);
-    if (mirrored) {
+    if (mirrors_plane(s.plane)) {
       if (eff.motion == Motion::kArcCw)
         eff.motion = Motion::kArcCcw;
       else if (eff.motion == Motion::kArcCcw)
@@ -278,7 +266,7 @@ void ProgramReader::resolve(Block& b) {
       unknown_[i] = true;
       continue;
     }
-    Decimal& target = a == 0 ? end.x : a == 1 ? end.y : end.z;
+    Decimal& target = coord(end, a);
     try {
       target = to_base(a, aw, target, abs);
     } catch (const std::overflow_error&) {
@@ -361,7 +349,7 @@ void ProgramReader::resolve(Block& b) {
       Point3 c = b.start;
       for (int a : {pa.abscissa, pa.ordinate}) {
         const AxisWord& cw = w.centre[static_cast<std::size_t>(a)];
-        Decimal& target = a == 0 ? c.x : a == 1 ? c.y : c.z;
+        Decimal& target = coord(c, a);
         if (!cw.present) continue;
         // I=AC() is a position; incremental I is a distance (a radius value also under DIAMON).
         bool abs = cw.mode == ValueMode::kAbsolute;

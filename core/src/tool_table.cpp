@@ -99,7 +99,7 @@ void ToolTable::load(std::istream& in, const std::string& source_name) {
 
 void OffsetTable::set(int index, int axis, Decimal value) {
   Point3& p = offsets_[index];
-  (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = value;
+  coord(p, axis) = value;
 }
 
 Point3 OffsetTable::translation(int index) const {
@@ -203,7 +203,7 @@ class OffsetLine {
         do {
           int a = axis();
           expect(',');
-          (a == 0 ? p.x : a == 1 ? p.y : p.z) = number();
+          coord(p, a) = number();
         } while (accept(','));
         expect(')');
       }

@@ -227,6 +227,7 @@ constexpr PlaneAxes plane_axes(Plane p) {
 }
 
 constexpr const Decimal& coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+constexpr Decimal& coord(Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
 // SAR sub-blocks (spec SAR-SUB-1): which movement of a smooth approach or retraction a block
 // generated from a SAR block is. Its in-plane points at the SAR point P3 (and, for SAR-END-2,

@@ -99,8 +99,10 @@ class ProgramReader {
   void apply_frame(const BlockWords& w, Plane plane);
   Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
   Decimal length(const Decimal& v) const;  // the unit of a programmed length
-  Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute) const;
-  Point3 offset_difference() const;  // the selected settable offset relative to the first
+  Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
+                      bool distance = false) const;
+  Point3 offset_difference() const;
+  bool mirrors_plane(Plane plane) const;  // the selected settable offset relative to the first
   void refresh_programmed();         // programmed_ from position_ after a frame or offset change
   void update_programmed(const BlockWords& w, bool absolute_mode);
   void set_pole(const BlockWords& w, Plane plane);
