@@ -1,0 +1,315 @@
+// The lexer of one NC line (NC-LEX-*, NC-WORD-*): scanning primitives here, the words in
+// words.cpp, G codes in words_g_codes.cpp, system variables in words_system_variables.cpp.
+// Every rejected input names its column and what is wrong (NC-ERR-1/3).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string>
+#include <string_view>
+
+#include "cutcom/reader.hpp"
+#include "nc_vocabulary.hpp"
+
+namespace cutcom::lexer {
+
+inline bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+inline bool is_name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
+inline char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+
+// Modal groups of the G codes kept as actions or state, for "two of one group" (NC-LEX-3).
+enum GGroup : unsigned {
+  kGroupDwell = 1u << 0,        // group 2, non-modal: G4 G74 G75
+  kGroupExactStop = 1u << 1,    // group 11: G9
+  kGroupPathMode = 1u << 2,     // group 10: G60 G64 G641…G645
+  kGroupStopWindow = 1u << 3,   // group 12: G601 G602 G603
+  kGroupUnits = 1u << 4,        // group 13: G70 G71 G700 G710
+  kGroupFeedType = 1u << 5,     // group 15: G93 G94 G95 G96 G97 G961 G971
+  kGroupOffset = 1u << 6,       // group 8: G500 G54…G57 G505…G599
+  kGroupSuppression = 1u << 7,  // group 9: G53 G153
+};
+
+class WordLexer {
+ public:
+  WordLexer(std::string_view text, int line, BlockWords& out) : s_(text), line_(line), out_(out) {}
+
+  void run() {
+    out_ = BlockWords{};
+    out_.line = line_;
+    skip_space();
+    if (peek() == '%') return;  // NC-WORD-1: file header %_N_…_MPF / %: not a block
+    block_start();
+    while (true) {
+      skip_space();
+      if (at_end()) return;
+      if (peek() == ';') return;  // NC-LEX-2: comment to end of line
+      if (peek() == '$') {
+        system_variable();
+      } else {
+        if (!is_letter(peek())) fail(fmt::format("unexpected character '{}'", peek()));
+        word();
+      }
+      ++out_.word_count;
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what, std::size_t at) const {
+    throw InputError(line_, static_cast<int>(at) + 1, what);
+  }
+  [[noreturn]] void fail(const std::string& what) const { fail(what, i_); }
+
+  bool at_end() const { return i_ >= s_.size(); }
+  char peek(std::size_t ahead = 0) const { return i_ + ahead >= s_.size() ? '\0' : s_[i_ + ahead]; }
+  void skip_space() {
+    while (!at_end() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
+  }
+
+  // NC-WORD-2: block skip "/" or "/n" (skip levels off: the block runs), main block ":n",
+  // and a jump label "NAME:" (nothing jumps to it without control flow; it is passed over).
+  void block_start() {
+    if (peek() == '/') {
+      ++i_;
+      if (is_digit(peek())) ++i_;
+      skip_space();
+    }
+    if (peek() == ':' && is_digit(peek(1))) {
+      std::size_t at = i_;
+      ++i_;
+      out_.number = integer("main block number");
+      if (*out_.number < 0) fail("block number must not be negative", at);
+      ++out_.word_count;
+      return;
+    }
+    std::size_t j = i_;
+    while (j < s_.size() && is_name_char(s_[j])) ++j;
+    if (j > i_ + 1 && j < s_.size() && s_[j] == ':' && is_letter(s_[i_]) && (j + 1 >= s_.size() || s_[j + 1] != '=')) {
+      i_ = j + 1;
+    }
+  }
+
+  std::string letters() {
+    std::string n;
+    while (!at_end() && is_letter(s_[i_])) n.push_back(upper(s_[i_++]));
+    return n;
+  }
+  // The rest of a multi-letter name: letters, digits and '_' (CYCLE832, GROUP_BEGIN, R_T).
+  void name_tail(std::string& n) {
+    while (!at_end() && is_name_char(s_[i_])) n.push_back(upper(s_[i_++]));
+  }
+
+  // A decimal literal [+-]digits[.digits]; must end at a word boundary.
+  Decimal number(const std::string& what) {
+    std::size_t start = i_;
+    if (peek() == '+' || peek() == '-') ++i_;
+    while (!at_end() && (is_digit(peek()) || peek() == '.')) ++i_;
+    std::string_view text = s_.substr(start, i_ - start);
+    Decimal::ParseResult r = Decimal::parse(text);
+    if (!r.value) {
+      if (text.empty() || text == "+" || text == "-") {
+        if (is_letter(peek()) || peek() == '$' || peek() == '(')
+          fail(fmt::format("{} needs a number: expressions and variables ('{}') are not supported yet", what,
+                           rest_of_word()),
+               start);
+        fail(fmt::format("{} needs a number", what), start);
+      }
+      switch (r.error) {
+        case Decimal::ParseError::kTooManyDecimals:
+          fail(fmt::format("{}: '{}' has more than {} decimal places", what, text, Decimal::kFractionDigits), start);
+        case Decimal::ParseError::kOutOfRange:
+          fail(fmt::format("{}: '{}' is out of range (magnitude above 10^12)", what, text), start);
+        case Decimal::ParseError::kSyntax:
+          fail(fmt::format("{}: '{}' is not a number", what, text), start);
+      }
+    }
+    if (!at_end() && (is_digit(peek()) || peek() == '.' || peek() == '_'))
+      fail(fmt::format("{}: malformed number", what));
+    if (!at_end() && (peek() == '+' || peek() == '-' || peek() == '*' || peek() == '/'))
+      fail(fmt::format("{}: expressions are not supported yet", what));
+    return *r.value;
+  }
+  std::string rest_of_word() const {
+    std::size_t j = i_;
+    while (j < s_.size() && (is_name_char(s_[j]) || s_[j] == '$')) ++j;
+    return std::string(s_.substr(i_, std::max<std::size_t>(j - i_, 1)));
+  }
+
+  std::int64_t integer(const std::string& what) {
+    std::size_t start = i_;
+    Decimal d = number(what);
+    auto v = d.to_integer();
+    if (!v) fail(fmt::format("{} needs a whole number, not '{}'", what, d.to_string()), start);
+    return *v;
+  }
+
+  // An unsigned whole number written with digits only (indices of system variables).
+  std::int64_t digits(const std::string& what) {
+    std::size_t start = i_;
+    std::int64_t v = 0;
+    while (!at_end() && is_digit(peek())) {
+      v = v * 10 + (s_[i_++] - '0');
+      if (v > 1'000'000'000) fail(fmt::format("{} is out of range", what), start);
+    }
+    if (i_ == start) fail(fmt::format("{} expected", what));
+    return v;
+  }
+
+  bool equals() {
+    skip_space();
+    if (peek() != '=' || peek(1) == '=') return false;
+    ++i_;
+    skip_space();
+    return true;
+  }
+
+  // AC(v), IC(v), PM(v), PR(v) wrappers after '='.
+  bool wrapper(std::string_view fn) {
+    if (s_.size() - i_ < fn.size() + 1) return false;
+    for (std::size_t k = 0; k < fn.size(); ++k)
+      if (upper(s_[i_ + k]) != fn[k]) return false;
+    std::size_t j = i_ + fn.size();
+    while (j < s_.size() && s_[j] == ' ') ++j;
+    if (j >= s_.size() || s_[j] != '(') return false;
+    i_ = j + 1;
+    return true;
+  }
+  void close_paren(const std::string& what) {
+    skip_space();
+    if (peek() != ')') fail(fmt::format("{}: ')' expected", what));
+    ++i_;
+  }
+
+  template <class T>
+  void set_once(Opt<T>& slot, T value, const std::string& what, std::size_t at) {
+    if (slot) fail(fmt::format("{} programmed twice in one block", what), at);
+    slot = value;
+  }
+
+  // Value with optional AC()/IC() (axes, centre, DISCL, DISRP).
+  void positional(AxisWord& slot, const std::string& what, std::size_t at, bool allow_ic, bool need_eq) {
+    if (slot.present) fail(fmt::format("{} programmed twice in one block", what), at);
+    AxisWord w;
+    w.present = true;
+    bool eq = equals();
+    if (need_eq && !eq) fail(fmt::format("{} needs '='", what));
+    if (eq && wrapper("AC")) {
+      skip_space();
+      w.value = number(what);
+      w.mode = ValueMode::kAbsolute;
+      close_paren(what);
+    } else if (eq && wrapper("IC")) {
+      if (!allow_ic) fail(fmt::format("{}=IC(...) is not allowed", what));
+      skip_space();
+      w.value = number(what);
+      w.mode = ValueMode::kIncremental;
+      close_paren(what);
+    } else {
+      w.value = number(what);
+    }
+    slot = w;
+  }
+
+  Decimal plain_value(const std::string& what, bool need_eq) {
+    bool eq = equals();
+    if (need_eq && !eq) fail(fmt::format("{} needs '=' (write {}=...)", what, what));
+    return number(what);
+  }
+
+  // --- actions (NC-WORD-*) ----------------------------------------------------------------------
+  void add_action(AuxFunction a, std::size_t at) {
+    if (out_.aux_count == BlockWords::kMaxAux)
+      fail(fmt::format("more than {} actions (M, H, S, G4, MSG, …) in one block", BlockWords::kMaxAux), at);
+    out_.aux[static_cast<std::size_t>(out_.aux_count++)] = std::move(a);
+  }
+  void add_text_action(std::string text, std::size_t at) {
+    AuxFunction a;
+    a.address = 0;
+    a.text = std::move(text);
+    add_action(std::move(a), at);
+  }
+  std::string written(std::size_t from) const { return std::string(s_.substr(from, i_ - from)); }
+
+  // A value of an action word: a number, or NAME(number) such as DC(90) or ACP(0).
+  void action_value(const std::string& what) {
+    skip_space();
+    if (is_letter(peek())) {
+      std::size_t at = i_;
+      std::string fn = letters();
+      if (!is_action_value_wrapper(fn))
+        fail(fmt::format("{} needs a number: expressions and variables ('{}') are not supported yet", what, fn), at);
+      skip_space();
+      if (peek() != '(') fail(fmt::format("{}: '(' expected after {}", what, fn));
+      ++i_;
+      skip_space();
+      number(what);
+      close_paren(what);
+      return;
+    }
+    number(what);
+  }
+
+  // The balanced "(…)" after a call-form word, strings included; returns nothing, checks it closes.
+  void balanced_arguments(const std::string& what, std::size_t at) {
+    skip_space();
+    if (peek() != '(') fail(fmt::format("{} needs its arguments in '(…)'", what));
+    int depth = 0;
+    bool in_string = false;
+    for (; !at_end(); ++i_) {
+      char c = s_[i_];
+      if (in_string) {
+        if (c == '"') in_string = false;
+        continue;
+      }
+      if (c == '"') in_string = true;
+      if (c == ';') break;
+      if (c == '(') ++depth;
+      if (c == ')' && --depth == 0) {
+        ++i_;
+        return;
+      }
+    }
+    fail(fmt::format("{}: ')' expected at the end of its arguments", what), at);
+  }
+
+  void g_group(unsigned group, const char* name, std::size_t at) {
+    if (groups_ & group) fail(fmt::format("two G codes of the {} group in one block", name), at);
+    groups_ |= group;
+  }
+
+  void g_code(std::size_t at);
+  // M and H (NC-LEX-5); M1=3 style addresses with a spindle or channel number are kept as written.
+  void aux(char address, std::size_t at);
+  // After a letter: digits, blanks and '=' (M1=3, S1=1000): an address with an extension.
+  bool extended_address_follows() const;
+  // S (NC-WORD-3): spindle speed, or with G4 the dwell in revolutions.
+  void spindle(std::size_t at);
+  void keyword_value(const std::string& n, std::size_t at);
+  // RND= CHF= CHR= RNDM= FRC= FRCM=: a length or feed, not negative.
+  void contour_value(const std::string& n, std::size_t at);
+  // Multi-letter words other than the compensation parameters.
+  void named_word(const std::string& n, std::size_t at);
+  void word();
+  // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
+  void tool(std::size_t at);
+  // System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
+  void system_variable();
+  void index_open(const std::string& what);
+  void index_close();
+  void tool_edge_data(int p, std::size_t at);
+  // $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).
+  void tool_name_data(std::size_t at);
+  // $TC_TP1, $TC_TP3 … $TC_TP11 (duplo number, size, place type, …): no effect on the path.
+  void ignored_tool_parameter(const std::string& what);
+
+  std::string_view s_;
+  std::size_t i_ = 0;
+  int line_;
+  BlockWords& out_;
+  unsigned groups_ = 0;
+};
+
+}  // namespace cutcom::lexer

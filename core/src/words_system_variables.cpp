@@ -1,0 +1,99 @@
+// NC-LEX-6, TOOL-NAME-1: tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME" in a block.
+#include "word_lexer.hpp"
+
+namespace cutcom::lexer {
+
+// System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
+void WordLexer::system_variable() {
+  std::size_t at = i_;
+  ++i_;
+  std::string n = letters();
+  name_tail(n);
+  std::string full = "$" + n;
+  std::size_t dp = n.rfind("TC_DP", 0) == 0 ? 5 : 0;
+  if (dp) {
+    std::string num = n.substr(5);
+    int p = 0;
+    bool ok = !num.empty() && num.size() <= 2 && std::all_of(num.begin(), num.end(), is_digit);
+    if (ok) p = std::stoi(num);
+    if (!ok || p < 1 || p > 25) fail(fmt::format("'{}' is not a tool edge parameter ($TC_DP1 … $TC_DP25)", full), at);
+    return tool_edge_data(p, at);
+  }
+  if (n == "TC_TP2") return tool_name_data(at);
+  if (n == "TC_TP1" || n == "TC_TP3" || n == "TC_TP4" || n == "TC_TP5" || n == "TC_TP6" || n == "TC_TP7" ||
+      n == "TC_TP8" || n == "TC_TP9" || n == "TC_TP10" || n == "TC_TP11") {
+    return ignored_tool_parameter(full);
+  }
+  fail(fmt::format("system variable '{}' is SINUMERIK NC that cutcom does not simulate (supported: $TC_DP1 … "
+                   "$TC_DP25, $TC_TP1 … $TC_TP11)",
+                   full),
+       at);
+}
+
+void WordLexer::index_open(const std::string& what) {
+  skip_space();
+  if (peek() != '[') fail(fmt::format("'[' expected after {}", what));
+  ++i_;
+  skip_space();
+}
+
+void WordLexer::index_close() {
+  skip_space();
+  if (peek() != ']') fail("']' expected");
+  ++i_;
+}
+
+void WordLexer::tool_edge_data(int p, std::size_t at) {
+  std::string what = fmt::format("$TC_DP{}", p);
+  index_open(what);
+  std::int64_t t = digits("tool number");
+  skip_space();
+  if (peek() != ',') fail(fmt::format("',' expected between tool and edge number (write {}[t,d])", what));
+  ++i_;
+  skip_space();
+  std::int64_t d = digits("edge number");
+  index_close();
+  if (!equals()) fail("'=' expected");
+  Decimal v = number(what + " value");
+  if (t < 1 || d < 1) fail("tool and edge numbers start at 1", at);
+  if (d > 32000) fail("edge numbers go up to 32000", at);
+  if (out_.tool_data_count == BlockWords::kMaxToolData) fail("too many tool data assignments in one block", at);
+  out_.tool_data[static_cast<std::size_t>(out_.tool_data_count++)] = {p, static_cast<int>(t), static_cast<int>(d), v};
+}
+
+// $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).
+void WordLexer::tool_name_data(std::size_t at) {
+  index_open("$TC_TP2");
+  std::int64_t t = digits("tool number");
+  index_close();
+  if (!equals()) fail("'=' expected");
+  if (peek() != '"') fail("$TC_TP2 needs a name in quotes: $TC_TP2[t]=\"NAME\"");
+  ++i_;
+  std::size_t start = i_;
+  while (!at_end() && peek() != '"') ++i_;
+  if (at_end()) fail("closing '\"' expected");
+  std::string name(s_.substr(start, i_ - start));
+  ++i_;
+  if (t < 1) fail("tool numbers start at 1", at);
+  if (name.empty()) fail("the tool name is empty", at);
+  if (out_.tool_names_count == BlockWords::kMaxToolData) fail("too many tool names in one block", at);
+  out_.tool_names[static_cast<std::size_t>(out_.tool_names_count++)] = {static_cast<int>(t), name};
+}
+
+// $TC_TP1, $TC_TP3 … $TC_TP11 (duplo number, size, place type, …): no effect on the path.
+void WordLexer::ignored_tool_parameter(const std::string& what) {
+  index_open(what);
+  digits("tool number");
+  index_close();
+  if (!equals()) fail("'=' expected");
+  if (peek() == '"') {
+    ++i_;
+    while (!at_end() && peek() != '"') ++i_;
+    if (at_end()) fail("closing '\"' expected");
+    ++i_;
+    return;
+  }
+  number(what + " value");
+}
+
+}  // namespace cutcom::lexer
