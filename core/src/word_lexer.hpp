@@ -183,6 +183,17 @@ class WordLexer {
     ++i_;
   }
 
+  // A string in double quotes at the cursor, without them; `what` names it in the error.
+  std::string quoted(const std::string& what) {
+    ++i_;  // the opening quote
+    std::size_t start = i_;
+    while (!at_end() && peek() != '"') ++i_;
+    if (at_end()) fail(fmt::format("{}: closing '\"' expected", what));
+    std::string text(s_.substr(start, i_ - start));
+    ++i_;
+    return text;
+  }
+
   template <class T>
   void set_once(Opt<T>& slot, T value, const std::string& what, std::size_t at) {
     if (slot) fail(fmt::format("{} programmed twice in one block", what), at);

@@ -270,12 +270,7 @@ void WordLexer::tool(std::size_t at) {
   }
   bool eq = equals();
   if (eq && peek() == '"') {
-    ++i_;
-    std::size_t start = i_;
-    while (!at_end() && peek() != '"') ++i_;
-    if (at_end()) fail("T=\"…\": closing '\"' expected");
-    std::string name(s_.substr(start, i_ - start));
-    ++i_;
+    std::string name = quoted("T=\"…\"");
     if (name.empty()) fail("T=\"\": the tool name is empty", at);
     if (out_.tool || out_.tool_name) fail("T programmed twice in one block", at);
     out_.tool_name = name;

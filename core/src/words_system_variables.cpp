@@ -68,12 +68,7 @@ void WordLexer::tool_name_data(std::size_t at) {
   index_close();
   if (!equals()) fail("'=' expected");
   if (peek() != '"') fail("$TC_TP2 needs a name in quotes: $TC_TP2[t]=\"NAME\"");
-  ++i_;
-  std::size_t start = i_;
-  while (!at_end() && peek() != '"') ++i_;
-  if (at_end()) fail("closing '\"' expected");
-  std::string name(s_.substr(start, i_ - start));
-  ++i_;
+  std::string name = quoted("$TC_TP2");
   if (t < 1) fail("tool numbers start at 1", at);
   if (name.empty()) fail("the tool name is empty", at);
   if (out_.tool_names_count == BlockWords::kMaxToolData) fail("too many tool names in one block", at);
@@ -87,10 +82,7 @@ void WordLexer::ignored_tool_parameter(const std::string& what) {
   index_close();
   if (!equals()) fail("'=' expected");
   if (peek() == '"') {
-    ++i_;
-    while (!at_end() && peek() != '"') ++i_;
-    if (at_end()) fail("closing '\"' expected");
-    ++i_;
+    quoted(what);
     return;
   }
   number(what + " value");
