@@ -102,12 +102,45 @@ TEST(ContourDefinitions, RoundingBetweenALineAndACircle) {
 }
 
 // covers: NC-CONTOUR-1
+TEST(ContourDefinitions, TooLargeIsReducedToTheLargestThatFits) {
+  // Line (0,0)->(0,2), then X20: a right angle, tangent length = r, so RND=5 becomes r = 2 and
+  // touches N20 at its start: N20 keeps no motion in the plane, the rounding runs (0,0)->(2,2).
+  auto b = read("G0 X0 Y0\nN20 G1 Y2 RND=5 F100\nN30 X20\n");
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_FALSE(b[1].moves_in_plane());
+  EXPECT_NE(b[1].notice.find("reduced to 2 mm"), std::string::npos) << b[1].notice;
+  expect_point(*b[2].centre, "2", "0", "reduced rounding centre");
+  expect_point(b[2].end, "2", "2", "reduced rounding end");
+  // CHR=20 on N40 (8 long) into a line of 20: legs of 8, from (20,2) to (12,10).
+  b = read("G0 X20 Y2\nN40 G1 Y10 CHR=20 F100\nN50 X0\n");
+  ASSERT_EQ(b.size(), 4u);
+  expect_point(b[2].start, "20", "2", "reduced chamfer start");
+  expect_point(b[2].end, "12", "10", "reduced chamfer end");
+  // Line (0,-2)->(0,0), then cw circle about (0,-10), R 10: a right turn. The rounding of radius r
+  // has its centre at (r, y) with r² + (y+10)² = (10-r)²; its foot on the line must stay at y >= -2,
+  // so r = (100 - 64) / 20 = 1.8 at y = -2, and it meets the circle at C + 10/8.2·(1.8, 8).
+  b = read("G0 X0 Y-2\nN20 G1 Y0 RND=5 F100\nN30 G2 X10 Y-10 I0 J-10\n");
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_NE(b[1].notice.find("reduced to 1.8 mm"), std::string::npos) << b[1].notice;
+  expect_point(*b[2].centre, "1.8", "-2", "rounding centre");
+  expect_point(b[2].end, "2.195121951", "-0.243902439", "rounding meets the circle");
+  EXPECT_EQ(b[2].state.motion, Motion::kArcCw);
+  // Under compensation the emptied N20 is a block without plane motion (TRC-CORNER-7 counts it)
+  // and both engines run the reduced rounding alike: offset by 0.5 it runs (-0.5,0)->(2,2.5).
+  Both r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.5\nG0 X-10 Y-5\nT1 D1\nG41 G1 X0 Y0 F100\nN20 Y2 RND=5\n"
+      "N30 X20\nG40 G1 X30 Y-5\n");
+  ASSERT_GE(r.ref.path.size(), 3u);
+  EXPECT_NEAR(r.ref.path[2].start.x, -0.5, 1e-12);
+  EXPECT_NEAR(r.ref.path[2].end.y, 2.5, 1e-12);
+  expect_same_path(r.ref, r.fast);
+}
+
+// covers: NC-CONTOUR-1
 TEST(ContourDefinitions, BoundaryRulesAndWhatIsNotInserted) {
   // Tangent corner (line along +X into a cw circle about (0,-10)): nothing inserted.
   auto b = read("G0 X-20 Y0\nG1 X0 RND=2 F100\nG2 X10 Y-10 I0 J-10\n");
   EXPECT_EQ(b.size(), 3u);
-  // A rounding that does not fit on the shorter element: a reading error naming the block.
-  EXPECT_NE(error_of("G0 X0 Y0\nN20 G1 Y2 RND=5 F100\nN30 X20\n").find("does not fit"), std::string::npos);
   // A reversal: error.
   EXPECT_NE(error_of("G0 X0 Y0\nG1 Y20 RND=1 F100\nY0\n").find("reverses"), std::string::npos);
   // Three blocks without plane motion between the elements: still rounded, they run after it.

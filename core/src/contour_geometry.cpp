@@ -166,6 +166,72 @@ int intersect(const Carrier& c1, const Carrier& c2, IPoint out[2]) {
 
 }  // namespace
 
+namespace {
+
+// The rounding of radius r at the corner (p the corner point, s its turn), without the fit check.
+CornerCut rounding_at(const Element& e1, const Element& e2, int s, const IPoint& p, const Interval& r) {
+  Carrier c1 = offset(e1, s, r), c2 = offset(e2, s, r);
+  IPoint cand[2];
+  int n = intersect(c1, c2, cand);
+  if (n == 0) throw ContourError{"no circle of this radius touches both elements"};
+  IPoint f = cand[0];
+  if (n == 2 && (dot(cand[1] - p, cand[1] - p) - dot(cand[0] - p, cand[0] - p)).sign() < 0) f = cand[1];
+  auto foot = [&](const Element& e) {
+    if (!e.arc) {
+      IPoint t = e.end - e.start;
+      return e.start + (dot(f - e.start, t) / dot(t, t)) * t;
+    }
+    IPoint cf = f - e.centre;
+    return e.centre + (e.radius / norm(cf)) * cf;
+  };
+  CornerCut cut;
+  cut.t1 = foot(e1), cut.t2 = foot(e2);
+  cut.arc = true, cut.centre = f, cut.sense = s;
+  cut.value = r;
+  return cut;
+}
+
+// The unit normal of `e` at its point `x`, towards side s (+1 left of the direction of travel).
+IPoint normal_at(const Element& e, const IPoint& x, int s) {
+  if (!e.arc) {
+    IPoint t = e.end - e.start;
+    return (Interval::integer(s) / norm(t)) * perp(t);
+  }
+  return (Interval::integer(-s * e.sense) / e.radius) * (x - e.centre);
+}
+
+// The radius of the rounding that touches `pinned` exactly at its point x and touches `other`:
+// the centre x + r·n lies on other's carrier offset by r (linear in r). nullopt: no such radius.
+std::optional<Interval> radius_touching_at(const Element& pinned, const IPoint& x, const Element& other, int s) {
+  IPoint n = normal_at(pinned, x, s);
+  Interval num, den;
+  if (!other.arc) {  // signed distance of the centre from the line equals s·r
+    IPoint d = other.end - other.start;
+    num = -cross(x - other.start, d);
+    den = cross(n, d) + Interval::integer(s) * norm(d);
+  } else {  // |x + r n - C| = R - s·sense·r
+    IPoint w = x - other.centre;
+    num = other.radius * other.radius - dot(w, w);
+    den = Interval::integer(2) * (dot(n, w) + Interval::integer(s * other.sense) * other.radius);
+  }
+  if (den.sign() == 0) return std::nullopt;
+  Interval r = num / den;
+  if (r.sign() <= 0) return std::nullopt;
+  return r;
+}
+
+// The longest chamfer leg that `e` offers from its corner end to its far end (`far`): a line's
+// length, a circle's chord to its far end, or its diameter where the circle turns beyond π.
+Interval longest_leg(const Element& e, const IPoint& corner, const IPoint& far) {
+  if (!e.arc) return norm(far - corner);
+  if (!e.full && (sweep(e.centre, e.start, e.end, e.sense) - Interval::pi()).sign() <= 0) return norm(far - corner);
+  return Interval::integer(2) * e.radius;
+}
+
+bool fits(const Element& e1, const Element& e2, const CornerCut& cut) { return within(e1, cut.t1) && within(e2, cut.t2); }
+
+}  // namespace
+
 std::optional<CornerCut> cut_corner(const Element& e1, const Element& e2, CornerKind kind, const Interval& value) {
   IPoint p = e1.end;
   IPoint t1 = e1.tangent_at_end(), t2 = e2.tangent_at_start();
@@ -174,35 +240,40 @@ std::optional<CornerCut> cut_corner(const Element& e1, const Element& e2, Corner
     if (dot(t1, t2).sign() > 0) return std::nullopt;  // tangent: no corner
     throw ContourError{"the contour reverses at the corner"};
   }
-  CornerCut cut;
   if (kind == CornerKind::kRounding) {
-    Carrier c1 = offset(e1, s, value), c2 = offset(e2, s, value);
-    IPoint cand[2];
-    int n = intersect(c1, c2, cand);
-    if (n == 0) throw ContourError{"no circle of this radius touches both elements"};
-    IPoint f = cand[0];
-    if (n == 2 && (dot(cand[1] - p, cand[1] - p) - dot(cand[0] - p, cand[0] - p)).sign() < 0) f = cand[1];
-    auto foot = [&](const Element& e) {
-      if (!e.arc) {
-        IPoint t = e.end - e.start;
-        return e.start + (dot(f - e.start, t) / dot(t, t)) * t;
-      }
-      IPoint cf = f - e.centre;
-      return e.centre + (e.radius / norm(cf)) * cf;
-    };
-    cut.t1 = foot(e1), cut.t2 = foot(e2);
-    cut.arc = true, cut.centre = f, cut.sense = s;
-  } else {
-    Interval d = value;
-    if (kind == CornerKind::kChamferLength) {  // CHF: the chamfer's own length; legs d = c / (2 cos(θ/2))
-      Interval cos_t = dot(t1, t2) / (norm(t1) * norm(t2));
-      Interval cos_half = sqrt((Interval::integer(1) + cos_t) / Interval::integer(2));
-      d = value / (Interval::integer(2) * cos_half);
+    try {
+      CornerCut cut = rounding_at(e1, e2, s, p, value);
+      if (fits(e1, e2, cut)) return cut;
+    } catch (const ContourError&) {  // too large for a circle of the corner: reduced below
     }
-    cut.t1 = at_distance(e1, p, d, true);
-    cut.t2 = at_distance(e2, p, d, false);
+    // NC-CONTOUR-1: the control reduces a rounding that does not fit; cutcom takes the largest
+    // that fits, touching the shorter element at its far end.
+    std::optional<Interval> best;
+    for (auto r : {radius_touching_at(e1, e1.start, e2, s), radius_touching_at(e2, e2.end, e1, s)})
+      if (r && (*r - value).sign() < 0 && (!best || (*r - *best).sign() < 0)) best = r;
+    if (!best) throw ContourError{"does not fit on the elements of the corner"};
+    CornerCut cut = rounding_at(e1, e2, s, p, *best);
+    if (!fits(e1, e2, cut)) throw ContourError{"does not fit on the elements of the corner"};
+    cut.reduced = true;
+    return cut;
   }
-  if (!within(e1, cut.t1) || !within(e2, cut.t2)) throw ContourError{"does not fit on the elements of the corner"};
+  // CHF: the chamfer's own length c; its legs d = c / (2 cos(θ/2)).
+  Interval cos_half;
+  Interval d = value;
+  if (kind == CornerKind::kChamferLength) {
+    Interval cos_t = dot(t1, t2) / (norm(t1) * norm(t2));
+    cos_half = sqrt((Interval::integer(1) + cos_t) / Interval::integer(2));
+    d = value / (Interval::integer(2) * cos_half);
+  }
+  // NC-CONTOUR-1: legs longer than an element are reduced to the longest that fits.
+  Interval longest = longest_leg(e1, p, e1.start), other = longest_leg(e2, p, e2.end);
+  if ((other - longest).sign() < 0) longest = other;
+  CornerCut cut;
+  if ((d - longest).sign() > 0) d = longest, cut.reduced = true;
+  cut.t1 = at_distance(e1, p, d, true);
+  cut.t2 = at_distance(e2, p, d, false);
+  cut.value = kind == CornerKind::kChamferLength ? Interval::integer(2) * d * cos_half : d;
+  if (!fits(e1, e2, cut)) throw ContourError{"does not fit on the elements of the corner"};
   return cut;
 }
 

@@ -50,10 +50,12 @@ struct CornerCut {
   bool arc = false;
   IPoint centre;
   int sense = 1;
+  Interval value;        // the radius, leg (CHR) or length (CHF) inserted
+  bool reduced = false;  // smaller than programmed: the programmed one does not fit
 };
 enum class CornerKind { kRounding, kChamferLength /*CHF*/, kChamferLeg /*CHR*/ };
-// nullopt: the elements meet tangentially (nothing to insert). Throws ContourError if the cut
-// does not fit on both elements or the contour reverses.
+// nullopt: the elements meet tangentially (nothing to insert). A value too large for the elements
+// is reduced to the largest that fits. Throws ContourError if the contour reverses or no cut fits.
 std::optional<CornerCut> cut_corner(const Element& e1, const Element& e2, CornerKind kind, const Interval& value);
 
 // The sweep from `from` to `to` on a circle about `c` in direction `sense`, in [0, 2π).

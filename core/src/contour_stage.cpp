@@ -152,26 +152,31 @@ void ProgramReader::finish_pending(Block* next) {
     if (fa != fo && fa != -fo) fail(p.words.line, "a rounding or chamfer under a frame that scales the plane axes "
                                                   "differently is not simulated");
     value = value.times(fa.sign() < 0 ? -fa : fa);  // a uniform scale scales the rounding too
-    std::optional<std::array<Decimal, 12>> cut;
+    std::optional<std::array<Decimal, 13>> cut;
     try {
       // [0..1] new end of p, [2..3] new start of next, [4..5] the rounding's centre, [6..9] the
-      // circles' centres, [10] 1 if there is a corner to cut (0: tangent), [11] its turn (±1).
-      std::array<Decimal, 12> v = grid::to_grid<12>([&] {
+      // circles' centres, [10] 1 if there is a corner to cut (0: tangent), [11] its turn (±1),
+      // [12] the value inserted where the programmed one was reduced, else 0.
+      std::array<Decimal, 13> v = grid::to_grid<13>([&] {
         contour::Element e1 = contour::element_of(p), e2 = contour::element_of(*next);
         std::optional<contour::CornerCut> c = contour::cut_corner(e1, e2, kind, Interval(value));
-        if (!c) return std::array<Interval, 12>{};
-        return std::array<Interval, 12>{c->t1.a,     c->t1.o,     c->t2.a,     c->t2.o,
+        if (!c) return std::array<Interval, 13>{};
+        return std::array<Interval, 13>{c->t1.a,     c->t1.o,     c->t2.a,     c->t2.o,
                                         c->centre.a, c->centre.o, e1.centre.a, e1.centre.o,
-                                        e2.centre.a, e2.centre.o, Interval::integer(1), Interval::integer(c->sense)};
+                                        e2.centre.a, e2.centre.o, Interval::integer(1), Interval::integer(c->sense),
+                                        c->reduced ? c->value : Interval()};
       });
       if (v[10] == Decimal::from_int(1)) cut = v;
     } catch (const contour::ContourError& err) {
-      fail(p.words.line, fmt::format("{} of {}/{}: {} (the control shortens it; cutcom does not simulate that)",
-                                     rounding ? "the rounding" : "the chamfer", name_of(p),
+      fail(p.words.line, fmt::format("{} of {}/{}: {}", rounding ? "the rounding" : "the chamfer", name_of(p),
                                      name_of(*next), err.what));
     } catch (const std::domain_error&) {
       fail(p.words.line, "the rounding or chamfer has no solution at this corner");
     }
+    if (cut && (*cut)[12].sign() > 0)
+      note(p, "NC-CONTOUR-1",
+           fmt::format("{} of {}/{} reduced to {} mm: the programmed one does not fit on the elements",
+                       rounding ? "rounding" : "chamfer", name_of(p), name_of(*next), (*cut)[12].to_string()));
     if (cut) {
       const auto& v = *cut;
       auto centre_of = [&](const Block& b, Decimal a, Decimal o) {
@@ -179,12 +184,27 @@ void ProgramReader::finish_pending(Block* next) {
         set_plane(c, ax, a, o);
         return c;
       };
+      auto closed = [&](const Block& b) {
+        return coord(b.start, ax.abscissa) == coord(b.end, ax.abscissa) &&
+               coord(b.start, ax.ordinate) == coord(b.end, ax.ordinate);
+      };
+      // A reduced cut may take a whole element: what is left is a block without motion in the
+      // plane, not a full circle.
+      auto emptied = [&](Block& b) {
+        if (!b.is_arc() || !closed(b)) return;
+        b.circle = false, b.centre.reset(), b.words.cr.reset();
+        b.state.motion = Motion::kLinear;
+      };
       if (p.is_arc()) p.centre = centre_of(p, v[6], v[7]), p.words.cr.reset();
       set_plane(p.end, ax, v[0], v[1]);
-      if (next->is_arc() && !(coord(next->start, ax.abscissa) == coord(next->end, ax.abscissa) &&
-                              coord(next->start, ax.ordinate) == coord(next->end, ax.ordinate)))
+      emptied(p);
+      if (next->is_arc() && !closed(*next)) {
         next->centre = centre_of(*next, v[8], v[9]), next->words.cr.reset();
-      set_plane(next->start, ax, v[2], v[3]);
+        set_plane(next->start, ax, v[2], v[3]);
+        emptied(*next);
+      } else {
+        set_plane(next->start, ax, v[2], v[3]);
+      }
       for (Block& m : between_) set_plane(m.start, ax, v[2], v[3]), set_plane(m.end, ax, v[2], v[3]);
       Block ins;
       ins.words.line = p.words.line;
