@@ -125,13 +125,15 @@ bool ProgramReader::mirrors_plane(Plane plane) const {
 }
 
 // The selected settable offset relative to the first one (NC-OFFSET-1).
-Point3 ProgramReader::offset_difference() const {
+void ProgramReader::select_offset(int index) {
+  offset_index_ = index;
+  offsets_changed_ = false;
   Point3 d = offsets_.translation(offset_index_);
   if (first_offset_ > 0) {
     Point3 f = offsets_.translation(first_offset_);
     d = Point3{d.x - f.x, d.y - f.y, d.z - f.z};
   }
-  return d;
+  offset_difference_ = d;
 }
 
 // NC-FRAME-4: after a frame or offset change the tool stays; its position in the new frame's

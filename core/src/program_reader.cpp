@@ -136,6 +136,7 @@ void ProgramReader::resolve(Block& b) {
   for (int k = 0; k < w.tool_data_count; ++k) tools_.assign(w.tool_data[static_cast<std::size_t>(k)]);
   for (int k = 0; k < w.tool_names_count; ++k) tools_.name(w.tool_names[static_cast<std::size_t>(k)]);
 
+  if (offsets_changed_) select_offset(offset_index_);
   b.previous = effective_;
   ModalState& s = state_;
   if (w.units) units_ = *w.units;
@@ -153,7 +154,7 @@ void ProgramReader::resolve(Block& b) {
       }
     }
     bool changed = idx != offset_index_;
-    offset_index_ = idx;
+    select_offset(idx);
     if (changed) refresh_programmed();
   }
   if (w.frame) {

@@ -16,10 +16,11 @@
 
 namespace cutcom::lexer {
 
-inline bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+// NC text is ASCII: the C locale's classes, without a call per character.
+inline bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
 inline bool is_name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
-inline char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+inline char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
 // Modal groups of the G codes kept as actions or state, for "two of one group" (NC-LEX-3).
 enum GGroup : unsigned {
@@ -38,8 +39,7 @@ class WordLexer {
   WordLexer(std::string_view text, int line, BlockWords& out) : s_(text), line_(line), out_(out) {}
 
   void run() {
-    out_ = BlockWords{};
-    out_.line = line_;
+    out_.reset(line_);
     skip_space();
     if (peek() == '%') return;  // NC-WORD-1: file header %_N_…_MPF / %: not a block
     block_start();
@@ -298,6 +298,7 @@ class WordLexer {
   bool extended_address_follows() const;
   // S (NC-WORD-3): spindle speed, or with G4 the dwell in revolutions.
   void spindle(std::size_t at);
+  void keyword(const std::string& n, std::size_t at);
   void keyword_value(const std::string& n, std::size_t at);
   // RND= CHF= CHR= RNDM= FRC= FRCM=: a length or feed, not negative.
   void contour_value(const std::string& n, std::size_t at);

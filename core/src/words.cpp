@@ -180,11 +180,8 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   fail(unknown_message(n), at);
 }
 
-void WordLexer::word() {
-  std::size_t at = i_;
-  std::string n = letters();
-  if (n.size() > 1 || peek() == '_') name_tail(n);
-  // Keywords without a value (NC-LEX-3).
+// A word of more than one letter: keywords without a value (NC-LEX-3), then those with one.
+void WordLexer::keyword(const std::string& n, std::size_t at) {
   if (n == "NORM") return set_once(out_.approach, ApproachMode::kNorm, "NORM/KONT", at);
   if (n == "KONT") return set_once(out_.approach, ApproachMode::kKont, "NORM/KONT", at);
   if (n == "KONTC") return set_once(out_.approach, ApproachMode::kKontC, "NORM/KONT", at);
@@ -196,7 +193,14 @@ void WordLexer::word() {
     out_.stopre = true;
     return;
   }
-  if (n.size() > 1) return keyword_value(n, at);
+  keyword_value(n, at);
+}
+
+void WordLexer::word() {
+  std::size_t at = i_;
+  std::string n = letters();
+  if (n.size() > 1 || peek() == '_') name_tail(n);
+  if (n.size() > 1) return keyword(n, at);
   skip_space();
   switch (n[0]) {
     case 'N': {

@@ -448,7 +448,7 @@ void Engine::State::step(const Block& b, const PlaneOverride* o) {
   if (b.moves_in_plane()) ++traversing;
   holding = b.state.collision == CollisionMode::kCdon;
   if (b.sar.move == SarMove::kNone && b.moves_in_plane()) {
-    last_contour = b, has_last_contour = true, last_contour_overridden = o != nullptr;
+    keep_last_contour(b), has_last_contour = true, last_contour_overridden = o != nullptr;
     if (o) last_contour_over = *o;
   }
   if (!(b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b))) {

@@ -206,8 +206,17 @@ struct Engine::State {
   SarSubBlocks sar_subs;  // reused: nothing allocated per SAR block
   PlaneOverride over;
   const Block* over_block = nullptr;
-  // The last programmed block moving in the plane, as run (converted only at a retraction).
+  // The last programmed block moving in the plane, as run (SAR-TANGENT-1 at a retraction): only
+  // what BlockCopy::of reads of its geometry, since a whole Block (its words and actions) or a
+  // BlockCopy per block would cost more than the reader (converted only at a retraction).
   Block last_contour;
+  void keep_last_contour(const Block& b) {
+    last_contour.words.line = b.words.line, last_contour.words.number = b.words.number;
+    last_contour.words.cr = b.words.cr;
+    last_contour.index = b.index, last_contour.state = b.state;
+    last_contour.start = b.start, last_contour.end = b.end, last_contour.centre = b.centre;
+    last_contour.circle = b.circle, last_contour.sar = b.sar, last_contour.insert = b.insert;
+  }
   PlaneOverride last_contour_over;
   bool last_contour_overridden = false;
   bool has_last_contour = false;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include "cutcom/decimal.hpp"
 
@@ -108,10 +109,8 @@ struct ContourWords {
 };
 
 // Everything one NC line programs, as written (before modal resolution).
-struct BlockWords {
-  static constexpr int kMaxAux = 16;
-  static constexpr int kMaxToolData = 4;
-
+// The words of a block other than its action lists (reset as a whole for every block).
+struct BlockWordFields {
   int line = 0;                    // 1-based source line
   int word_count = 0;              // 0: blank or comment-only line
   Opt<std::int64_t> number;        // N number
@@ -147,7 +146,6 @@ struct BlockWords {
   bool program_end = false;  // M2 / M30 (M17 / RET: end of a subprogram run on its own)
   bool dwell = false;        // G4: F and S in the block are the dwell, not feed or speed
   bool tool_change = false;  // M6 (TOOL-CHANGE-1)
-  Opt<std::string> tool_name;  // T="NAME" (TOOL-NAME-1)
   Opt<Units> units;
   Opt<int> settable_offset;  // G500 = 0, G54…G57 = 1…4, G505…G599 = 5…99 (NC-OFFSET-1)
   Opt<DiameterMode> diameter;
@@ -161,11 +159,34 @@ struct BlockWords {
   }
   ContourWords& cw_set() { return contour ? *contour : contour.emplace(); }
 
+  bool modal_call = false;      // MCALL: the cycle in `not_simulated` runs after every move
+  bool modal_call_end = false;  // MCALL alone
+
+  bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
+};
+
+// The fields are plain data, so that a block's reset is one copy of an empty block.
+static_assert(std::is_trivially_copyable_v<BlockWordFields>);
+
+struct BlockWords : BlockWordFields {
+  static constexpr int kMaxAux = 16;
+  static constexpr int kMaxToolData = 4;
+
+  // A new block: every field reset, the strings and action lists emptied in place, so that they
+  // keep their buffers (the reader's per-block cost; action entries past a count are stale).
+  void reset(int source_line) {
+    static const BlockWordFields kEmpty{};
+    static_cast<BlockWordFields&>(*this) = kEmpty;
+    line = source_line;
+    tool_name.reset();
+    not_simulated.clear();
+    aux_count = tool_data_count = tool_names_count = 0;
+  }
+
+  Opt<std::string> tool_name;  // T="NAME" (TOOL-NAME-1)
   // NC-CYCLE-1: a block that moves the tool along a path cutcom does not simulate (a standard
   // cycle, G74/G75, a G53/G153/SUPA move): what it is, as written ("CYCLE81", "SUPA").
   std::string not_simulated;
-  bool modal_call = false;      // MCALL: the cycle in `not_simulated` runs after every move
-  bool modal_call_end = false;  // MCALL alone
 
   std::array<AuxFunction, kMaxAux> aux{};
   int aux_count = 0;
@@ -173,8 +194,6 @@ struct BlockWords {
   int tool_data_count = 0;
   std::array<ToolNameAssignment, kMaxToolData> tool_names{};
   int tool_names_count = 0;
-
-  bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
 };
 
 // The modal state in force for a block (after applying its words).

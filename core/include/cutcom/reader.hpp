@@ -88,7 +88,10 @@ class ProgramReader {
   // blocks read after it start there (the engines give the in-plane position exactly).
   void set_position(const Point3& p);
   ToolTable& tools() { return tools_; }
-  OffsetTable& offsets() { return offsets_; }
+  OffsetTable& offsets() {
+    offsets_changed_ = true;  // offset_difference_ is taken again at the next block
+    return offsets_;
+  }
   const std::string& source_name() const { return source_; }
   void set_source_name(std::string name) { source_ = std::move(name); }
 
@@ -101,7 +104,9 @@ class ProgramReader {
   Decimal length(const Decimal& v) const;  // the unit of a programmed length
   Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
                       bool distance = false) const;
-  Point3 offset_difference() const;
+  // The translation of the settable offset in force relative to the first one, kept per change.
+  const Point3& offset_difference() const { return offset_difference_; }
+  void select_offset(int index);
   bool mirrors_plane(Plane plane) const;  // the selected settable offset relative to the first
   void refresh_programmed();         // programmed_ from position_ after a frame or offset change
   void update_programmed(const BlockWords& w, bool absolute_mode);
@@ -132,6 +137,8 @@ class ProgramReader {
   Units units_ = Units::kG71;
   DiameterMode diameter_ = DiameterMode::kDiamof;
   int offset_index_ = 0;         // G500
+  Point3 offset_difference_;     // of offset_index_ (select_offset)
+  bool offsets_changed_ = false;
   int first_offset_ = -1;        // the settable offset whose workpiece system the output uses
   ProgrammableFrame frame_;      // programmable frame
   Point3 programmed_;            // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
