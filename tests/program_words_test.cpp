@@ -56,6 +56,9 @@ TEST(ProgramWords, SetUpWordsAreActionsKeptAsWritten) {
   EXPECT_EQ(b[0].state.path_mode, PathMode::kG64);
   EXPECT_EQ(actions(b[1]),
             (std::vector<std::string>{"S447", "M3", "M1=4", "S1=800", "SPOS=DC(90)", "H2", "E5"}));
+  // Names are read in capitals as the control reads them; quoted text keeps its case.
+  auto lower = read("s1200 m3 g642 msg(\"Außen; pass 1\")\n");
+  EXPECT_EQ(actions(lower[0]), (std::vector<std::string>{"S1200", "M3", "G642", "MSG(\"Außen; pass 1\")"}));
   EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"MSG(\"Roughing; first pass\")",
                                                       "WORKPIECE(,\"\",,\"BOX\",0,0,-20,-80,0,0,100,100)"}));
   EXPECT_EQ(actions(b[3]).size(), 2u);

@@ -242,7 +242,17 @@ class WordLexer {
     a.text = std::move(text);
     add_action(std::move(a), at);
   }
-  std::string written(std::size_t from) const { return std::string(s_.substr(from, i_ - from)); }
+  // An action word as written, its names in capitals as the control reads them (s1200 is S1200);
+  // quoted text (MSG("…")) keeps its case.
+  std::string written(std::size_t from) const {
+    std::string w(s_.substr(from, i_ - from));
+    bool quoted = false;
+    for (char& c : w) {
+      if (c == '"') quoted = !quoted;
+      if (!quoted) c = upper(c);
+    }
+    return w;
+  }
 
   // A value of an action word: a number, or NAME(number) such as DC(90) or ACP(0).
   void action_value(const std::string& what) {
