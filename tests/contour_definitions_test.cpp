@@ -160,7 +160,7 @@ TEST(ContourDefinitions, BoundaryRulesAndWhatIsNotInserted) {
   EXPECT_NE(error_of("G1 Z5 RND=2 F100\n").find("without motion in the plane"), std::string::npos);
 }
 
-// covers: NC-CONTOUR-2
+// covers: NC-CONTOUR-2 NC-UNIT-1
 TEST(ContourDefinitions, ModalRoundingAndItsFeed) {
   // A square corner path, RNDM=2 from the first block: both corners rounded; RNDM=0 ends it.
   auto b = read("G0 X0 Y0\nG1 Y10 RNDM=2 F100 FRCM=40\nX10\nY0 RNDM=0\nX0\n");
@@ -176,6 +176,12 @@ TEST(ContourDefinitions, ModalRoundingAndItsFeed) {
   ASSERT_EQ(b.size(), 4u);
   EXPECT_EQ(b[2].state.feed, dec("25"));
   EXPECT_EQ(b[3].state.feed, dec("100"));
+  // G700: FRC and FRCM are feeds in inch/min, converted like F (NC-UNIT-1); RND a length.
+  b = read("G700 G0 X0 Y0\nG1 Y10 RND=0.1 FRC=2 F10\nX10 RND=0.1 FRCM=1\nY0\n");
+  ASSERT_EQ(b.size(), 6u);
+  EXPECT_EQ(b[2].state.feed, dec("50.8"));
+  EXPECT_EQ(b[4].state.feed, dec("25.4"));
+  EXPECT_EQ(b[5].state.feed, dec("254"));
   // After G0: the chamfer is rapid.
   b = read("G0 X0 Y0\nY10 CHR=1\nX10\n");
   EXPECT_EQ(b[2].state.motion, Motion::kRapid);

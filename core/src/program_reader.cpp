@@ -173,7 +173,6 @@ void ProgramReader::resolve(Block& b) {
   if (w.motion) circle_definition_.reset();
   if (w.cw().circle_definition) circle_definition_ = *w.cw().circle_definition;
   if (w.cw().rndm) rounding_modal_ = length(*w.cw().rndm);  // NC-CONTOUR-2
-  if (w.cw().frcm) corner_feed_modal_ = *w.cw().frcm;
   if (w.motion) s.motion = *w.motion;
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
@@ -188,6 +187,11 @@ void ProgramReader::resolve(Block& b) {
   if (w.feed_type) s.feed_type = *w.feed_type;
   if (w.path_mode) s.path_mode = *w.path_mode;
   bool inch_feed = units_ == Units::kG700;
+  if (inch_feed && w.contour) {  // NC-UNIT-1: G700 converts the feeds of roundings and chamfers too
+    if (w.contour->frc) w.contour->frc = w.contour->frc->scaled(254, 10);
+    if (w.contour->frcm) w.contour->frcm = w.contour->frcm->scaled(254, 10);
+  }
+  if (w.cw().frcm) corner_feed_modal_ = *w.cw().frcm;  // NC-CONTOUR-2
   if (w.dwell) {  // NC-WORD-4: G4 F… / G4 S… is a dwell, no feed
     if (w.programs_any_axis()) fail("G4 (dwell) must stand in a block without axis words");
     std::string text = w.feed ? fmt::format("G4 F{}", w.feed->to_string()) : "G4";
