@@ -137,7 +137,7 @@ RC_GTEST_PROP(Sar, InfeedIsMonotoneOrAlarm10741, ()) {
   }
 }
 
-// The same contour backwards with the approach turned into a retraction (SAR-POINTS-2, ruling
+// The same contour backwards with the approach turned into a retraction (SAR-POINTS-2, decision
 // 14): compensation side swapped, G141 <-> G142, the start position the retraction's end point.
 ContourCase mirrored(const ContourCase& c) {
   ContourCase r = reversed_contour(c);

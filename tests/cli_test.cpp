@@ -113,6 +113,38 @@ TEST(Cli, StdinMachineDataAndSvg) {
 }  // namespace
 
 namespace {
+// covers: TRACE-1
+TEST(Cli, TheTraceRecordsEveryDecisionWithItsMargin) {
+  // Both engines trace the same decisions of the example (clause, line, branch); fast gives its
+  // margin as a number, ref as an exact decimal string, and the two agree in sign.
+  Result f = sh(kCli + " run " + kExample + " --format json --trace --engine fast");
+  Result r = sh(kCli + " run " + kExample + " --format json --trace --engine ref");
+  ASSERT_EQ(f.status, 0);
+  ASSERT_EQ(r.status, 0);
+  const auto fj = nlohmann::json::parse(f.out), rj = nlohmann::json::parse(r.out);
+  const auto& fd = fj["decisions"];
+  const auto& rd = rj["decisions"];
+  ASSERT_GT(fd.size(), 5u);
+  ASSERT_EQ(fd.size(), rd.size());
+  int margins = 0;
+  for (std::size_t i = 0; i < fd.size(); ++i) {
+    EXPECT_EQ(fd[i]["clause"], rd[i]["clause"]) << i;
+    EXPECT_EQ(fd[i]["line"], rd[i]["line"]) << i;
+    EXPECT_EQ(fd[i]["branch"], rd[i]["branch"]) << i;
+    if (!rd[i].contains("margin_exact")) continue;
+    ++margins;
+    ASSERT_TRUE(fd[i].contains("margin")) << i;
+    const std::string exact = rd[i]["margin_exact"];
+    const double m = fd[i]["margin"];
+    if (exact[0] == '-') EXPECT_LT(m, 0) << fd[i]["clause"];
+    else if (exact != "0") EXPECT_GT(m, 0) << fd[i]["clause"];
+  }
+  EXPECT_GT(margins, 3);
+}
+
+}  // namespace
+
+namespace {
 // covers: SAR-VAR-1 CLI-1
 TEST(Cli, SarVariablesInEveryFormat) {
   const std::string example = CUTCOM_SOURCE_DIR "/examples/sar-quadrant.mpf";

@@ -1,5 +1,5 @@
 // Smooth approach and retraction (spec/sar.md): the manual's examples E1 (three variants), E2 and
-// E3 of digest §1.11 and one test per clause, with every coordinate derived by hand.
+// the manual's SAR example (PGA06 p.373) and one test per clause, with every coordinate derived by hand.
 #include "support.hpp"
 
 namespace cutcom::test {
@@ -158,7 +158,7 @@ TEST(Sar, G143WithoutCompensationTakesTheSideOfTheStartPoint) {
   EXPECT_TRUE(has_decision(right.ref, "SAR-SIDE-2", "right"));
   expect_point(right.ref.path[2].center, {10, -5, 0}, "centre");
   EXPECT_FALSE(right.fast.path[2].ccw);
-  // On the tangent line: alarm 10744 (ruling 4).
+  // On the tangent line: alarm 10744 (decision 4).
   expect_alarm("N10 G0 X-5 Y0 Z0\nN20 G247 G143 DISR=5 X10 Y0 F100\nN30 G1 X30\n", 10744, 2);
   // G140 without compensation behaves as G143.
   EXPECT_TRUE(
@@ -180,7 +180,7 @@ TEST(Sar, DisrIsTheToolCentreRadiusOnEitherSide) {
   expect_point(right.ref.path[2].center, {10, -3, 0}, "G142 centre");
   expect_point(right.ref.path[2].start, {5, -3, 0}, "G142 tool centre at P3");
   EXPECT_FALSE(right.fast.path[2].ccw);
-  // A negative radius swaps G41 to the right (ruling 2): G140 comes from the right.
+  // A negative radius swaps G41 to the right (decision 2): G140 comes from the right.
   Runs neg = run_both(
       "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=-2\nN10 G0 X0 Y20 Z0 T1 D1\n"
       "N20 G41 G247 DISR=5 X10 Y0 F100\nN30 G1 X30\nN40 G40 X40\n");
@@ -202,7 +202,7 @@ TEST(Sar, StraightLineLengthIsDisrPlusRadius) {
   EXPECT_EQ(r.ref.decisions[1].margin_exact, "5");
   expect_alarm(head + "N20 G41 G147 DISR=-7 X20 Y0\nN30 G1 X40\n", 10742, 4);  // L = 0
   expect_alarm(head + "N20 G41 G147 X20 Y0\nN30 G1 X40\n", 10742, 4);          // no DISR
-  // Without compensation L = DISR (ruling 5).
+  // Without compensation L = DISR (decision 5).
   expect_alarm("N10 G0 X0 Y20\nN20 G147 DISR=0 X20 Y0\nN30 G1 X40\n", 10742, 2);
   Runs plain = run_both("N10 G0 X0 Y20\nN20 G147 DISR=4 X20 Y0\nN30 G1 X40\n");
   expect_point(plain.fast.path[1].end, {16, 0, 0}, "P3 without compensation");
@@ -247,7 +247,7 @@ TEST(Sar, WithoutDisclOrWithDisclZero) {
                      line(K::kProgrammed, {20, 0, 0}, {40, 0, 0})});
   EXPECT_EQ(g341.fast.path[2].origin.sar, SarMove::kSlowInfeed);
   EXPECT_FALSE(g341.fast.path[2].rapid);
-  // G340 with DISCL=0: P1, P2, P3 merge, one spatial element from P1 (ruling 12).
+  // G340 with DISCL=0: P1, P2, P3 merge, one spatial element from P1 (decision 12).
   Runs g340 = run_both("N10 G0 X0 Y20 Z10\nN20 G147 DISCL=0 DISR=5 X20 Y0 Z0 F100\nN30 G1 X40\n");
   expect_both(g340, {line(K::kProgrammed, {0, 0, 0}, {0, 20, 10}), line(K::kProgrammed, {0, 20, 10}, {15, 0, 10}),
                      line(K::kProgrammed, {15, 0, 10}, {20, 0, 0}), line(K::kProgrammed, {20, 0, 0}, {40, 0, 0})});

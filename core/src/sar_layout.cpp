@@ -26,7 +26,7 @@ SarLevels sar_levels(const Block& b, SarEndCase end_case, const Decimal& h4) {
   if (end_case == SarEndCase::kApproach) {
     h.h0 = coord(b.start, ax.applicate);
     h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
-    h.h2 = w.discl.present ? level(w.discl) : h.h1;  // SAR-DISCL-2 (ruling 7)
+    h.h2 = w.discl.present ? level(w.discl) : h.h1;  // SAR-DISCL-2 (decision 7)
   } else if (end_case == SarEndCase::kNoAxis || (end_case == SarEndCase::kPlaneAxis && !applicate)) {
     // SAR-END-1, case 1 (and case 3 without the applicate): the retraction ends at P2's level.
     if (w.disrp.present) throw UnsupportedError(w.line, "DISRP in a SAR retraction that ends at P2");
@@ -39,7 +39,7 @@ SarLevels sar_levels(const Block& b, SarEndCase end_case, const Decimal& h4) {
     h.h1 = w.disrp.present ? level(w.disrp) : h.h0;
     h.h2 = w.discl.present ? level(w.discl) : h.h1;
   }
-  // SAR-DISCL-2 (ruling 12): G340 with DISCL=0 or without DISCL: one spatial element from P1.
+  // SAR-DISCL-2 (decision 12): G340 with DISCL=0 or without DISCL: one spatial element from P1.
   bool g340 = b.state.sar_segmentation == SarSegmentation::kG340;
   if (g340 && (!w.discl.present || (w.discl.mode != ValueMode::kAbsolute && w.discl.value.is_zero()))) h.h2 = h.h1;
   return h;
@@ -133,7 +133,7 @@ void approach(const Block& a, const Block& m, const SarPlan& p, SarSubBlocks& ou
   const SarLevels& h = p.h;
   Point3 p1 = point(ax, p.p3_a, p.p3_b, h.h1), p2 = point(ax, p.p3_a, p.p3_b, h.h2);
   Point3 p3 = point(ax, p.p3_a, p.p3_b, h.h3);
-  // SAR-FEED-1: up to P2 at the velocity of the block before (rapid with G0, ruling 15).
+  // SAR-FEED-1: up to P2 at the velocity of the block before (rapid with G0, decision 15).
   Motion before = a.previous.motion == Motion::kRapid ? Motion::kRapid : Motion::kLinear;
   const Decimal& old_feed = a.previous.feed;
   FeedType fad_type = a.state.feed_type;

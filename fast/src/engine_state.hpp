@@ -341,7 +341,7 @@ struct Engine::State {
   // --- phase: compensation off -----------------------------------------------------------------
   void off(const Block& b);
 
-  // TRC-SIDE-1 (ruling 30): G41 <-> G42 without G40: the old side's last element ends at its normal
+  // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40: the old side's last element ends at its normal
   // end point; the first new-side block with a plane axis is a selection block from the tool.
   void change_side(const Block& b);
 
@@ -500,7 +500,7 @@ struct Engine::State {
   void retraction_line(BlockCopy& last, Vec2 from_point);
 
   // TRC-KONT-3 / TRC-KONT-4 on retraction: the retraction line meets the last block at an outer corner.
-  // TRC-EDGE-6 (digest §2.5 rule 3): KONT from behind after a too-short last block: the open
+  // TRC-EDGE-6 (FM06 p.94): KONT from behind after a too-short last block: the open
   // element meets the inserted circle about the last block's end point (the first point along it)
   // and the rest of the circle is traversed; if it misses the circle, it meets the retraction line.
   void retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k);

@@ -69,7 +69,7 @@ Engine::State::SarTrc Engine::State::sar_trc(const ModalState& st) {
   t.on = true;
   t.effective = st.effective_radius().to_double();
   t.s = st.side == Side::kLeft ? 1 : -1;
-  if (t.effective < 0) t.s = -t.s;  // TRC-RADIUS-2, ruling 2
+  if (t.effective < 0) t.s = -t.s;  // TRC-RADIUS-2, decision 2
   t.r = std::fabs(t.effective);
   return t;
 }
@@ -130,7 +130,7 @@ bool Engine::State::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case
     decide("SAR-DISRP-2", w.line, opposite ? "opposite-sides" : "same-side");
     if (opposite) return raise(10748, w.line, w.number, "SAR-DISRP-2"), false;
   }
-  // SAR-DISCL-3 (ruling 9), in double: a DISCL exactly MD20204 outside is a knife edge here.
+  // SAR-DISCL-3 (decision 9), in double: a DISCL exactly MD20204 outside is a knife edge here.
   double lo = std::min(h1, h4d), hi = std::max(h1, h4d);
   double excess = h2 < lo ? lo - h2 : h2 > hi ? h2 - hi : 0.0;
   double slack = md.wab_clearance_tolerance.to_double() - excess;

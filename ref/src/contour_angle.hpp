@@ -1,5 +1,5 @@
 // TRC-CORNER-2 (used by TRC-CORNER-3/4): the exact comparison of a corner's contour angle with a threshold in degrees
-// (MD20210, MD20230), with no double anywhere (ruling 29).
+// (MD20210, MD20230), with no double anywhere (decision 29).
 #pragma once
 
 #include <gmpxx.h>

@@ -1,5 +1,5 @@
 // ref's number model. Coordinates are exact: the kernel's FT is CORE::Expr (exact square roots),
-// built from integer leaves (program values in units of 10^-9, toolchain notes rule 3), and
+// built from integer leaves (program values in units of 10^-9, NC-NUM-1), and
 // decisions that can be phrased on the programmed data use GMP integers instead.
 #pragma once
 

@@ -171,7 +171,7 @@ class Reference {
   // TRC-SEL-*: may this block select compensation?
   void compensation_off(const Block& b);
 
-  // TRC-SIDE-1 (ruling 30): G41 <-> G42 without G40. The last element of the old side ends at its
+  // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40. The last element of the old side ends at its
   // normal end point (blocks held back run there); the first block with the new side that
   // programs a plane axis is a selection block (NORM) starting where the tool is.
   void change_side(const Block& b);
@@ -402,7 +402,7 @@ class Reference {
   // The corner the retraction line (to b's end) makes with the last block at its end point.
   KontCorner retraction_corner(const Block& b, const ContourElement& last) const;
 
-  // TRC-EDGE-6 (digest §2.5 rule 3): KONT from behind after a too-short last block. The
+  // TRC-EDGE-6 (FM06 p.94): KONT from behind after a too-short last block. The
   // travel-around circle about the last block's end point is inserted whatever G460-G462 say: the
   // open element ends where it meets the circle (the first point along it, as G461 would find)
   // and the rest of the circle is traversed; if it misses the circle, where it meets the

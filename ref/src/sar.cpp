@@ -86,7 +86,7 @@ Reference::SarTrc Reference::sar_trc(const ModalState& st) {
   t.on = true;
   t.effective = st.effective_radius();
   t.s = st.side == Side::kLeft ? 1 : -1;
-  if (t.effective.sign() < 0) t.s = -t.s;  // TRC-RADIUS-2, ruling 2
+  if (t.effective.sign() < 0) t.s = -t.s;  // TRC-RADIUS-2, decision 2
   t.r = t.effective.sign() < 0 ? -t.effective : t.effective;
   return t;
 }
@@ -159,7 +159,7 @@ bool Reference::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, co
     decide("SAR-DISRP-2", w.line, s1 * s2 < 0 ? "opposite-sides" : "same-side");
     if (s1 * s2 < 0) return raise(10748, b, "SAR-DISRP-2"), false;
   }
-  // SAR-DISCL-3 (ruling 9): h(P1), h(P2), h(P4) monotone; within MD20204 outside, P2 is clamped.
+  // SAR-DISCL-3 (decision 9): h(P1), h(P2), h(P4) monotone; within MD20204 outside, P2 is clamped.
   Decimal lo = std::min(h.h1, h.h4), hi = std::max(h.h1, h.h4);
   Decimal excess = h.h2 < lo ? lo - h.h2 : h.h2 > hi ? h.h2 - hi : Decimal{};
   Decimal slack = md_.wab_clearance_tolerance - excess;

@@ -14,7 +14,7 @@ class UnsupportedError : public InputError {
       : InputError(line, 1, what + " (not supported by this version of cutcom)") {}
 };
 
-// The effective radius and the edge it came from; a change while active is a D change (ruling 30).
+// The effective radius and the edge it came from; a change while active is a D change (decision 30).
 struct ActiveEdge {
   std::int64_t tool = 0, edge = 0;
   Decimal radius, wear, offn;
@@ -30,7 +30,7 @@ inline void reject_kontc_kontt(const Block& b, bool retraction) {
 }
 
 // TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
-// (ruling 30): re-select G41/G42, change the tool edge, or ask for KONTC/KONTT.
+// (decision 30): re-select G41/G42, change the tool edge, or ask for KONTC/KONTT.
 inline void reject_change_while_active(const Block& b, const ActiveEdge& active) {
   if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
   if (!(ActiveEdge::of(b.state) == active))

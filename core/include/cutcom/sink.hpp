@@ -11,7 +11,7 @@
 namespace cutcom {
 
 // SAR-VAR-1: $P_APR (P3) and $P_AEP (P4) of a SAR approach block, programmed-contour positions in
-// workpiece coordinates (ruling 16); $P_APDV = 1: they belong to the last SAR approach programmed.
+// workpiece coordinates (decision 16); $P_APDV = 1: they belong to the last SAR approach programmed.
 struct SarVariables {
   int line = 0;
   std::optional<std::int64_t> block;
