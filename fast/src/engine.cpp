@@ -61,12 +61,10 @@ void Engine::State::select(const Block& b) {
   axes = plane_axes(plane);
   side = b.state.side;
   edge = ActiveEdge::of(b.state);
-  Decimal eff = b.state.effective_radius();
-  int sign = side == Side::kLeft ? 1 : -1;
-  // TRC-RADIUS-2: a negative effective radius swaps the side.
-  decide("TRC-RADIUS-2", b.words.line, eff.sign() < 0 ? "negative" : eff.sign() == 0 ? "zero" : "positive");
-  s = eff.sign() < 0 ? -sign : sign;
-  r = std::fabs(eff.to_double());
+  CompensationSide cs = compensation_side(b.state);  // TRC-RADIUS-2 (decided in core)
+  decide(cs.decision, b.words.line);
+  s = cs.s;
+  r = cs.r.to_double();
   selection = copy_of(b);
   selection_from_tool = false;
   has_prev = false;
@@ -407,25 +405,13 @@ void Engine::State::release_window(const Block& b) {
 }
 
 bool Engine::State::arc_is_consistent(const Block& b) {
-  PlaneAxes ax = plane_axes(b.state.plane);
-  if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point
-    double cr = std::fabs(b.words.cr->to_double());
-    Vec2 s0{coord(b.start, ax.abscissa).to_double(), coord(b.start, ax.ordinate).to_double()};
-    Vec2 e0{coord(b.end, ax.abscissa).to_double(), coord(b.end, ax.ordinate).to_double()};
-    double chord = norm(e0 - s0);
-    bool reachable = chord > 0 && chord <= 2 * cr;
-    decide("ARC-CR-1", b.words.line, reachable ? "circle" : "unreachable", 2 * cr - chord);
-    if (!reachable) raise(14040, b.words.line, b.words.number, "ARC-CR-1");
-    return reachable;
-  }
-  auto at = [&](const Point3& p) { return Vec2{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()}; };
-  Vec2 c = at(*b.centre);
-  double rs = norm(at(b.start) - c), re = norm(at(b.end) - c);
-  double tolerance = std::max(md.circle_error_const.to_double(), md.circle_error_factor.to_double() * rs);
-  double excess = std::fabs(re - rs) - tolerance;
-  decide("ARC-CENTRE-2", b.words.line, excess <= 0 ? "within" : "beyond", excess);
-  if (excess > 0) raise(14040, b.words.line, b.words.number);
-  return excess <= 0;
+  // ARC-CR-1 (a CR= circle must reach its end point) and ARC-CENTRE-2 (the end point tolerance):
+  // decisions on programmed decimals, taken exactly in core.
+  ProgrammedDecision d = b.centre ? circle_end_point(b, md) : cr_circle_reach(b);
+  decide(d, b.words.line);
+  bool ok = d.branch == (b.centre ? "within" : "circle");
+  if (!ok) raise(14040, b.words.line, b.words.number, b.centre ? std::string_view{} : std::string_view{"ARC-CR-1"});
+  return ok;
 }
 
 Engine::Engine(const MachineData& md, PathSink& sink) : state_(std::make_unique<State>(md, sink)) {}

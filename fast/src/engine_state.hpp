@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bottleneck.hpp"
+#include "cutcom/programmed_decisions.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/sar_layout.hpp"
 #include "cutcom/sar_sequence.hpp"
@@ -194,6 +195,7 @@ struct Engine::State {
     bool on = false;
     int s = 1;
     double effective = 0, r = 0;
+    std::optional<CompensationSide> side;  // TRC-RADIUS-2 as decided in core (empty without)
   };
   static SarTrc sar_trc(const ModalState& st);
   int sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0);
@@ -261,6 +263,11 @@ struct Engine::State {
     Decision d;
     d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin = margin;
     sink.decision(d);
+  }
+  // A decision on programmed decimals, taken in core (programmed_decisions.hpp): traced as given.
+  void decide(const ProgrammedDecision& d, int line) {
+    if (d.has_margin()) return decide(d.clause, line, d.branch, d.approx);
+    decide(d.clause, line, d.branch);
   }
   void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
     flush_approach();  // ALARM-1: what was decided before the alarm is output

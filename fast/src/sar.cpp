@@ -67,10 +67,10 @@ Engine::State::SarTrc Engine::State::sar_trc(const ModalState& st) {
   SarTrc t;
   if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return t;
   t.on = true;
-  t.effective = st.effective_radius().to_double();
-  t.s = st.side == Side::kLeft ? 1 : -1;
-  if (t.effective < 0) t.s = -t.s;  // TRC-RADIUS-2, decision 2
-  t.r = std::fabs(t.effective);
+  t.side = compensation_side(st);  // TRC-RADIUS-2 (decided in core)
+  t.effective = t.side->effective.to_double();
+  t.s = t.side->s;
+  t.r = t.side->r.to_double();
   return t;
 }
 
@@ -96,53 +96,21 @@ int Engine::State::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, 
 }
 
 bool Engine::State::sar_size(const Block& b, const SarTrc& trc, int sd, double& size) {
-  SarContour c = *b.words.sar_contour;
-  bool straight = c == SarContour::kG147 || c == SarContour::kG148;
-  std::string_view clause = straight ? "SAR-DISR-1" : "SAR-DISR-2";
-  if (!b.words.disr) {
-    decide(clause, b.words.line, "missing");
-    raise(10742, b.words.line, b.words.number, clause);
-    return false;
-  }
-  double disr = b.words.disr->to_double();
-  if (straight) {
-    size = disr + (trc.on && trc.effective > 0 ? trc.effective : 0.0);  // SAR-DISR-1
-  } else {
-    if (disr <= 0) {  // SAR-DISR-2
-      decide(clause, b.words.line, "not-positive", disr);
-      raise(10742, b.words.line, b.words.number, clause);
-      return false;
-    }
-    size = !trc.on ? disr : sd == trc.s ? disr + trc.r : disr - trc.r;
-  }
-  decide(clause, b.words.line, size > 0 ? "valid" : "not-positive", size);
-  if (size > 0) return true;
-  raise(10742, b.words.line, b.words.number, clause);
-  return false;
+  SarSize z = cutcom::sar_size(b, trc.side, sd);  // SAR-DISR-1/2 (decided in core)
+  decide(z.decision, b.words.line);
+  if (!z.size) return raise(10742, b.words.line, b.words.number, z.decision.clause), false;
+  size = z.size->to_double();
+  return true;
 }
 
 bool Engine::State::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
   h = cutcom::sar_levels(b, end_case, h4);
-  const BlockWords& w = b.words;
-  double h1 = h.h1.to_double(), h2 = h.h2.to_double(), h4d = h.h4.to_double();
-  if (w.disrp.present && w.discl.present) {  // SAR-DISRP-2
-    bool opposite = (h1 - h4d) * (h2 - h4d) < 0;
-    decide("SAR-DISRP-2", w.line, opposite ? "opposite-sides" : "same-side");
-    if (opposite) return raise(10748, w.line, w.number, "SAR-DISRP-2"), false;
-  }
-  // SAR-DISCL-3 (decision 9), in double: a DISCL exactly MD20204 outside is a knife edge here.
-  double lo = std::min(h1, h4d), hi = std::max(h1, h4d);
-  double excess = h2 < lo ? lo - h2 : h2 > hi ? h2 - hi : 0.0;
-  double slack = md.wab_clearance_tolerance.to_double() - excess;
-  if (excess == 0) {
-    decide("SAR-DISCL-3", w.line, "between", slack);
-  } else if (slack >= 0) {
-    decide("SAR-DISCL-3", w.line, "clamped", slack);
-    h.h2 = h2 < lo ? std::min(h.h1, h.h4) : std::max(h.h1, h.h4);
-  } else {
-    decide("SAR-DISCL-3", w.line, "reversal", slack);
-    return raise(10741, w.line, w.number, "SAR-DISCL-3"), false;
-  }
+  // SAR-DISRP-2, SAR-DISCL-3 (decision 9): decided in core; P2 clamped there.
+  SarLevelCheck check = check_sar_levels(b, h, md);
+  if (check.retraction_plane) decide(*check.retraction_plane, b.words.line);
+  if (check.reversal) decide(*check.reversal, b.words.line);
+  if (check.alarm)
+    return raise(check.alarm, b.words.line, b.words.number, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"), false;
   set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }

@@ -77,15 +77,6 @@ ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
 }
 }  // namespace
 
-CrReach cr_reach(const Block& block, PlaneAxes axes) {
-  mpq_class da = units_q(coord(block.end, axes.abscissa)) - units_q(coord(block.start, axes.abscissa));
-  mpq_class db = units_q(coord(block.end, axes.ordinate)) - units_q(coord(block.start, axes.ordinate));
-  mpq_class cr = units_q(*block.words.cr);
-  mpq_class chord2 = da * da + db * db;
-  bool reachable = sgn(chord2) > 0 && chord2 <= 4 * cr * cr;
-  return {reachable, FT(2) * to_ft(abs(cr)) - exact_root(to_ft(chord2))};
-}
-
 ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
   if (!block.centre) return of_cr_arc(block, axes);
   ContourElement e = arc_of(block);
@@ -125,23 +116,6 @@ Vector ContourElement::start_normal() const {
 Vector ContourElement::end_normal() const {
   if (kind == Kind::kLine) return normal;
   return (centre - b) * FT(sense) / radius;
-}
-
-ArcTolerance arc_end_point_check(const Block& block, PlaneAxes axes, const Decimal& error_const,
-                                 const Decimal& error_factor) {
-  mpq_class sa = units_q(coord(block.start, axes.abscissa)), sb = units_q(coord(block.start, axes.ordinate));
-  mpq_class ea = units_q(coord(block.end, axes.abscissa)), eb = units_q(coord(block.end, axes.ordinate));
-  mpq_class ca = units_q(coord(*block.centre, axes.abscissa)), cb = units_q(coord(*block.centre, axes.ordinate));
-  mpq_class rs2 = (sa - ca) * (sa - ca) + (sb - cb) * (sb - cb);
-  mpq_class re2 = (ea - ca) * (ea - ca) + (eb - cb) * (eb - cb);
-  FT rs = exact_root(to_ft(rs2));
-  FT deviation = rs2 == re2 ? FT(0) : CGAL::abs(exact_root(to_ft(re2)) - rs);
-  // The factor is a plain number: tolerance = max(const, factor * rho_start), in units.
-  FT by_factor = to_ft(mpq_class(units_of(error_factor), mpz_class(Decimal::kUnitsPerOne))) * rs;
-  FT constant = leaf(error_const);
-  FT tolerance = CGAL::compare(by_factor, constant) == CGAL::LARGER ? by_factor : constant;
-  FT excess = deviation - tolerance;
-  return {CGAL::sign(excess) != CGAL::POSITIVE, excess};
 }
 
 CornerKind classify_corner(const Vector& t1, const Vector& t2, int side) {

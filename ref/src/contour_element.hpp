@@ -45,15 +45,6 @@ struct ContourElement {
   Vector end_normal() const;
 };
 
-// ARC-CENTRE-2: how far the programmed end point misses the circle about the programmed centre,
-// |rho_end - rho_start|, against max(MD21000, MD21010 * rho_start). True if within.
-struct ArcTolerance {
-  bool within;
-  FT excess;  // |rho_end - rho_start| - tolerance (<= 0 within)
-};
-ArcTolerance arc_end_point_check(const Block& block, PlaneAxes axes, const Decimal& error_const,
-                                 const Decimal& error_factor);
-
 // TRC-CORNER-1: the kind of the corner between two elements, from the exact tangents.
 enum class CornerKind { kTangent, kInner, kOuter, kReversal };
 struct CornerClass {
@@ -66,12 +57,6 @@ CornerClass classify_corner(const RationalVector& end_tangent, const RationalVec
 // The same from exact (possibly irrational) directions.
 CornerKind classify_corner(const Vector& end_tangent, const Vector& start_tangent, int side);
 
-// ARC-CR-1: a CR= circle reaches its end point if 0 < chord <= 2 |CR|. Margin 2|CR| - chord.
-struct CrReach {
-  bool reachable;
-  FT margin;
-};
-CrReach cr_reach(const Block& block, PlaneAxes axes);
 
 FT to_ft(const mpq_class& q);
 

@@ -23,17 +23,16 @@ void Reference::step(const Block& b) {
 }
 
 bool Reference::arc_is_consistent(const Block& b) {
-  PlaneAxes axes = plane_axes(b.state.plane);
-  if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point
-    CrReach reach = cr_reach(b, axes);
-    decide("ARC-CR-1", b.words.line, reach.reachable ? "circle" : "unreachable", exact_mm(reach.margin));
-    if (!reach.reachable) raise(14040, b, "ARC-CR-1");
-    return reach.reachable;
+  if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point (decided in core)
+    ProgrammedDecision reach = cr_circle_reach(b);
+    decide(reach, b.words.line);
+    if (reach.branch != "circle") raise(14040, b, "ARC-CR-1");
+    return reach.branch == "circle";
   }
-  ArcTolerance t = arc_end_point_check(b, axes, md_.circle_error_const, md_.circle_error_factor);
-  decide("ARC-CENTRE-2", b.words.line, t.within ? "within" : "beyond", exact_mm(t.excess));
-  if (!t.within) raise(14040, b);
-  return t.within;
+  ProgrammedDecision t = circle_end_point(b, md_);  // ARC-CENTRE-2 (decided in core)
+  decide(t, b.words.line);
+  if (t.branch != "within") raise(14040, b);
+  return t.branch == "within";
 }
 
 void Reference::run_uncompensated(const Block& b) {
@@ -86,11 +85,10 @@ void Reference::select(const Block& b) {
   reject_kontc_kontt(b, false);  // TRC-UNSUP-1
   // TRC-SEL-3: a single programmed plane axis was completed by the reader (NC-POS-1).
   decide("TRC-SEL-1", b.words.line, "selected");
-  Decimal effective = b.state.effective_radius();
-  decide("TRC-RADIUS-2", b.words.line, effective.sign() < 0 ? "negative" : effective.sign() == 0 ? "zero" : "positive");
-  int s = b.state.side == Side::kLeft ? 1 : -1;
-  if (effective.sign() < 0) s = -s;  // TRC-RADIUS-2: a negative radius swaps G41 and G42
-  Decimal r = effective.sign() < 0 ? -effective : effective;
+  CompensationSide side = compensation_side(b.state);  // TRC-RADIUS-2 (decided in core)
+  decide(side.decision, b.words.line);
+  int s = side.s;
+  Decimal r = side.r;
   comp_ = Compensation{b.state.plane,          plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
                        ActiveEdge::of(b.state)};
   selection_ = &b;

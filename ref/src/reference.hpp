@@ -13,6 +13,7 @@
 #include "bottleneck.hpp"
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
+#include "cutcom/programmed_decisions.hpp"
 #include "cutcom/ref/engine.hpp"
 #include "cutcom/sar_layout.hpp"
 #include "cutcom/sar_sequence.hpp"
@@ -88,6 +89,11 @@ class Reference {
     d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin_exact = std::move(margin);
     sink_.decision(d);
   }
+  // A decision on programmed decimals, taken in core (programmed_decisions.hpp): its exact margin.
+  void decide(const ProgrammedDecision& d, int line) {
+    if (d.has_margin()) return decide(d.clause, line, d.branch, d.exact);
+    decide(d.clause, line, d.branch);
+  }
   void raise(int number, const Block& at, std::string_view clause = {}) {
     flush_approach();  // ALARM-1: what was decided before the alarm is output
     held_.release_before(INT_MAX);
@@ -140,6 +146,7 @@ class Reference {
     int s;              // side of the compensation (negative radius swapped), +1 without
     Decimal effective;  // signed effective radius (0 without)
     Decimal r;          // its magnitude
+    std::optional<CompensationSide> side;  // TRC-RADIUS-2 as decided in core (empty without)
   };
   static SarTrc sar_trc(const ModalState& state);
   // SAR-SIDE-1/2/3: the side of a circle; 0 after an alarm.

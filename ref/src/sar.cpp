@@ -5,10 +5,6 @@
 
 namespace cutcom::ref::detail {
 
-namespace {
-std::string mm(const Decimal& d) { return d.to_string(); }  // a decimal margin, written exactly
-}  // namespace
-
 void Reference::take(Block b) {
   if (!stopped_ && !b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice});  // the reader's
   std::optional<PlaneOverride> over = after_sar_end(b);
@@ -81,13 +77,13 @@ std::optional<PlaneOverride> Reference::after_sar_end(const Block& b) {
 }
 
 Reference::SarTrc Reference::sar_trc(const ModalState& st) {
-  SarTrc t{false, 1, Decimal{}, Decimal{}};
+  SarTrc t{false, 1, Decimal{}, Decimal{}, std::nullopt};
   if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return t;
   t.on = true;
-  t.effective = st.effective_radius();
-  t.s = st.side == Side::kLeft ? 1 : -1;
-  if (t.effective.sign() < 0) t.s = -t.s;  // TRC-RADIUS-2, decision 2
-  t.r = t.effective.sign() < 0 ? -t.effective : t.effective;
+  t.side = compensation_side(st);  // TRC-RADIUS-2 (decided in core)
+  t.effective = t.side->effective;
+  t.s = t.side->s;
+  t.r = t.side->r;
   return t;
 }
 
@@ -120,58 +116,19 @@ int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, cons
 }
 
 std::optional<FT> Reference::sar_size(const Block& b, const SarTrc& trc, int s) {
-  SarContour c = *b.words.sar_contour;
-  bool line = c == SarContour::kG147 || c == SarContour::kG148;
-  if (!b.words.disr) {
-    decide(line ? "SAR-DISR-1" : "SAR-DISR-2", b.words.line, "missing");
-    raise(10742, b, line ? "SAR-DISR-1" : "SAR-DISR-2");
-    return std::nullopt;
-  }
-  Decimal disr = *b.words.disr;
-  Decimal size;
-  if (line) {
-    // SAR-DISR-1: L = DISR + r (only a positive effective radius counts).
-    size = disr + (trc.on && trc.effective.sign() > 0 ? trc.effective : Decimal{});
-    decide("SAR-DISR-1", b.words.line, size.sign() > 0 ? "valid" : "not-positive", mm(size));
-  } else {
-    // SAR-DISR-2: DISR > 0, R = DISR + r with the tool inside the circle, DISR - r outside.
-    if (disr.sign() <= 0) {
-      decide("SAR-DISR-2", b.words.line, "not-positive", mm(disr));
-      raise(10742, b, "SAR-DISR-2");
-      return std::nullopt;
-    }
-    size = !trc.on ? disr : s == trc.s ? disr + trc.r : disr - trc.r;
-    decide("SAR-DISR-2", b.words.line, size.sign() > 0 ? "valid" : "not-positive", mm(size));
-  }
-  if (size.sign() <= 0) {
-    raise(10742, b, line ? "SAR-DISR-1" : "SAR-DISR-2");
-    return std::nullopt;
-  }
-  return leaf(size);
+  SarSize z = cutcom::sar_size(b, trc.side, s);  // SAR-DISR-1/2 (decided in core)
+  decide(z.decision, b.words.line);
+  if (!z.size) return raise(10742, b, z.decision.clause), std::nullopt;
+  return leaf(*z.size);
 }
 
 bool Reference::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
   h = cutcom::sar_levels(b, end_case, h4);
-  const BlockWords& w = b.words;
-  // SAR-DISRP-2: the retraction plane P1 on the other side of P4's plane than P2.
-  if (w.disrp.present && w.discl.present) {
-    int s1 = (h.h1 - h.h4).sign(), s2 = (h.h2 - h.h4).sign();
-    decide("SAR-DISRP-2", w.line, s1 * s2 < 0 ? "opposite-sides" : "same-side");
-    if (s1 * s2 < 0) return raise(10748, b, "SAR-DISRP-2"), false;
-  }
-  // SAR-DISCL-3 (decision 9): h(P1), h(P2), h(P4) monotone; within MD20204 outside, P2 is clamped.
-  Decimal lo = std::min(h.h1, h.h4), hi = std::max(h.h1, h.h4);
-  Decimal excess = h.h2 < lo ? lo - h.h2 : h.h2 > hi ? h.h2 - hi : Decimal{};
-  Decimal slack = md_.wab_clearance_tolerance - excess;
-  if (excess.is_zero()) {
-    decide("SAR-DISCL-3", w.line, "between", mm(slack));
-  } else if (slack.sign() >= 0) {
-    decide("SAR-DISCL-3", w.line, "clamped", mm(slack));
-    h.h2 = h.h2 < lo ? lo : hi;
-  } else {
-    decide("SAR-DISCL-3", w.line, "reversal", mm(slack));
-    return raise(10741, b, "SAR-DISCL-3"), false;
-  }
+  // SAR-DISRP-2, SAR-DISCL-3 (decision 9): decided in core; P2 clamped there.
+  SarLevelCheck check = check_sar_levels(b, h, md_);
+  if (check.retraction_plane) decide(*check.retraction_plane, b.words.line);
+  if (check.reversal) decide(*check.reversal, b.words.line);
+  if (check.alarm) return raise(check.alarm, b, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"), false;
   set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }

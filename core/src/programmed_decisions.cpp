@@ -1,0 +1,178 @@
+// Decisions on programmed decimals, exact: signs from integer (GMP) arithmetic on the decimals'
+// units of 10^-9 mm, square roots compared by squaring; margins printed from MPFR with that sign.
+#include "cutcom/programmed_decisions.hpp"
+
+#include <fmt/format.h>
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cutcom {
+namespace {
+
+mpz_class units(const Decimal& d) { return mpz_class(int128_to_string(d.units())); }
+
+int sign(const mpz_class& z) { return sgn(z); }
+
+// A margin in mm from a decimal.
+ProgrammedDecision with_margin(std::string_view clause, std::string_view branch, const Decimal& margin) {
+  return {clause, branch, margin.to_string(), margin.to_double()};
+}
+
+// A margin whose value needs square roots: `value` evaluates it (in units) at 256 bits; `exact_sign`
+// is its sign decided exactly. The digits are the nearest double's 17, as for every margin.
+template <class F>
+ProgrammedDecision with_root_margin(std::string_view clause, std::string_view branch, int exact_sign, F value) {
+  if (exact_sign == 0) return {clause, branch, "0", 0.0};
+  mpfr_t v;
+  mpfr_init2(v, 256);
+  value(v);
+  mpfr_div_ui(v, v, 1'000'000'000UL, MPFR_RNDN);
+  double magnitude = std::fabs(mpfr_get_d(v, MPFR_RNDN));
+  mpfr_clear(v);
+  double signed_value = exact_sign < 0 ? -magnitude : magnitude;
+  return {clause, branch, fmt::format("{}{:.17g}", exact_sign < 0 ? "-" : "", magnitude), signed_value};
+}
+
+void set_z(mpfr_t out, const mpz_class& z) { mpfr_set_z(out, z.get_mpz_t(), MPFR_RNDN); }
+
+struct PlaneDelta {
+  mpz_class a, b;
+};
+PlaneDelta delta(const Point3& from, const Point3& to, PlaneAxes ax) {
+  return {units(coord(to, ax.abscissa)) - units(coord(from, ax.abscissa)),
+          units(coord(to, ax.ordinate)) - units(coord(from, ax.ordinate))};
+}
+
+}  // namespace
+
+CompensationSide compensation_side(const ModalState& state) {
+  CompensationSide c;
+  c.effective = state.effective_radius();
+  int side = state.side == Side::kLeft ? 1 : -1;
+  int sg = c.effective.sign();
+  c.s = sg < 0 ? -side : side;  // TRC-RADIUS-2: a negative radius swaps G41 and G42
+  c.r = sg < 0 ? -c.effective : c.effective;
+  c.decision = {"TRC-RADIUS-2", sg < 0 ? "negative" : sg == 0 ? "zero" : "positive", "", 0.0};
+  return c;
+}
+
+SarSize sar_size(const Block& sar, const std::optional<CompensationSide>& trc, int sar_side) {
+  SarContour contour = *sar.words.sar_contour;
+  bool line = contour == SarContour::kG147 || contour == SarContour::kG148;
+  std::string_view clause = line ? "SAR-DISR-1" : "SAR-DISR-2";
+  if (!sar.words.disr) return {std::nullopt, {clause, "missing", "", 0.0}};
+  Decimal disr = *sar.words.disr;
+  Decimal size;
+  if (line) {
+    // SAR-DISR-1: L = DISR + r; only a positive effective radius lengthens the line.
+    size = disr + (trc && trc->effective.sign() > 0 ? trc->effective : Decimal{});
+  } else {
+    // SAR-DISR-2: DISR > 0; the tool centre's radius is DISR + r with the tool on the circle's
+    // outside (the SAR side is the compensation side), DISR - r inside.
+    if (disr.sign() <= 0) return {std::nullopt, with_margin(clause, "not-positive", disr)};
+    size = !trc ? disr : sar_side == trc->s ? disr + trc->r : disr - trc->r;
+  }
+  // Boundary rule: a size of exactly 0 is not positive.
+  bool valid = size.sign() > 0;
+  SarSize out{std::nullopt, with_margin(clause, valid ? "valid" : "not-positive", size)};
+  if (valid) out.size = size;
+  return out;
+}
+
+SarLevelCheck check_sar_levels(const Block& sar, SarLevels& h, const MachineData& md) {
+  SarLevelCheck out;
+  const BlockWords& w = sar.words;
+  if (w.disrp.present && w.discl.present) {  // SAR-DISRP-2
+    int s1 = (h.h1 - h.h4).sign(), s2 = (h.h2 - h.h4).sign();
+    bool opposite = s1 * s2 < 0;
+    out.retraction_plane = ProgrammedDecision{"SAR-DISRP-2", opposite ? "opposite-sides" : "same-side", "", 0.0};
+    if (opposite) {
+      out.alarm = 10748;
+      return out;
+    }
+  }
+  // SAR-DISCL-3 (decision 9): h(P1), h(P2), h(P4) monotone; P2 at most MD20204 outside is clamped
+  // to the nearer bound. Boundary rule: exactly MD20204 outside is clamped (slack 0 is inside).
+  Decimal lo = std::min(h.h1, h.h4), hi = std::max(h.h1, h.h4);
+  Decimal excess = h.h2 < lo ? lo - h.h2 : h.h2 > hi ? h.h2 - hi : Decimal{};
+  Decimal slack = md.wab_clearance_tolerance - excess;
+  if (excess.is_zero()) {
+    out.reversal = with_margin("SAR-DISCL-3", "between", slack);
+  } else if (slack.sign() >= 0) {
+    out.reversal = with_margin("SAR-DISCL-3", "clamped", slack);
+    h.h2 = h.h2 < lo ? lo : hi;
+  } else {
+    out.reversal = with_margin("SAR-DISCL-3", "reversal", slack);
+    out.alarm = 10741;
+  }
+  return out;
+}
+
+ProgrammedDecision cr_circle_reach(const Block& b) {
+  PlaneAxes ax = plane_axes(b.state.plane);
+  PlaneDelta d = delta(b.start, b.end, ax);
+  mpz_class chord2 = d.a * d.a + d.b * d.b;
+  mpz_class cr = units(*b.words.cr);
+  if (cr < 0) cr = -cr;
+  // Boundary rule: a chord of exactly 2|CR| is reached (a half circle); a chord of 0 is not
+  // (no circle is defined by one point and a radius), whatever the margin.
+  bool reachable = sign(chord2) > 0 && chord2 <= 4 * cr * cr;
+  int margin_sign = sign(4 * cr * cr - chord2);
+  return with_root_margin("ARC-CR-1", reachable ? "circle" : "unreachable", margin_sign, [&](mpfr_t v) {
+    mpfr_t c;
+    mpfr_init2(c, 256);
+    set_z(c, chord2);
+    mpfr_sqrt(c, c, MPFR_RNDN);
+    set_z(v, 2 * cr);
+    mpfr_sub(v, v, c, MPFR_RNDN);
+    mpfr_clear(c);
+  });
+}
+
+ProgrammedDecision circle_end_point(const Block& b, const MachineData& md) {
+  PlaneAxes ax = plane_axes(b.state.plane);
+  PlaneDelta s = delta(*b.centre, b.start, ax), e = delta(*b.centre, b.end, ax);
+  mpz_class A = s.a * s.a + s.b * s.b, B = e.a * e.a + e.b * e.b;  // start and end radius squared
+  mpz_class c = units(md.circle_error_const);                      // MD21000, units
+  mpq_class f(units(md.circle_error_factor), mpz_class(Decimal::kUnitsPerOne));  // MD21010, a plain factor
+  // d = |sqrt(B) - sqrt(A)|, t = max(c, f sqrt(A)); excess = d - t = min(d - c, d - f sqrt(A)).
+  // sign(d - c) = sign(d^2 - c^2) = sign(X - sqrt(4AB)) with X = A + B - c^2.
+  auto sign_d_minus_c = [&]() {
+    mpz_class X = A + B - c * c;
+    if (X < 0) return -1;
+    return sign(X * X - 4 * A * B);
+  };
+  // sign(d - f sqrt(A)): end outside, sqrt(B) - (1+f) sqrt(A); inside, (1-f) sqrt(A) - sqrt(B).
+  auto sign_d_minus_fa = [&]() {
+    if (B >= A) {
+      mpq_class k = (1 + f) * (1 + f) * A;
+      return sgn(mpq_class(B) - k);
+    }
+    mpq_class one_minus = 1 - f;
+    if (sgn(one_minus) <= 0) return sgn(B) == 0 && sgn(one_minus) == 0 ? 0 : -1;
+    return sgn(one_minus * one_minus * A - mpq_class(B));
+  };
+  int sc = sign_d_minus_c(), sf = sign_d_minus_fa();
+  int excess_sign = (sc < 0 || sf < 0) ? -1 : (sc == 0 || sf == 0) ? 0 : 1;
+  // Boundary rule: a difference of exactly the tolerance is within.
+  bool within = excess_sign <= 0;
+  return with_root_margin("ARC-CENTRE-2", within ? "within" : "beyond", excess_sign, [&](mpfr_t v) {
+    mpfr_t ra, rb, t, k;
+    for (auto* x : {&ra, &rb, &t, &k}) mpfr_init2(*x, 256);
+    set_z(ra, A), mpfr_sqrt(ra, ra, MPFR_RNDN);
+    set_z(rb, B), mpfr_sqrt(rb, rb, MPFR_RNDN);
+    mpfr_sub(v, rb, ra, MPFR_RNDN);
+    mpfr_abs(v, v, MPFR_RNDN);
+    mpfr_set_q(k, f.get_mpq_t(), MPFR_RNDN);
+    mpfr_mul(t, k, ra, MPFR_RNDN);
+    set_z(k, c);
+    mpfr_max(t, t, k, MPFR_RNDN);
+    mpfr_sub(v, v, t, MPFR_RNDN);
+    for (auto* x : {&ra, &rb, &t, &k}) mpfr_clear(*x);
+  });
+}
+
+}  // namespace cutcom
