@@ -9,7 +9,7 @@ namespace cutcom::props {
 namespace {
 
 // covers: PROP-CD-1 TRC-CD-1 TRC-CD-2 TRC-CD-3 TRC-CD-4
-RC_GTEST_PROP(Collision, CdonPathKeepsTheRadiusFromTheContourOrRaises10751, ()) {
+RC_GTEST_PROP(CollisionProperty, CdonPathKeepsTheRadiusFromTheContourOrRaises10751, ()) {
   ContourCase c = *bottleneck();
   std::string text = to_program(c);
   ref::ClearanceCheck check = ref::exact_clearance(text, machine_data_of(c));

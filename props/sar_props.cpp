@@ -45,7 +45,7 @@ PlaneAxes axes_of(const ContourCase& c) {
 double mm(std::int64_t units, int decimals) { return static_cast<double>(units) * std::pow(10.0, -decimals); }
 
 // covers: PROP-SAR-1 SAR-POINTS-1 SAR-DISR-1 SAR-DISR-2
-RC_GTEST_PROP(Sar, ElementIsTangentAtP4AndFollowsDisr, ()) {
+RC_GTEST_PROP(SarProperty, ElementIsTangentAtP4AndFollowsDisr, ()) {
   ContourCase c = *sar_approach_only();
   CaseRuns r = run_case(c, false);
   if (r.ref_unsupported || !r.ref.alarms.empty() || r.ref.variables.empty()) {
@@ -98,7 +98,7 @@ RC_GTEST_PROP(Sar, ElementIsTangentAtP4AndFollowsDisr, ()) {
 }
 
 // covers: PROP-SAR-2 SAR-DISCL-1 SAR-DISCL-2 SAR-DISCL-3 SAR-SEG-1 SAR-SEG-2
-RC_GTEST_PROP(Sar, InfeedIsMonotoneOrAlarm10741, ()) {
+RC_GTEST_PROP(SarProperty, InfeedIsMonotoneOrAlarm10741, ()) {
   ContourCase c = *sar_approach_only();
   CaseRuns r = run_case(c, false);
   if (r.ref_unsupported) return;
@@ -152,7 +152,7 @@ ContourCase mirrored(const ContourCase& c) {
 }
 
 // covers: PROP-SAR-3 SAR-POINTS-2 SAR-END-1
-RC_GTEST_PROP(Sar, ApproachAndRetractionAreMirrorImages, ()) {
+RC_GTEST_PROP(SarProperty, ApproachAndRetractionAreMirrorImages, ()) {
   ContourCase c = *sar_approach_only();
   c.sar.p4_mode = 0, c.sar.fad_in = false;
   c.kont_select = c.kont_deselect = false;  // NORM both ways: KONT has its own mirror property
@@ -200,7 +200,7 @@ RC_GTEST_PROP(Sar, ApproachAndRetractionAreMirrorImages, ()) {
 }
 
 // covers: PROP-SAR-4 SAR-P4-1 SAR-P4-2
-RC_GTEST_PROP(Sar, ThreeWaysToProgramP4GiveTheSamePath, ()) {
+RC_GTEST_PROP(SarProperty, ThreeWaysToProgramP4GiveTheSamePath, ()) {
   ContourCase c = *sar_approach_only();
   // A block that does not move in the plane cannot give P4 (SAR-P4-1): start off the first point.
   if (c.start_x == c.first_x && c.start_y == c.first_y) c.start_x += 1000;

@@ -166,9 +166,14 @@ int main(int argc, char** argv) {
           cited[id][part].push_back({rel(p), static_cast<int>(i + 1), rank_of(p, lines[i])});
     }
   const std::regex test_name(R"((TEST|TEST_F|RC_GTEST_PROP)\((\w+),\s*(\w+))");
+  std::map<std::string, std::set<std::string>> suites;  // part -> suite names
   for (const char* part : {"tests", "props"})
     for (const auto& p : sources(root / part, {".cpp"})) {
       auto lines = lines_of(p);
+      for (const auto& l : lines) {
+        std::smatch m;
+        if (std::regex_search(l, m, test_name)) suites[part].insert(m[2].str());
+      }
       for (std::size_t i = 0; i < lines.size(); ++i) {
         if (lines[i].find("covers:") == std::string::npos) continue;
         std::string name;
@@ -186,6 +191,10 @@ int main(int argc, char** argv) {
         }
       }
     }
+
+  // A property suite and a unit-test suite never share a name (a test name says which it is).
+  for (const auto& s : suites["props"])
+    if (suites["tests"].count(s)) errors.push_back(fmt::format("suite {} is both a unit-test and a property suite", s));
 
   // 3. Rules: every cited ID exists; implemented clauses are tested, TRC ones cited by both engines.
   for (const auto& [id, parts] : cited)
