@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cutcom/ref/exact_checks.hpp"
 #include "generators.hpp"
 #include "run_case.hpp"
 

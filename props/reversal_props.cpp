@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "cutcom/ref/exact_checks.hpp"
 #include "generators.hpp"
 #include "run_case.hpp"
 

@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
   std::map<std::string, std::set<std::string>> tests;                      // id -> test names
   std::map<std::string, Place> test_place;                                 // test name -> where
   auto rel = [&](const fs::path& p) { return fs::relative(p, root).string(); };
-  for (const char* part : {"ref", "fast", "core", "cli"})
+  for (const char* part : {"ref", "fast", "core", "cli", "certify"})
     for (const auto& p : sources(root / part, {".cpp", ".hpp", ".h"})) {
       auto lines = lines_of(p);
       for (std::size_t i = 0; i < lines.size(); ++i)
@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
   // 3b. The repository stands alone: no text refers to material outside it.
   const std::string outside[] = {std::string("../") + "shared", std::string("shared/") + "reference",
                                  std::string("trc-") + "digest"};
-  for (const char* part : {"spec", "docs", "ref", "fast", "core", "cli", "props", "tests", "tools", "bench", "fuzz",
+  for (const char* part : {"spec", "docs", "ref", "fast", "core", "cli", "certify", "props", "tests", "tools", "bench", "fuzz",
                            "examples", "scripts"})
     for (const auto& p : sources(root / part, {".md", ".cpp", ".hpp", ".h", ".sh", ".txt", ".mpf", ".MPF"})) {
       auto lines = lines_of(p);
@@ -259,6 +259,7 @@ int main(int argc, char** argv) {
     tested += impl && !tests[c.id].empty();
     std::string shared = link(cited[c.id]["core"]);
     if (shared == "—") shared = link(cited[c.id]["cli"]);
+    if (shared == "—") shared = link(cited[c.id]["certify"]);
     t << fmt::format("| {} {} | {} | {} | {} | {} | {} | {} |\n", c.id, c.title, c.kind, c.status,
                      link(cited[c.id]["ref"]), link(cited[c.id]["fast"]), shared,
                      names.empty() ? "**none**" : fmt::format("{} ({})", tests[c.id].size(), names));

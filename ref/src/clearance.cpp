@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "cutcom/ref/exact_checks.hpp"
 #include "circle_position.hpp"
 #include "exact_path.hpp"
 #include "exact_root.hpp"

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "cutcom/ref/exact_checks.hpp"
 #include "exact_path.hpp"
 
 namespace cutcom::ref {

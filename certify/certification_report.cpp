@@ -259,7 +259,7 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
     md << fmt::format("| {} {} | {} | {} | {} |\n", c.id, c.title, key.empty() ? "—" : "`" + key + "`",
                       n == 0 ? std::string("**not reached**") : std::to_string(n),
                       u ? (std::string(u->why).empty() ? "a branch of its own, not reached" : u->why)
-                        : "no evidence listed (props/certification_report.cpp)");
+                        : "no evidence listed (certify/certification_report.cpp)");
   }
   md << fmt::format("\n{} engine clauses are not reached by the campaign (above, with the reason).\n", unreached);
   md << "\nNot engine rules, so without a branch: the reader, tool and machine data (NC-, TOOL-, MD-: the\n"
