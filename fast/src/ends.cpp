@@ -12,15 +12,15 @@ void Engine::State::approach(const Block& b) {
     // TRC-SEL-8: deselected before any traversing block: no selection takes place.
     decide("TRC-SEL-8", selection.line, "deselected-before-contour");
     line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
-    run_dummies_uncompensated();
+    run_held_back_uncompensated();
     phase = Phase::kOff;
-    return off(b);
+    return compensation_off(b);
   }
-  if (!check_active_block(b)) return;
+  if (!still_compensable(b)) return;
   if (b.state.side != side)
     throw UnsupportedError(  // TRC-UNSUP-1
         b.words.line, "change of compensation side G41/G42 before the first contour block");
-  if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3: no in-plane displacement
+  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   prev_slot ^= 1;
   prev_blocks[static_cast<std::size_t>(prev_slot)] = copy_of(b);
   const BlockCopy& first = prev_blocks[static_cast<std::size_t>(prev_slot)];
@@ -123,7 +123,7 @@ void Engine::State::approach_around(const BlockCopy& first, const Element& e, do
   if (!found) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
     decide("TRC-KONT-3", selection.line, "circle");
     line(selection, selection.start, xyz(a, hv), OriginKind::kApproach, selection.rapid);
-    run_dummies(a);
+    run_held_back(a);
     Vec2 q = Element::offset(k.vertex, e.start_tangent(), s * r);
     Origin corner = origin(selection, OriginKind::kTransitionCircle);
     corner.next_line = first.line, corner.next_block = first.number, corner.next_insert = first.insert;
@@ -133,7 +133,7 @@ void Engine::State::approach_around(const BlockCopy& first, const Element& e, do
   } else {                                                                           // TRC-KONT-4
     decide("TRC-KONT-4", selection.line, "intersection");
     line(selection, selection.start, xyz(x, hv), OriginKind::kApproach, selection.rapid);
-    run_dummies(x);
+    run_held_back(x);
     open_element(first, e, x, radius);
   }
   phase = Phase::kActive;
@@ -265,7 +265,7 @@ void Engine::State::deselect(const Block& b) {
   }
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!close_open(end, last.line, last.number, true)) return;
-  run_dummies(end);
+  run_held_back(end);
   retraction_line(last, end);
 }
 
@@ -275,7 +275,7 @@ void Engine::State::deselect_in_place(const Block& b) {
   decide("TRC-DESEL-3", b.words.line, "in-place");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!close_open(end, b.words.line, b.words.number, true)) return;
-  run_dummies(end);
+  run_held_back(end);
   retract_from = end;
   phase = Phase::kRetracting;
   retraction_pending(b);
@@ -296,7 +296,7 @@ void Engine::State::retraction_pending(const Block& b) {
   // Selected again: the approach starts where the tool is (as after a side change, TRC-SIDE-1).
   PathPoint tool = xyz(retract_from, h(c.start));
   phase = Phase::kOff;
-  off(b);
+  compensation_off(b);
   if (phase == Phase::kApproach) {
     selection.start = tool;
     selection_from_tool = true;
@@ -324,14 +324,14 @@ void Engine::State::retract_around(BlockCopy& last, const Kont& k) {
     Origin corner = origin(open, OriginKind::kTransitionCircle);
     corner.next_line = last.line, corner.next_block = last.number, corner.next_insert = last.insert;
     if (!close_open(from, last.line, last.number, true)) return;
-    run_dummies(from);
+    run_held_back(from);
     double hv = h(last.start);
     if (r > 0) arc(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
     return retraction_line(last, rp);
   }
   decide("TRC-KONT-4", last.line, "intersection");
   if (!close_open(x, last.line, last.number)) return;
-  run_dummies(x);
+  run_held_back(x);
   retraction_line(last, x);
 }
 
@@ -345,13 +345,13 @@ void Engine::State::end_of_program() {
     decide("TRC-END-1", selection.line, "no-contour");
     sink.notice({selection.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
     line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
-    run_dummies_uncompensated();
+    run_held_back_uncompensated();
   } else if (phase == Phase::kActive) {
     decide("TRC-END-1", open.line, "active-at-end");
     sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
     if (!close_open(end, open.line, open.number, true)) return;
-    run_dummies(end);
+    run_held_back(end);
   }
   phase = Phase::kOff;
 }

@@ -12,7 +12,7 @@
 
 namespace cutcom::fast {
 
-void Engine::State::off(const Block& b) {
+void Engine::State::compensation_off(const Block& b) {
   if (b.state.side != Side::kOff) {
     if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
     if (!b.programs_plane_axis()) {
@@ -41,12 +41,12 @@ void Engine::State::change_side(const Block& b) {
   if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
   if (!b.programs_plane_axis()) {
     decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
-    return queue_dummy(b);
+    return hold_back(b);
   }
   decide("TRC-SIDE-1", b.words.line, "side-change");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!close_open(end, b.words.line, b.words.number, true)) return;
-  run_dummies(end);
+  run_held_back(end);
   PathPoint tool = xyz(end, h(copy_of(b).start));
   select(b);
   selection.start = tool;  // the approach starts where the tool is
@@ -73,7 +73,7 @@ void Engine::State::select(const Block& b) {
   phase = Phase::kApproach;
 }
 
-bool Engine::State::check_active_block(const Block& b) {
+bool Engine::State::still_compensable(const Block& b) {
   if (b.state.side == Side::kOff) {
     if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
       raise(10754, b.words.line, b.words.number);
@@ -90,12 +90,12 @@ bool Engine::State::check_active_block(const Block& b) {
   return true;
 }
 
-void Engine::State::queue_dummy(const Block& b) {
+void Engine::State::hold_back(const Block& b) {
   if (dummy_count == md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
   dummies[static_cast<std::size_t>(dummy_count++)] = copy_of(b);
 }
 
-void Engine::State::run_dummies(Vec2 at) {
+void Engine::State::run_held_back(Vec2 at) {
   for (int i = 0; i < dummy_count; ++i) {
     BlockCopy& d = dummies[static_cast<std::size_t>(i)];
     line(d, xyz(at, h(d.start)), xyz(at, h(d.end)), OriginKind::kInfeed, d.rapid);
@@ -103,7 +103,7 @@ void Engine::State::run_dummies(Vec2 at) {
   dummy_count = 0;
 }
 
-void Engine::State::run_dummies_uncompensated() {
+void Engine::State::run_held_back_uncompensated() {
   for (int i = 0; i < dummy_count; ++i) {
     BlockCopy& d = dummies[static_cast<std::size_t>(i)];
     line(d, d.start, d.end, OriginKind::kProgrammed, d.rapid);
@@ -195,8 +195,8 @@ void Engine::State::open_element(const BlockCopy& b, const Element& e, Vec2 star
   open_radius = radius;
 }
 
-void Engine::State::active(const Block& b) {
-  if (!check_active_block(b)) return;
+void Engine::State::compensation_active(const Block& b) {
+  if (!still_compensable(b)) return;
   const BlockCopy* current = nullptr;  // a traversing block, converted once
   if (b.state.side == side && b.moves_in_plane()) {
     int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
@@ -214,7 +214,7 @@ void Engine::State::active(const Block& b) {
     if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
   }
-  if (!b.moves_in_plane()) return queue_dummy(b);  // TRC-DUMMY-3
+  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
   corner(b, *current);
 }
 
@@ -256,7 +256,7 @@ void Engine::State::corner(const Block& b, const BlockCopy& copy) {
   }
   Candidate cand{&copy, &next, next_radius};
   if (!close_open(x, b.words.line, b.words.number, c.kind == Corner::Kind::kTangent, &cand)) return;
-  run_dummies(x);
+  run_held_back(x);
   open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
 }
 
@@ -347,7 +347,7 @@ void Engine::State::skip_at(BlockCopy& k, Vec2 at) {
 void Engine::State::transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
   Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
   if (!close_open(from, b.line, b.number, true)) return;
-  run_dummies(from);
+  run_held_back(from);
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
   Origin corner = origin(open, OriginKind::kTransitionCircle);
   open_element(b, next, to, next_radius, true);
@@ -440,13 +440,13 @@ void Engine::State::step(const Block& b, const PlaneOverride* o) {
   if (!(b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b))) {
     switch (phase) {
       case Phase::kOff:
-        off(b);
+        compensation_off(b);
         break;
       case Phase::kApproach:
         approach(b);
         break;
       case Phase::kActive:
-        active(b);
+        compensation_active(b);
         break;
       case Phase::kRetracting:
         retraction_pending(b);

@@ -187,7 +187,7 @@ struct Engine::State {
   void apply(const PlaneOverride& o, BlockCopy& c) const;
   // A programmed block: through the SAR sequence (SAR-P4-1 ...), then run.
   void take(const Block& b);
-  // Runs one block (the former Engine::push); `o` gives its in-plane points where needed.
+  // Runs one block through the compensation; `o` gives its in-plane points where needed (SAR).
   void step(const Block& b, const PlaneOverride* o = nullptr);
   void sar_approach(std::span<const Block> gathered, int p4_index);
   void sar_retraction(const Block& block);
@@ -307,10 +307,10 @@ struct Engine::State {
   }
 
   // TRC-DUMMY-1: blocks without motion in the plane run at the corner point P*.
-  void run_dummies(Vec2 at);
-  void run_dummies_uncompensated();
+  void run_held_back(Vec2 at);
+  void run_held_back_uncompensated();
   // TRC-DUMMY-2: at most MD20250 of them between two traversing blocks.
-  void queue_dummy(const Block& b);
+  void hold_back(const Block& b);
 
   // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
   // not run backwards; it is output unless its length is 0. The alarm names `alarm_line`: the
@@ -343,10 +343,10 @@ struct Engine::State {
 
   // --- checks shared by the phases with compensation in force --------------------------------
   // Returns false if the block ended the program with an alarm.
-  bool check_active_block(const Block& b);
+  bool still_compensable(const Block& b);
 
   // --- phase: compensation off -----------------------------------------------------------------
-  void off(const Block& b);
+  void compensation_off(const Block& b);
 
   // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40: the old side's last element ends at its normal
   // end point; the first new-side block with a plane axis is a selection block from the tool.
@@ -387,7 +387,7 @@ struct Engine::State {
   void approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k);
 
   // --- phase: compensation active --------------------------------------------------------------
-  void active(const Block& b);
+  void compensation_active(const Block& b);
 
   Carrier carrier_of(const Element& e, double radius) const { return fast::carrier_of(e, radius, s * r); }
 
@@ -518,7 +518,8 @@ struct Engine::State {
   void end_of_program();
 
   // ARC-CENTRE-2: the end point may miss the circle about the programmed centre by at most
-  // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
+  // max(MD21000, MD21010 * radius); beyond, alarm 14040. ARC-CR-1: a CR= circle must reach its end
+  // point. Both decided in core (programmed_decisions.hpp).
   bool arc_is_consistent(const Block& b);
 };
 

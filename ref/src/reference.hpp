@@ -168,7 +168,8 @@ class Reference {
   void step(const Block& b);
 
   // ARC-CENTRE-2: a circle's end point may miss the circle about its programmed centre by at most
-  // max(MD21000, MD21010 * radius); beyond, alarm 14040. CR= circles are not supported yet.
+  // max(MD21000, MD21010 * radius); beyond, alarm 14040. ARC-CR-1: a CR= circle must reach its end
+  // point. Both decided in core (programmed_decisions.hpp).
   bool arc_is_consistent(const Block& b);
 
   ContourElement element_of(const Block& b) const;
