@@ -151,30 +151,31 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
     const HeldRecord crossed = rec;
     rec.element.end = xyz(x, h(rec.element.end));
     const PathPoint end = rec.element.end;
-    held_scratch.assign(held.begin() + record + 1, held.end());
-    held.erase(held.begin() + record + 1, held.end());
+    held.scratch().assign(held.records().begin() + record + 1, held.records().end());
+    held.records().erase(held.records().begin() + record + 1, held.records().end());
     // Cut at (or, rounded, next to) its start: nothing is left of it; an arc from a point to
     // itself would read as a full circle.
     double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
-    if (along <= 64 * std::numeric_limits<double>::epsilon() * scale) held.erase(held.begin() + record);
+    if (along <= 64 * std::numeric_limits<double>::epsilon() * scale)
+      held.records().erase(held.records().begin() + record);
     bool rest = open.block == crossed.owner_block;  // its equidistant was still open
-    for (const HeldRecord& k : held_scratch) rest = rest || k.owner_block == crossed.owner_block;
+    for (const HeldRecord& k : held.scratch()) rest = rest || k.owner_block == crossed.owner_block;
     if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
-    for (std::size_t i = 0; i < held_scratch.size(); ++i) {
-      const HeldRecord& k = held_scratch[i];
+    for (std::size_t i = 0; i < held.scratch().size(); ++i) {
+      const HeldRecord& k = held.scratch()[i];
       if (k.owner_block == crossed.owner_block) continue;
       if (k.owner_block != last_run) {
-        if (last_run >= 0) infeed_of(held_scratch[i - 1], x);
+        if (last_run >= 0) infeed_of(held.scratch()[i - 1], x);
         decide("TRC-LOOK-3", k.owner_line, "skipped");
         last_run = k.owner_block;
       }
       if (!k.is_element) {
         HeldRecord a = k;
         a.action.at = xyz(x, h(k.owner_start));
-        held.push_back(a);
+        held.hold(a);
       }
     }
-    if (last_run >= 0) infeed_of(held_scratch.back(), x);
+    if (last_run >= 0) infeed_of(held.scratch().back(), x);
     if (open.block != crossed.owner_block && open.block != last_run) skip_at(open, x);
   } else {
     looking = false;
@@ -191,8 +192,7 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
 
 void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
   bool on_lead = en.lead != Entry::Lead::kNone && entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
-  if (!on_lead)
-    return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
+  if (!on_lead) return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
   double hv = h(m.start);
   BlockCopy owner = m;
   Origin named;

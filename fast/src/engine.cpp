@@ -368,7 +368,7 @@ void Engine::State::arc(BlockCopy& owner, const PathPoint& from, const PathPoint
   if (direct()) return sink.element(e);
   HeldRecord rec = record_of(owner);
   rec.is_element = true, rec.element = e, rec.radius = norm(ab(from) - ab(centre));
-  held.push_back(rec);
+  held.hold(rec);
 }
 
 void Engine::State::actions(BlockCopy& b, const PathPoint& at) {
@@ -382,19 +382,8 @@ void Engine::State::actions(BlockCopy& b, const PathPoint& at) {
     }
     HeldRecord rec = record_of(b);
     rec.action = a;
-    held.push_back(rec);
+    held.hold(rec);
   }
-}
-
-void Engine::State::release_before(int seq) {
-  std::size_t n = 0;
-  for (; n < held.size() && held[n].seq < seq; ++n) {
-    if (held[n].is_element)
-      sink.element(held[n].element);
-    else
-      sink.action(held[n].action);
-  }
-  held.erase(held.begin(), held.begin() + static_cast<std::ptrdiff_t>(n));
 }
 
 void Engine::State::release_window(const Block& b) {

@@ -12,11 +12,12 @@
 #include <vector>
 
 #include "bottleneck.hpp"
-#include "cutcom/programmed_decisions.hpp"
 #include "cutcom/fast/engine.hpp"
+#include "cutcom/programmed_decisions.hpp"
 #include "cutcom/sar_layout.hpp"
 #include "cutcom/sar_sequence.hpp"
 #include "edge_strategy.hpp"
+#include "held_output.hpp"
 #include "plane_geometry.hpp"
 #include "sar_shape.hpp"
 
@@ -47,8 +48,8 @@ struct BlockCopy {
   FeedType feed_type = FeedType::kG94;
   SarMove sar = SarMove::kNone;
   ContourInsert insert;  // NC-CONTOUR-*: an element the reader inserted
-  bool moves = false;  // motion in the plane
-  bool exact = true;   // start and end are the programmed decimals (`delta` is valid)
+  bool moves = false;    // motion in the plane
+  bool exact = true;     // start and end are the programmed decimals (`delta` is valid)
   // SAR-POINTS-1/2: a SAR element is tangent to the contour at P4 by construction: after it on
   // approach, before it on retraction.
   bool tangent_after = false, tangent_before = false;
@@ -90,17 +91,11 @@ struct Engine::State {
   // last contour block; the next block with a plane axis finishes the retraction (TRC-DESEL-3).
   enum class Phase { kOff, kApproach, kActive, kRetracting };
 
-  State(const MachineData& m, PathSink& out) : md(m), sink(out), sar_seq(m) {
-    // TRC-CD-1: what the window can hold: MD20240 + 2 traversing blocks, each with up to MD20250
-    // blocks without plane motion, each block at most three elements and its actions.
-    std::size_t capacity = static_cast<std::size_t>(m.cutcom_maxnum_check_blocks + 2) *
-                           static_cast<std::size_t>(m.cutcom_maxnum_dummy_blocks + 1) * (3 + BlockWords::kMaxAux);
-    held.reserve(capacity);
-    held_scratch.reserve(capacity);
-  }
+  State(const MachineData& m, PathSink& out) : md(m), sink(out), held(out, m), sar_seq(m) {}
 
   const MachineData& md;
   PathSink& sink;
+  HeldOutput held;  // TRC-CD-1: the collision window's held-back output (held_output.hpp)
   Phase phase = Phase::kOff;
   bool stopped = false;
   bool d0_noticed = false;
@@ -115,7 +110,7 @@ struct Engine::State {
 
   BlockCopy selection;               // kApproach: the selection block
   bool selection_from_tool = false;  // its start is the tool after a side change (TRC-SIDE-1)
-  Vec2 retract_from{};                // TRC-DESEL-3: where the tool waits in the plane
+  Vec2 retract_from{};               // TRC-DESEL-3: where the tool waits in the plane
   // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
   // output once the first element's end is known.
   bool approach_pending = false;
@@ -126,9 +121,9 @@ struct Engine::State {
   // kActive: the open element, whose end waits for the next traversing block.
   BlockCopy open;
   Element open_el;
-  Vec2 open_start;         // start point of its equidistant (after the previous corner)
+  Vec2 open_start;                    // start point of its equidistant (after the previous corner)
   bool open_at_normal_start = false;  // opened at its normal start by construction (a full circle stays whole)
-  double open_radius = 0;  // arcs: radius of its equidistant
+  double open_radius = 0;             // arcs: radius of its equidistant
   // Blocks without motion in the plane since the last traversing block (fixed capacity).
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
   int dummy_count = 0;
@@ -140,25 +135,6 @@ struct Engine::State {
   std::vector<BlockCopy> skipped;
   int examined = 0, dummy_run = 0;
 
-  // TRC-CD-1: output waits here, in path order, until the MD20240 window has passed it (under
-  // CDON); a bottleneck cut removes what follows the cut point. Reserved once.
-  struct HeldRecord {
-    int seq = 0;  // the owner's traversing ordinal
-    bool is_element = false;
-    PathElement element;
-    double radius = 0;  // arcs: radius in the plane
-    ActionEvent action;
-    int owner_line = 0;  // the block it belongs to, to run it again at a cut
-    int owner_block = -1;  // that block's identity (BlockCopy::block)
-    ContourInsert owner_insert;
-    std::optional<std::int64_t> owner_number;
-    PathPoint owner_start, owner_end;
-    bool owner_rapid = false;
-    Decimal owner_feed;
-    FeedType owner_feed_type = FeedType::kG94;
-    SarMove owner_sar = SarMove::kNone;
-  };
-  std::vector<HeldRecord> held, held_scratch;
   bool holding = false;  // CDON in force for the block being processed: output waits in `held`
   int traversing = 0;
   std::array<BlockCopy, 2> prev_blocks;  // the last traversing block with compensation and the one before
@@ -236,9 +212,8 @@ struct Engine::State {
   }
   // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
   bool direct() const { return !holding && held.empty(); }
-  // Releases the records of traversing blocks before `seq`.
-  void release_before(int seq);
-  void release_all() { release_before(std::numeric_limits<int>::max()); }
+  void release_before(int seq) { held.release_before(seq); }
+  void release_all() { held.release_all(); }
   // With CDON in force the output of the last MD20240 traversing blocks waits; otherwise it goes
   // out block by block.
   void release_window(const Block& b);
@@ -294,7 +269,7 @@ struct Engine::State {
     if (direct()) return sink.element(e);
     HeldRecord rec = record_of(owner);
     rec.is_element = true, rec.element = e;
-    held.push_back(rec);
+    held.hold(rec);
   }
 
   void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
