@@ -419,6 +419,8 @@ void Engine::State::step(const Block& b, const PlaneOverride* o) {
   if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
     throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
   if (o) over = *o;
+  // Off, the compensation has no plane of its own yet: that of the block's overridden points.
+  if (o && phase == Phase::kOff) axes = o->axes;
   over_block = o ? &b : nullptr;
   if (b.moves_in_plane()) ++traversing;
   holding = b.state.collision == CollisionMode::kCdon;

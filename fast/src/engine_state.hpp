@@ -86,6 +86,22 @@ struct BlockCopy {
 
 inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
+// Plane <-> workpiece coordinates in a given plane (the compensation's, or a SAR block's).
+inline Vec2 ab_in(const PathPoint& p, PlaneAxes a) { return {pick(p, a.abscissa), pick(p, a.ordinate)}; }
+inline double h_in(const PathPoint& p, PlaneAxes a) { return pick(p, a.applicate); }
+inline PathPoint xyz_in(Vec2 v, double applicate, PlaneAxes a) {
+  PathPoint p;
+  double* c[3] = {&p.x, &p.y, &p.z};
+  *c[a.abscissa] = v.a, *c[a.ordinate] = v.b, *c[a.applicate] = applicate;
+  return p;
+}
+// The element of a block in the plane `a`.
+inline Element element_in(const BlockCopy& c, PlaneAxes a) {
+  if (!c.arc) return Element::line(ab_in(c.start, a), ab_in(c.end, a));
+  if (c.has_centre) return Element::circle(ab_in(c.start, a), ab_in(c.end, a), ab_in(c.centre, a), c.sense);
+  return Element::circle_by_radius(ab_in(c.start, a), ab_in(c.end, a), c.cr, c.sense);
+}
+
 struct Engine::State {
   // kRetracting: a G40 block without a plane axis left the tool at the normal end point of the
   // last contour block; the next block with a plane axis finishes the retraction (TRC-DESEL-3).
@@ -153,6 +169,7 @@ struct Engine::State {
   // --- SAR: smooth approach and retraction (sar.cpp) -----------------------------------------
   // Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3).
   struct PlaneOverride {
+    PlaneAxes axes{0, 1, 2};  // the plane its points are in (the SAR block's)
     bool start = false, end = false;
     Vec2 start_ab, end_ab;
     bool circle = false;  // the SAR element's circle
@@ -219,14 +236,9 @@ struct Engine::State {
   void release_window(const Block& b);
 
   // --- plane <-> workpiece coordinates -------------------------------------------------------
-  Vec2 ab(const PathPoint& p) const { return {pick(p, axes.abscissa), pick(p, axes.ordinate)}; }
-  double h(const PathPoint& p) const { return pick(p, axes.applicate); }
-  PathPoint xyz(Vec2 v, double applicate) const {
-    PathPoint p;
-    double* c[3] = {&p.x, &p.y, &p.z};
-    *c[axes.abscissa] = v.a, *c[axes.ordinate] = v.b, *c[axes.applicate] = applicate;
-    return p;
-  }
+  Vec2 ab(const PathPoint& p) const { return ab_in(p, axes); }
+  double h(const PathPoint& p) const { return h_in(p, axes); }
+  PathPoint xyz(Vec2 v, double applicate) const { return xyz_in(v, applicate, axes); }
 
   // --- output ----------------------------------------------------------------------------------
   void decide(std::string_view clause, int line, std::string_view branch) {
@@ -275,11 +287,7 @@ struct Engine::State {
   void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
            const Origin& from_what);
 
-  Element element_of(const BlockCopy& c) const {
-    if (!c.arc) return Element::line(ab(c.start), ab(c.end));
-    if (c.has_centre) return Element::circle(ab(c.start), ab(c.end), ab(c.centre), c.sense);
-    return Element::circle_by_radius(ab(c.start), ab(c.end), c.cr, c.sense);
-  }
+  Element element_of(const BlockCopy& c) const { return element_in(c, axes); }
 
   // TRC-DUMMY-1: blocks without motion in the plane run at the corner point P*.
   void run_held_back(Vec2 at);

@@ -13,19 +13,13 @@ Vec2 plane_of(const Point3& p, PlaneAxes a) {
   return {coord(p, a.abscissa).to_double(), coord(p, a.ordinate).to_double()};
 }
 
-// Element computations in the SAR block's plane, whatever plane the compensation has.
-struct AxesScope {
-  PlaneAxes& axes;
-  PlaneAxes saved;
-  AxesScope(PlaneAxes& a, PlaneAxes use) : axes(a), saved(a) { axes = use; }
-  ~AxesScope() { axes = saved; }
-};
 }  // namespace
 
 void Engine::State::apply(const PlaneOverride& o, BlockCopy& c) const {
-  if (o.start) c.start = xyz(o.start_ab, h(c.start));
-  if (o.end) c.end = xyz(o.end_ab, h(c.end));
-  if (o.circle) c.arc = true, c.has_centre = true, c.centre = xyz(o.centre, h(c.start)), c.sense = o.sense;
+  PlaneAxes a = o.axes;
+  if (o.start) c.start = xyz_in(o.start_ab, h_in(c.start, a), a);
+  if (o.end) c.end = xyz_in(o.end_ab, h_in(c.end, a), a);
+  if (o.circle) c.arc = true, c.has_centre = true, c.centre = xyz_in(o.centre, h_in(c.start, a), a), c.sense = o.sense;
   c.tangent_after = o.tangent_after, c.tangent_before = o.tangent_before;
 }
 
@@ -39,6 +33,7 @@ void Engine::State::take(const Block& b) {
   PlaneOverride end_over;
   bool use_end = false;
   if (at_sar_end) {
+    end_over.axes = plane_axes(sar_end_plane);
     end_over.start = true, end_over.start_ab = sar_end;
     if (keeps_sar_end(b, sar_end_plane))
       end_over.end = true, end_over.end_ab = sar_end;
@@ -48,7 +43,6 @@ void Engine::State::take(const Block& b) {
   }
   switch (sar_seq.take(b)) {
     case SarSequence::Step::kPass:
-      if (use_end && phase == Phase::kOff) axes = plane_axes(sar_end_plane);  // where apply() works
       return step(b, use_end ? &end_over : nullptr);
     case SarSequence::Step::kHold:
       return;
@@ -110,7 +104,8 @@ bool Engine::State::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case
   if (check.retraction_plane) decide(*check.retraction_plane, b.words.line);
   if (check.reversal) decide(*check.reversal, b.words.line);
   if (check.alarm)
-    return raise(check.alarm, b.words.line, b.words.number, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"), false;
+    return raise(check.alarm, b.words.line, b.words.number, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"),
+           false;
   set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }
@@ -121,11 +116,7 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
   const Block& d = g.back();
   PlaneAxes ax = plane_axes(a.state.plane);
   if (d.is_arc() && !arc_is_consistent(d)) return;
-  Vec2 t;
-  {
-    AxesScope scope(axes, ax);
-    t = element_of(BlockCopy::of(d)).start_tangent();  // SAR-TANGENT-1
-  }
+  Vec2 t = element_in(BlockCopy::of(d), ax).start_tangent();  // SAR-TANGENT-1
   decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
   Vec2 p4 = plane_of(m.end, ax), p0 = plane_of(a.start, ax);
   SarTrc trc = sar_trc(a.state);
@@ -149,19 +140,16 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
   // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
   SarVariables v;
   v.line = a.words.line, v.block = a.words.number;
-  {
-    AxesScope scope(axes, ax);
-    v.p_apr = xyz(shape.p3, plan.h.h3.to_double());
-    v.p_aep = xyz(p4, plan.h.h4.to_double());
-  }
+  v.p_apr = xyz_in(shape.p3, plan.h.h3.to_double(), ax);
+  v.p_aep = xyz_in(p4, plan.h.h4.to_double(), ax);
   sink.sar_variables(v);
   push_sub_blocks(shape, std::nullopt);
   for (std::size_t k = 1; k < g.size() && !stopped; ++k) {
     if (static_cast<int>(k) == p4_index && sar_subs.element_in_p4_block) {
       PlaneOverride o;
+      o.axes = ax;
       o.start = true, o.start_ab = shape.p3, o.end = true, o.end_ab = p4;
       o.circle = shape.circle, o.centre = shape.centre, o.sense = shape.sense, o.tangent_after = true;
-      if (phase == Phase::kOff) axes = ax;  // where apply() works
       step(sar_subs.p4_element, &o);
     } else {
       step(g[k]);
@@ -171,14 +159,10 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
 
 void Engine::State::sar_retraction(const Block& block) {
   PlaneAxes ax = plane_axes(block.state.plane);
-  Vec2 t, p4;
-  {
-    AxesScope scope(axes, ax);
-    BlockCopy copy = BlockCopy::of(last_contour);
-    if (last_contour_overridden) apply(last_contour_over, copy);
-    Element last = element_of(copy);
-    t = last.end_tangent(), p4 = last.end;  // SAR-TANGENT-1
-  }
+  BlockCopy copy = BlockCopy::of(last_contour);
+  if (last_contour_overridden) apply(last_contour_over, copy);
+  Element last = element_in(copy, ax);
+  Vec2 t = last.end_tangent(), p4 = last.end;  // SAR-TANGENT-1
   decide("SAR-TANGENT-1", block.words.line, "end-of-contour");
   SarEndCase end_case = sar_end_case(block);
   decide("SAR-END-1", block.words.line,
@@ -244,6 +228,7 @@ void Engine::State::push_sub_blocks(const SarShape& shape, const std::optional<V
   for (int k = 0; k < sar_subs.count && !stopped; ++k) {
     const Block& b = sar_subs.blocks[static_cast<std::size_t>(k)];
     PlaneOverride o;
+    o.axes = ax;
     if (b.sar.start_at_p3) o.start = true, o.start_ab = shape.p3;
     if (b.sar.end_at_p3) o.end = true, o.end_ab = shape.p3;
     if (b.sar.move == SarMove::kElement) {
@@ -254,7 +239,6 @@ void Engine::State::push_sub_blocks(const SarShape& shape, const std::optional<V
       (shape.approach ? o.tangent_after : o.tangent_before) = true;
     }
     if (b.sar.end_at_tool_centre) o.end = true, o.end_ab = *tool_centre;
-    if (phase == Phase::kOff) axes = ax;  // where apply() works; selection sets it again
     step(b, &o);
   }
 }
