@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
+#include <optional>
 
 namespace cutcom::props {
 
@@ -17,6 +19,43 @@ double margin_value(const Decision& d) {
 
 double distance(const PathPoint& a, const PathPoint& b) {
   return std::max({std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z)});
+}
+
+// How far an arc turns, in [0, 2π], in its plane: the axis on which centre and start agree is the
+// applicate (both engines put the centre at the start's applicate; a helix's end leaves it); of
+// several, the one in whose plane start and end are equally far from the centre. A full circle
+// (start == end) turns 2π; otherwise the angle between the radius vectors u, v, or 2π minus it,
+// by the sense of u × v against the arc's direction (counter-clockwise seen from the positive
+// applicate axis). Empty where that sense is within the rounding of u × v (start and end a few
+// ulps apart) or no axis qualifies: the sweep cannot be told from the points.
+std::optional<double> sweep_of(const PathElement& e) {
+  if (e.start.x == e.end.x && e.start.y == e.end.y && e.start.z == e.end.z) return 2 * std::numbers::pi;
+  const double c[3] = {e.center.x, e.center.y, e.center.z}, s[3] = {e.start.x, e.start.y, e.start.z},
+               t[3] = {e.end.x, e.end.y, e.end.z};
+  static constexpr int kPlane[3][2] = {{1, 2}, {2, 0}, {0, 1}};  // (abscissa, ordinate) about axis k
+  int best = -1;
+  double best_mismatch = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (c[k] != s[k]) continue;
+    int a = kPlane[k][0], b = kPlane[k][1];
+    double mismatch = std::fabs(std::hypot(s[a] - c[a], s[b] - c[b]) - std::hypot(t[a] - c[a], t[b] - c[b]));
+    if (best < 0 || mismatch < best_mismatch) best = k, best_mismatch = mismatch;
+  }
+  if (best < 0) return std::nullopt;
+  int a = kPlane[best][0], b = kPlane[best][1];
+  double ua = s[a] - c[a], ub = s[b] - c[b], va = t[a] - c[a], vb = t[b] - c[b];
+  double cross = ua * vb - ub * va, dot = ua * va + ub * vb;
+  double nu = std::hypot(ua, ub), nv = std::hypot(va, vb);
+  if (!(std::fabs(cross) > 64 * kUnitRoundoff * (nu + nv) * std::max(nu, nv)) && dot > 0)
+    return std::nullopt;  // nearly parallel: a sliver or nearly a full circle, too close to tell
+  double angle = std::atan2(std::fabs(cross), dot);  // in [0, π]
+  return (cross > 0) == e.ccw ? angle : 2 * std::numbers::pi - angle;
+}
+// The radius at the start, for lengths along the circle (a helix's is its radius in the plane).
+double radius_of(const PathElement& e) {
+  return std::max({std::hypot(e.start.x - e.center.x, e.start.y - e.center.y),
+                   std::hypot(e.start.y - e.center.y, e.start.z - e.center.z),
+                   std::hypot(e.start.z - e.center.z, e.start.x - e.center.x)});
 }
 }  // namespace
 
@@ -273,13 +312,21 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     if (ref.alarms[i].number != fast.alarms[i].number || ref.alarms[i].line != fast.alarms[i].line)
       return diverge(fmt::format("alarm {} line {} vs {} line {}", ref.alarms[i].number, ref.alarms[i].line,
                                  fast.alarms[i].number, fast.alarms[i].line));
-  // PATH-ELEMENT-1 writes no line of length zero; a line shorter than the tolerance is zero for
-  // one engine and a sliver for the other (a tool position one rounding off a programmed point):
-  // neither counts.
+  // PATH-ELEMENT-1 writes no element of length zero; one shorter than the tolerance is zero for
+  // one engine and a sliver for the other (a tool position one rounding off a programmed point, a
+  // transition circle between two equidistants that meet within rounding): neither counts. An
+  // arc is a sliver by its length along the circle (sweep × radius), never by its chord: a full
+  // circle has a chord of 0.
+  auto sliver = [&](const PathElement& e) {
+    if (!(distance(e.start, e.end) <= tol.coordinate)) return false;
+    if (e.type != ElementType::kArc) return true;
+    std::optional<double> sweep = sweep_of(e);
+    return sweep && *sweep * radius_of(e) <= tol.coordinate;
+  };
   auto without_slivers = [&](const std::vector<PathElement>& path) {
     std::vector<const PathElement*> out;
     for (const PathElement& e : path)
-      if (e.type == ElementType::kArc || !(distance(e.start, e.end) <= tol.coordinate)) out.push_back(&e);
+      if (!sliver(e)) out.push_back(&e);
     return out;
   };
   const std::vector<const PathElement*> rp = without_slivers(ref.path), fp = without_slivers(fast.path);
@@ -294,7 +341,13 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
         (r.type == ElementType::kArc && r.ccw != f.ccw))
       return diverge(fmt::format("element {}: {} vs {}", i, describe(r.origin), describe(f.origin)));
     double e = std::max(distance(r.start, f.start), distance(r.end, f.end));
-    if (r.type == ElementType::kArc) e = std::max(e, distance(r.center, f.center));
+    if (r.type == ElementType::kArc) {
+      e = std::max(e, distance(r.center, f.center));
+      // The same end points, but one circle turning the other way round (a full circle against
+      // a sliver): the difference along the circle counts.
+      std::optional<double> rs = sweep_of(r), fs = sweep_of(f);
+      if (rs && fs) e = std::max(e, std::fabs(*rs - *fs) * radius_of(r));
+    }
     v.max_coordinate_error = std::max(v.max_coordinate_error, e);
     if (!(e <= tol.coordinate) && touch && e <= tol.touching) {
       if (v.kind != Verdict::Kind::kKnifeEdge)
