@@ -82,9 +82,39 @@ cutcom::MachineData machine_data(const RunOptions& o) {
   return md;
 }
 
+// Passes everything on and keeps the numbers of the alarms raised, for a hint after the run.
+class AlarmWatch : public cutcom::PathSink {
+ public:
+  explicit AlarmWatch(cutcom::PathSink& to) : to_(to) {}
+  void element(const cutcom::PathElement& e) override { to_.element(e); }
+  void action(const cutcom::ActionEvent& a) override { to_.action(a); }
+  void decision(const cutcom::Decision& d) override { to_.decision(d); }
+  void alarm(const cutcom::Alarm& a) override {
+    numbers.push_back(a.number);
+    to_.alarm(a);
+  }
+  void notice(const cutcom::Notice& n) override { to_.notice(n); }
+  void sar_variables(const cutcom::SarVariables& v) override { to_.sar_variables(v); }
+  std::vector<int> numbers;
+
+ private:
+  cutcom::PathSink& to_;
+};
+
+// TRC-SEL-7 without any tool data: most real programs keep it in the control's tool table.
+void hint_after(const std::vector<int>& alarms, const RunOptions& o) {
+  if (o.tool_files.empty() && std::find(alarms.begin(), alarms.end(), 17181) != alarms.end())
+    std::cerr << "cutcom: alarm 17181: the active tool has no data for its edge. A control keeps tool data in its "
+                 "tool table: give it with --tools FILE ($TC_DPn[t,d]=... and $TC_TP2[t]=\"NAME\" lines, the "
+                 "TO_INI.INI convention) or assign $TC_DP1/$TC_DP6 in the program\n";
+}
+
 bool run_engine(const std::string& engine, cutcom::ProgramReader& reader, const cutcom::MachineData& md,
-                cutcom::PathSink& sink) {
-  return engine == "ref" ? cutcom::ref::run(reader, md, sink) : cutcom::fast::run(reader, md, sink);
+                cutcom::PathSink& out, const RunOptions& o) {
+  AlarmWatch sink(out);
+  bool ok = engine == "ref" ? cutcom::ref::run(reader, md, sink) : cutcom::fast::run(reader, md, sink);
+  hint_after(sink.numbers, o);
+  return ok;
 }
 
 std::string read_all(std::istream& in) {
@@ -159,7 +189,7 @@ int run_command(const RunOptions& o) {
     cutcom::ProgramReader reader(first, md.initial_state());
     control.into(reader);
     cutcom::CollectingSink sink;
-    ok = run_engine(o.engine, reader, md, sink);
+    ok = run_engine(o.engine, reader, md, sink, o);
     cutcom::ProgramReader again(second, md.initial_state());
     control.into(again);
     std::vector<cutcom::Block> blocks;
@@ -176,13 +206,13 @@ int run_command(const RunOptions& o) {
     cutcom::JsonWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
-    ok = run_engine(o.engine, reader, md, writer);
+    ok = run_engine(o.engine, reader, md, writer, o);
     writer.finish();
   } else {
     cutcom::TextWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
-    ok = run_engine(o.engine, reader, md, writer);
+    ok = run_engine(o.engine, reader, md, writer, o);
     writer.finish();
   }
   out->flush();
@@ -231,7 +261,8 @@ int replay_programs(const std::vector<std::string>& files) {
     diverged = diverged || v.verdict == "diverge";
     std::cout << fmt::format("{}: {}", f, v.verdict);
     if (!v.clause.empty()) std::cout << " (" << v.clause << ")";
-    if (v.verdict == "agree") std::cout << fmt::format(", largest coordinate error {:.3g} mm ({:.3g} of the tolerance)", v.error, v.ratio);
+    if (v.verdict == "agree")
+      std::cout << fmt::format(", largest coordinate error {:.3g} mm ({:.3g} of the tolerance)", v.error, v.ratio);
     if (!v.explanation.empty() && v.verdict != "agree") std::cout << ": " << v.explanation;
     std::cout << "\n";
   }
@@ -322,9 +353,10 @@ int main(int argc, char** argv) {
       app.add_subcommand("certify", "certify fast against ref on generated programs (docs/certification.md)");
   certify->add_option("--cases", co.campaign.cases, "cases in this shard (0: until --time)");
   certify->add_option("--time", co.campaign.seconds, "stop after this many seconds");
-  certify->add_option("--budget", co.campaign.budget,
-                      "seconds one case may take (default 60; 0: no limit, all in this process); a case over "
-                      "budget is recorded as over-budget, not compared")
+  certify
+      ->add_option("--budget", co.campaign.budget,
+                   "seconds one case may take (default 60; 0: no limit, all in this process); a case over "
+                   "budget is recorded as over-budget, not compared")
       ->check(CLI::NonNegativeNumber);
   certify->add_option("--seed", co.campaign.seed, "campaign seed (case k is the same program in any sharding)");
   certify->add_option("--shard", co.shard, "I/N: run cases k = I, I+N, I+2N, ... of the campaign");

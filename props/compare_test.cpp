@@ -1,10 +1,10 @@
 // The comparison itself (PROP-DIFF-1): what it counts as a difference between ref's and fast's
 // paths, on hand-made runs.
+#include "compare.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "compare.hpp"
 
 namespace cutcom::props {
 namespace {

@@ -113,6 +113,19 @@ TEST(Cli, StdinMachineDataAndSvg) {
 }  // namespace
 
 namespace {
+// covers: TRC-SEL-7 CLI-1
+TEST(Cli, AnEdgeWithoutToolDataPointsToTheToolTable) {
+  // A real program keeps its tool data in the control: without --tools, T1 D1 has none (17181),
+  // and the message says where it comes from; with the tool file the same program runs.
+  std::string program =
+      write_temp("no_tool_data.mpf", "G17 G0 X-10 Y-10\nT1 D1\nG41 G1 X0 Y0 F100\nX20\nG40 X30 Y-10\n");
+  Result r = sh(kCli + " run " + program, true);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("--tools FILE"), std::string::npos) << r.out;
+  std::string tools = write_temp("no_tool_data.ini", "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\n");
+  EXPECT_EQ(sh(kCli + " run " + program + " --tools " + tools).status, 0);
+}
+
 // covers: TRACE-1
 TEST(Cli, TheTraceRecordsEveryDecisionWithItsMargin) {
   // Both engines trace the same decisions of the example (clause, line, branch); fast gives its
@@ -136,8 +149,10 @@ TEST(Cli, TheTraceRecordsEveryDecisionWithItsMargin) {
     ASSERT_TRUE(fd[i].contains("margin")) << i;
     const std::string exact = rd[i]["margin_exact"];
     const double m = fd[i]["margin"];
-    if (exact[0] == '-') EXPECT_LT(m, 0) << fd[i]["clause"];
-    else if (exact != "0") EXPECT_GT(m, 0) << fd[i]["clause"];
+    if (exact[0] == '-')
+      EXPECT_LT(m, 0) << fd[i]["clause"];
+    else if (exact != "0")
+      EXPECT_GT(m, 0) << fd[i]["clause"];
   }
   EXPECT_GT(margins, 3);
 }
@@ -216,8 +231,8 @@ TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
   EXPECT_EQ(summary_of(dir + "/budget60.json"), summary_of(dir + "/budget0.json"));
   // A budget of a microsecond: cases are killed (over budget, not a divergence) and the shard
   // goes on; every case is counted once, and each one over budget is named.
-  Result tight = sh(kCli + " certify --cases 12 --seed 5 --no-progress --budget 0.000001 --summary " + dir +
-                    "/budget-tight.json");
+  Result tight =
+      sh(kCli + " certify --cases 12 --seed 5 --no-progress --budget 0.000001 --summary " + dir + "/budget-tight.json");
   ASSERT_EQ(tight.status, 0) << tight.out;
   nlohmann::json t = summary_of(dir + "/budget-tight.json");
   EXPECT_EQ(t["cases"], 12);
@@ -267,7 +282,8 @@ TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
     EXPECT_EQ(j["unit"], "mm");
     EXPECT_GT(j["path"].size(), 40u);
     bool cycle_noticed = false;
-    for (const auto& n : j["notices"]) cycle_noticed |= n["text"].get<std::string>().find("CYCLE81") != std::string::npos;
+    for (const auto& n : j["notices"])
+      cycle_noticed |= n["text"].get<std::string>().find("CYCLE81") != std::string::npos;
     EXPECT_TRUE(cycle_noticed);
     bool msg = false;
     for (const auto& a : j["actions"]) msg |= a["function"] == "MSG(\"Drilling\")";

@@ -135,8 +135,8 @@ ProgrammedDecision cr_circle_reach(const Block& b) {
 ProgrammedDecision circle_end_point(const Block& b, const MachineData& md) {
   PlaneAxes ax = plane_axes(b.state.plane);
   PlaneDelta s = delta(*b.centre, b.start, ax), e = delta(*b.centre, b.end, ax);
-  mpz_class A = s.a * s.a + s.b * s.b, B = e.a * e.a + e.b * e.b;  // start and end radius squared
-  mpz_class c = units(md.circle_error_const);                      // MD21000, units
+  mpz_class A = s.a * s.a + s.b * s.b, B = e.a * e.a + e.b * e.b;                // start and end radius squared
+  mpz_class c = units(md.circle_error_const);                                    // MD21000, units
   mpq_class f(units(md.circle_error_factor), mpz_class(Decimal::kUnitsPerOne));  // MD21010, a plain factor
   // d = |sqrt(B) - sqrt(A)|, t = max(c, f sqrt(A)); excess = d - t = min(d - c, d - f sqrt(A)).
   // sign(d - c) = sign(d^2 - c^2) = sign(X - sqrt(4AB)) with X = A + B - c^2.
