@@ -149,10 +149,11 @@ TEST(Cli, TheTraceRecordsEveryDecisionWithItsMargin) {
     ASSERT_TRUE(fd[i].contains("margin")) << i;
     const std::string exact = rd[i]["margin_exact"];
     const double m = fd[i]["margin"];
-    if (exact[0] == '-')
+    if (exact[0] == '-') {
       EXPECT_LT(m, 0) << fd[i]["clause"];
-    else if (exact != "0")
+    } else if (exact != "0") {
       EXPECT_GT(m, 0) << fd[i]["clause"];
+    }
   }
   EXPECT_GT(margins, 3);
 }
