@@ -86,8 +86,9 @@ void ProgramReader::finish_pending(Block* next) {
   if (ang) {  // NC-CONTOUR-3: the corner of two lines given by their angles
     if (!next || !next->words.cw().ang || !next->words.axis[static_cast<std::size_t>(ax.abscissa)].present ||
         !next->words.axis[static_cast<std::size_t>(ax.ordinate)].present || next->is_arc())
-      fail(p.words.line, "ANG= without an end point opens a two-block definition: the next block with motion in "
-                         "the plane must give the end point in both plane axes and its own ANG=");
+      fail(p.words.line,
+           "ANG= without an end point opens a two-block definition: the next block with motion in "
+           "the plane must give the end point in both plane axes and its own ANG=");
     for (int a : {ax.abscissa, ax.ordinate})
       if (next->words.axis[static_cast<std::size_t>(a)].mode == ValueMode::kIncremental ||
           (next->words.axis[static_cast<std::size_t>(a)].mode == ValueMode::kModal && !next->state.absolute))
@@ -133,7 +134,7 @@ void ProgramReader::finish_pending(Block* next) {
   std::string why_not;
   if (corner && !next)
     why_not = between_.size() >= 3 ? "more than three blocks without motion in the plane follow"
-                                    : "no element follows in the plane";
+                                   : "no element follows in the plane";
   else if (corner && (next->is_sar_block() || !next->words.not_simulated.empty()))
     why_not = "the next block is not a contour element";
   else if (corner && next->state.plane != p.state.plane)
@@ -145,12 +146,15 @@ void ProgramReader::finish_pending(Block* next) {
   }
   if (corner) {
     if (moves_applicate(p) || moves_applicate(*next))
-      fail(p.words.line, "a rounding or chamfer next to a move of the infeed axis is SINUMERIK NC that cutcom does "
-                         "not simulate");
+      fail(p.words.line,
+           "a rounding or chamfer next to a move of the infeed axis is SINUMERIK NC that cutcom does "
+           "not simulate");
     Decimal fa = frame_.factor[static_cast<std::size_t>(ax.abscissa)];
     Decimal fo = frame_.factor[static_cast<std::size_t>(ax.ordinate)];
-    if (fa != fo && fa != -fo) fail(p.words.line, "a rounding or chamfer under a frame that scales the plane axes "
-                                                  "differently is not simulated");
+    if (fa != fo && fa != -fo)
+      fail(p.words.line,
+           "a rounding or chamfer under a frame that scales the plane axes "
+           "differently is not simulated");
     value = value.times(fa.sign() < 0 ? -fa : fa);  // a uniform scale scales the rounding too
     std::optional<std::array<Decimal, 13>> cut;
     try {
@@ -161,9 +165,18 @@ void ProgramReader::finish_pending(Block* next) {
         contour::Element e1 = contour::element_of(p), e2 = contour::element_of(*next);
         std::optional<contour::CornerCut> c = contour::cut_corner(e1, e2, kind, Interval(value));
         if (!c) return std::array<Interval, 13>{};
-        return std::array<Interval, 13>{c->t1.a,     c->t1.o,     c->t2.a,     c->t2.o,
-                                        c->centre.a, c->centre.o, e1.centre.a, e1.centre.o,
-                                        e2.centre.a, e2.centre.o, Interval::integer(1), Interval::integer(c->sense),
+        return std::array<Interval, 13>{c->t1.a,
+                                        c->t1.o,
+                                        c->t2.a,
+                                        c->t2.o,
+                                        c->centre.a,
+                                        c->centre.o,
+                                        e1.centre.a,
+                                        e1.centre.o,
+                                        e2.centre.a,
+                                        e2.centre.o,
+                                        Interval::integer(1),
+                                        Interval::integer(c->sense),
                                         c->reduced ? c->value : Interval()};
       });
       if (v[10] == Decimal::from_int(1)) cut = v;
@@ -198,13 +211,10 @@ void ProgramReader::finish_pending(Block* next) {
       if (p.is_arc()) p.centre = centre_of(p, v[6], v[7]), p.words.cr.reset();
       set_plane(p.end, ax, v[0], v[1]);
       emptied(p);
-      if (next->is_arc() && !closed(*next)) {
-        next->centre = centre_of(*next, v[8], v[9]), next->words.cr.reset();
-        set_plane(next->start, ax, v[2], v[3]);
-        emptied(*next);
-      } else {
-        set_plane(next->start, ax, v[2], v[3]);
-      }
+      bool next_arc = next->is_arc() && !closed(*next);  // a full circle keeps its centre
+      if (next_arc) next->centre = centre_of(*next, v[8], v[9]), next->words.cr.reset();
+      set_plane(next->start, ax, v[2], v[3]);
+      if (next_arc) emptied(*next);
       for (Block& m : between_) set_plane(m.start, ax, v[2], v[3]), set_plane(m.end, ax, v[2], v[3]);
       Block ins;
       ins.words.line = p.words.line;
@@ -217,8 +227,10 @@ void ProgramReader::finish_pending(Block* next) {
       ins.previous = p.state;
       ins.state = p.state;
       bool rapid = p.state.motion == Motion::kRapid;
-      if (cw.frc) ins.state.feed = *cw.frc;  // FRC / FRCM: the feed of the inserted element
-      else if (pending_feed_.sign() > 0) ins.state.feed = pending_feed_;
+      if (cw.frc)
+        ins.state.feed = *cw.frc;  // FRC / FRCM: the feed of the inserted element
+      else if (pending_feed_.sign() > 0)
+        ins.state.feed = pending_feed_;
       ins.start = p.end;
       ins.end = p.end;
       set_plane(ins.end, ax, v[2], v[3]);
@@ -231,8 +243,7 @@ void ProgramReader::finish_pending(Block* next) {
       } else {
         ins.state.motion = rapid ? Motion::kRapid : Motion::kLinear;
       }
-      for (int a : {ax.abscissa, ax.ordinate})
-        ins.words.axis[static_cast<std::size_t>(a)].value = coord(ins.end, a);
+      for (int a : {ax.abscissa, ax.ordinate}) ins.words.axis[static_cast<std::size_t>(a)].value = coord(ins.end, a);
       ins.insert.kind = rounding ? InsertKind::kRounding : InsertKind::kChamfer;
       ins.insert.next_line = next->words.line;
       ins.insert.next_block = next->words.number;

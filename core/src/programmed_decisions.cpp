@@ -18,14 +18,14 @@ int sign(const mpz_class& z) { return sgn(z); }
 
 // A margin in mm from a decimal.
 ProgrammedDecision with_margin(std::string_view clause, std::string_view branch, const Decimal& margin) {
-  return {clause, branch, margin.to_string(), margin.to_double()};
+  return {clause, branch, true, margin.to_string(), margin.to_double()};
 }
 
 // A margin whose value needs square roots: `value` evaluates it (in units) at 256 bits; `exact_sign`
 // is its sign decided exactly. The digits are the nearest double's 17, as for every margin.
 template <class F>
 ProgrammedDecision with_root_margin(std::string_view clause, std::string_view branch, int exact_sign, F value) {
-  if (exact_sign == 0) return {clause, branch, "0", 0.0};
+  if (exact_sign == 0) return {clause, branch, true, "0", 0.0};
   mpfr_t v;
   mpfr_init2(v, 256);
   value(v);
@@ -33,7 +33,7 @@ ProgrammedDecision with_root_margin(std::string_view clause, std::string_view br
   double magnitude = std::fabs(mpfr_get_d(v, MPFR_RNDN));
   mpfr_clear(v);
   double signed_value = exact_sign < 0 ? -magnitude : magnitude;
-  return {clause, branch, fmt::format("{}{:.17g}", exact_sign < 0 ? "-" : "", magnitude), signed_value};
+  return {clause, branch, true, fmt::format("{}{:.17g}", exact_sign < 0 ? "-" : "", magnitude), signed_value};
 }
 
 void set_z(mpfr_t out, const mpz_class& z) { mpfr_set_z(out, z.get_mpz_t(), MPFR_RNDN); }
@@ -55,7 +55,7 @@ CompensationSide compensation_side(const ModalState& state) {
   int sg = c.effective.sign();
   c.s = sg < 0 ? -side : side;  // TRC-RADIUS-2: a negative radius swaps G41 and G42
   c.r = sg < 0 ? -c.effective : c.effective;
-  c.decision = {"TRC-RADIUS-2", sg < 0 ? "negative" : sg == 0 ? "zero" : "positive", "", 0.0};
+  c.decision = {"TRC-RADIUS-2", sg < 0 ? "negative" : sg == 0 ? "zero" : "positive", false, "", 0.0};
   return c;
 }
 
@@ -63,7 +63,7 @@ SarSize sar_size(const Block& sar, const std::optional<CompensationSide>& trc, i
   SarContour contour = *sar.words.sar_contour;
   bool line = contour == SarContour::kG147 || contour == SarContour::kG148;
   std::string_view clause = line ? "SAR-DISR-1" : "SAR-DISR-2";
-  if (!sar.words.disr) return {std::nullopt, {clause, "missing", "", 0.0}};
+  if (!sar.words.disr) return {std::nullopt, {clause, "missing", false, "", 0.0}};
   Decimal disr = *sar.words.disr;
   Decimal size;
   if (line) {
@@ -88,7 +88,7 @@ SarLevelCheck check_sar_levels(const Block& sar, SarLevels& h, const MachineData
   if (w.disrp.present && w.discl.present) {  // SAR-DISRP-2
     int s1 = (h.h1 - h.h4).sign(), s2 = (h.h2 - h.h4).sign();
     bool opposite = s1 * s2 < 0;
-    out.retraction_plane = ProgrammedDecision{"SAR-DISRP-2", opposite ? "opposite-sides" : "same-side", "", 0.0};
+    out.retraction_plane = ProgrammedDecision{"SAR-DISRP-2", opposite ? "opposite-sides" : "same-side", false, "", 0.0};
     if (opposite) {
       out.alarm = 10748;
       return out;
@@ -111,8 +111,20 @@ SarLevelCheck check_sar_levels(const Block& sar, SarLevels& h, const MachineData
   return out;
 }
 
-ProgrammedDecision cr_circle_reach(const Block& b) {
+ProgrammedDecision cr_circle_reach(const Block& b, MarginText text) {
   PlaneAxes ax = plane_axes(b.state.plane);
+  if (text == MarginText::kDouble) {
+    // In double: the differences are exact decimals rounded once, so q = 4 CR^2 - chord^2 errs by
+    // well under 16u (4 CR^2 + chord^2); beyond that its sign is q's.
+    double da = (coord(b.end, ax.abscissa) - coord(b.start, ax.abscissa)).to_double();
+    double db = (coord(b.end, ax.ordinate) - coord(b.start, ax.ordinate)).to_double();
+    double cr = std::fabs(b.words.cr->to_double());
+    double chord2 = da * da + db * db, q = 4 * cr * cr - chord2;
+    bool zero_chord = coord(b.end, ax.abscissa) == coord(b.start, ax.abscissa) &&
+                      coord(b.end, ax.ordinate) == coord(b.start, ax.ordinate);
+    if (std::fabs(q) > 16 * 0x1p-53 * (4 * cr * cr + chord2))
+      return {"ARC-CR-1", !zero_chord && q > 0 ? "circle" : "unreachable", true, "", 2 * cr - std::sqrt(chord2)};
+  }
   PlaneDelta d = delta(b.start, b.end, ax);
   mpz_class chord2 = d.a * d.a + d.b * d.b;
   mpz_class cr = units(*b.words.cr);
@@ -132,8 +144,21 @@ ProgrammedDecision cr_circle_reach(const Block& b) {
   });
 }
 
-ProgrammedDecision circle_end_point(const Block& b, const MachineData& md) {
+ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, MarginText text) {
   PlaneAxes ax = plane_axes(b.state.plane);
+  if (text == MarginText::kDouble) {
+    // In double: each radius errs by a few u of itself, the tolerance by a few u of itself; the
+    // excess is decided when it exceeds 32u of their sum (a generous bound of the rounding).
+    auto radius = [&](const Point3& p) {
+      return std::hypot((coord(p, ax.abscissa) - coord(*b.centre, ax.abscissa)).to_double(),
+                        (coord(p, ax.ordinate) - coord(*b.centre, ax.ordinate)).to_double());
+    };
+    double rs = radius(b.start), re = radius(b.end);
+    double c = md.circle_error_const.to_double(), by_factor = md.circle_error_factor.to_double() * rs;
+    double tolerance = std::max(c, by_factor), excess = std::fabs(re - rs) - tolerance;
+    if (std::fabs(excess) > 32 * 0x1p-53 * (rs + re + c + by_factor))
+      return {"ARC-CENTRE-2", excess < 0 ? "within" : "beyond", true, "", excess};
+  }
   PlaneDelta s = delta(*b.centre, b.start, ax), e = delta(*b.centre, b.end, ax);
   mpz_class A = s.a * s.a + s.b * s.b, B = e.a * e.a + e.b * e.b;                // start and end radius squared
   mpz_class c = units(md.circle_error_const);                                    // MD21000, units

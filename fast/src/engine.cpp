@@ -396,7 +396,8 @@ void Engine::State::release_window(const Block& b) {
 bool Engine::State::arc_is_consistent(const Block& b) {
   // ARC-CR-1 (a CR= circle must reach its end point) and ARC-CENTRE-2 (the end point tolerance):
   // decisions on programmed decimals, taken exactly in core.
-  ProgrammedDecision d = b.centre ? circle_end_point(b, md) : cr_circle_reach(b);
+  ProgrammedDecision d =
+      b.centre ? circle_end_point(b, md, MarginText::kDouble) : cr_circle_reach(b, MarginText::kDouble);
   decide(d, b.words.line);
   bool ok = d.branch == (b.centre ? "within" : "circle");
   if (!ok) raise(14040, b.words.line, b.words.number, b.centre ? std::string_view{} : std::string_view{"ARC-CR-1"});

@@ -184,12 +184,8 @@ struct Engine::State {
   void step(const Block& b, const PlaneOverride* o = nullptr);
   void sar_approach(std::span<const Block> gathered, int p4_index);
   void sar_retraction(const Block& block);
-  struct SarTrc {
-    bool on = false;
-    int s = 1;
-    double effective = 0, r = 0;
-    std::optional<CompensationSide> side;  // TRC-RADIUS-2 as decided in core (empty without)
-  };
+  // The compensation in force at a SAR block, side and radius as decided in core (empty: none).
+  using SarTrc = std::optional<CompensationSide>;
   static SarTrc sar_trc(const ModalState& st);
   int sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0);
   bool sar_size(const Block& b, const SarTrc& trc, int sd, double& size);
@@ -253,7 +249,7 @@ struct Engine::State {
   }
   // A decision on programmed decimals, taken in core (programmed_decisions.hpp): traced as given.
   void decide(const ProgrammedDecision& d, int line) {
-    if (d.has_margin()) return decide(d.clause, line, d.branch, d.approx);
+    if (d.has_margin) return decide(d.clause, line, d.branch, d.approx);
     decide(d.clause, line, d.branch);
   }
   void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {

@@ -58,14 +58,8 @@ void Engine::State::take(const Block& b) {
 }
 
 Engine::State::SarTrc Engine::State::sar_trc(const ModalState& st) {
-  SarTrc t;
-  if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return t;
-  t.on = true;
-  t.side = compensation_side(st);  // TRC-RADIUS-2 (decided in core)
-  t.effective = t.side->effective.to_double();
-  t.s = t.side->s;
-  t.r = t.side->r.to_double();
-  return t;
+  if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return std::nullopt;
+  return compensation_side(st);  // TRC-RADIUS-2 (decided in core)
 }
 
 int Engine::State::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0) {
@@ -73,8 +67,8 @@ int Engine::State::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, 
   int line_no = b.words.line;
   if (mode == SarSide::kG141) return decide("SAR-SIDE-1", line_no, "G141-left"), 1;
   if (mode == SarSide::kG142) return decide("SAR-SIDE-1", line_no, "G142-right"), -1;
-  if (mode == SarSide::kG140 && trc.on)
-    return decide("SAR-SIDE-1", line_no, trc.s > 0 ? "G140-left" : "G140-right"), trc.s;
+  if (mode == SarSide::kG140 && trc)
+    return decide("SAR-SIDE-1", line_no, trc->s > 0 ? "G140-left" : "G140-right"), trc->s;
   if (!p0) {  // SAR-SIDE-3
     decide("SAR-SIDE-3", line_no, "implicit-end-point");
     sar_alarm(10747, b);
@@ -90,7 +84,7 @@ int Engine::State::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, 
 }
 
 bool Engine::State::sar_size(const Block& b, const SarTrc& trc, int sd, double& size) {
-  SarSize z = cutcom::sar_size(b, trc.side, sd);  // SAR-DISR-1/2 (decided in core)
+  SarSize z = cutcom::sar_size(b, trc, sd);  // SAR-DISR-1/2 (decided in core)
   decide(z.decision, b.words.line);
   if (!z.size) return raise(10742, b.words.line, b.words.number, z.decision.clause), false;
   size = z.size->to_double();
@@ -121,7 +115,7 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
   Vec2 p4 = plane_of(m.end, ax), p0 = plane_of(a.start, ax);
   SarTrc trc = sar_trc(a.state);
   SarContour c = *a.words.sar_contour;
-  int sd = trc.s;
+  int sd = trc ? trc->s : 1;
   if (c != SarContour::kG147) sd = sar_side(a, trc, t, p4, p0);
   if (sd == 0) return;
   double size = 0;
@@ -173,7 +167,7 @@ void Engine::State::sar_retraction(const Block& block) {
   if (end_case == SarEndCase::kPlaneAxis) p0 = plane_of(block.end, ax);
   SarTrc trc = sar_trc(block.previous.side != Side::kOff ? block.previous : block.state);
   SarContour c = *block.words.sar_contour;
-  int sd = trc.s;
+  int sd = trc ? trc->s : 1;
   if (c != SarContour::kG148) sd = sar_side(block, trc, t, p4, p0);
   if (sd == 0) return;
   double size = 0;
@@ -192,7 +186,7 @@ void Engine::State::sar_retraction(const Block& block) {
   std::optional<Vec2> tool_centre;
   bool deselects = block.state.side == Side::kOff && block.previous.side != Side::kOff;
   if (end_case != SarEndCase::kPlaneAxis && deselects)
-    tool_centre = trc.on ? Element::offset(shape.p3, shape.end_unit, trc.s * trc.r) : shape.p3;
+    tool_centre = trc ? Element::offset(shape.p3, shape.end_unit, trc->s * trc->r.to_double()) : shape.p3;
   if (tool_centre) {
     plan.tc_a = nearest_decimal(tool_centre->a * Decimal::kUnitsPerOne);
     plan.tc_b = nearest_decimal(tool_centre->b * Decimal::kUnitsPerOne);

@@ -24,12 +24,12 @@ void Reference::step(const Block& b) {
 
 bool Reference::arc_is_consistent(const Block& b) {
   if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point (decided in core)
-    ProgrammedDecision reach = cr_circle_reach(b);
+    ProgrammedDecision reach = cr_circle_reach(b, MarginText::kExact);
     decide(reach, b.words.line);
     if (reach.branch != "circle") raise(14040, b, "ARC-CR-1");
     return reach.branch == "circle";
   }
-  ProgrammedDecision t = circle_end_point(b, md_);  // ARC-CENTRE-2 (decided in core)
+  ProgrammedDecision t = circle_end_point(b, md_, MarginText::kExact);  // ARC-CENTRE-2 (decided in core)
   decide(t, b.words.line);
   if (t.branch != "within") raise(14040, b);
   return t.branch == "within";

@@ -91,7 +91,7 @@ class Reference {
   }
   // A decision on programmed decimals, taken in core (programmed_decisions.hpp): its exact margin.
   void decide(const ProgrammedDecision& d, int line) {
-    if (d.has_margin()) return decide(d.clause, line, d.branch, d.exact);
+    if (d.has_margin) return decide(d.clause, line, d.branch, d.exact);
     decide(d.clause, line, d.branch);
   }
   void raise(int number, const Block& at, std::string_view clause = {}) {
@@ -141,13 +141,8 @@ class Reference {
   void sar_approach(std::span<const Block> gathered, int p4_index);
   // SAR-POINTS-2, SAR-END-*: expands a retraction; `last` is the contour's last block.
   void sar_retraction(const Block& r, const Block& last);
-  struct SarTrc {
-    bool on;
-    int s;              // side of the compensation (negative radius swapped), +1 without
-    Decimal effective;  // signed effective radius (0 without)
-    Decimal r;          // its magnitude
-    std::optional<CompensationSide> side;  // TRC-RADIUS-2 as decided in core (empty without)
-  };
+  // The compensation in force at a SAR block, side and radius as decided in core (empty: none).
+  using SarTrc = std::optional<CompensationSide>;
   static SarTrc sar_trc(const ModalState& state);
   // SAR-SIDE-1/2/3: the side of a circle; 0 after an alarm.
   int sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4, const std::optional<Point>& p0);

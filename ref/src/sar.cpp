@@ -77,14 +77,8 @@ std::optional<PlaneOverride> Reference::after_sar_end(const Block& b) {
 }
 
 Reference::SarTrc Reference::sar_trc(const ModalState& st) {
-  SarTrc t{false, 1, Decimal{}, Decimal{}, std::nullopt};
-  if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return t;
-  t.on = true;
-  t.side = compensation_side(st);  // TRC-RADIUS-2 (decided in core)
-  t.effective = t.side->effective;
-  t.s = t.side->s;
-  t.r = t.side->r;
-  return t;
+  if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return std::nullopt;
+  return compensation_side(st);  // TRC-RADIUS-2 (decided in core)
 }
 
 int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4,
@@ -92,8 +86,8 @@ int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, cons
   SarSide mode = b.state.sar_side;
   if (mode == SarSide::kG141) return decide("SAR-SIDE-1", b.words.line, "G141-left"), 1;
   if (mode == SarSide::kG142) return decide("SAR-SIDE-1", b.words.line, "G142-right"), -1;
-  if (mode == SarSide::kG140 && trc.on)
-    return decide("SAR-SIDE-1", b.words.line, trc.s > 0 ? "G140-left" : "G140-right"), trc.s;
+  if (mode == SarSide::kG140 && trc)
+    return decide("SAR-SIDE-1", b.words.line, trc->s > 0 ? "G140-left" : "G140-right"), trc->s;
   // SAR-SIDE-2: G143 (or G140 without compensation): the side of the tangent P0 lies on.
   if (!p0) {
     decide("SAR-SIDE-3", b.words.line, "implicit-end-point");
@@ -116,7 +110,7 @@ int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, cons
 }
 
 std::optional<FT> Reference::sar_size(const Block& b, const SarTrc& trc, int s) {
-  SarSize z = cutcom::sar_size(b, trc.side, s);  // SAR-DISR-1/2 (decided in core)
+  SarSize z = cutcom::sar_size(b, trc, s);  // SAR-DISR-1/2 (decided in core)
   decide(z.decision, b.words.line);
   if (!z.size) return raise(10742, b, z.decision.clause), std::nullopt;
   return leaf(*z.size);
@@ -146,7 +140,7 @@ void Reference::sar_approach(std::span<const Block> g, int p4_index) {
   Point p4 = plane_point(m.end, ax), p0 = plane_point(a.start, ax);
   SarTrc trc = sar_trc(a.state);
   SarContour c = *a.words.sar_contour;
-  int s = trc.s;
+  int s = trc ? trc->s : 1;
   if (c != SarContour::kG147) s = sar_side(a, trc, t, p4, p0);
   if (s == 0) return;
   std::optional<FT> size = sar_size(a, trc, s);
@@ -197,7 +191,7 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
   if (end_case == SarEndCase::kPlaneAxis) p0 = plane_point(r.end, ax);
   SarTrc trc = sar_trc(r.previous.side != Side::kOff ? r.previous : r.state);
   SarContour c = *r.words.sar_contour;
-  int s = trc.s;
+  int s = trc ? trc->s : 1;
   if (c != SarContour::kG148) s = sar_side(r, trc, t, p4, p0);
   if (s == 0) return;
   std::optional<FT> size = sar_size(r, trc, s);
@@ -217,9 +211,9 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
   // SAR-END-2: G40 without end point: P0 is the tool centre at P1 (normal end of the element).
   std::optional<Point> tool_centre;
   bool deselects = r.state.side == Side::kOff && r.previous.side != Side::kOff;
-  if (end_case != SarEndCase::kPlaneAxis && deselects && trc.on) {
+  if (end_case != SarEndCase::kPlaneAxis && deselects && trc) {
     Vector n = unit_left_normal(shape.end_dir);
-    tool_centre = shape.p3 + n * (FT(trc.s) * leaf(trc.r));
+    tool_centre = shape.p3 + n * (FT(trc->s) * leaf(trc->r));
     plan.tc_a = nearest_decimal(CGAL::to_double(tool_centre->x()));
     plan.tc_b = nearest_decimal(CGAL::to_double(tool_centre->y()));
   } else if (end_case != SarEndCase::kPlaneAxis && deselects) {

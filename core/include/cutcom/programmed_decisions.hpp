@@ -15,15 +15,20 @@
 namespace cutcom {
 
 // The outcome of one decision: its clause, its branch and its margin (the deciding quantity minus
-// its threshold, in mm), written with an exact sign (`exact`; "0" for an exact tie; empty: the
-// decision has no margin) and as the nearest double (`approx`).
+// its threshold, in mm) as a double (`approx`) and, where asked for, written with an exact sign
+// (`exact`; "0" for an exact tie).
 struct ProgrammedDecision {
   std::string_view clause;
   std::string_view branch;
+  bool has_margin = false;
   std::string exact;
   double approx = 0;
-  bool has_margin() const { return !exact.empty(); }
 };
+
+// Whether a decision's margin is also written exactly (ref's trace) or only as a double (fast's:
+// the circle checks of every arc are then decided in double under a proven error bound, exactly
+// only near their threshold, so that fast allocates nothing per block).
+enum class MarginText { kExact, kDouble };
 
 // TRC-RADIUS-2: the side the tool runs on from G41/G42 and the sign of the effective radius
 // (TRC-RADIUS-1); a negative radius swaps the side, its magnitude is the radius compensated.
@@ -55,9 +60,9 @@ struct SarLevelCheck {
 SarLevelCheck check_sar_levels(const Block& sar, SarLevels& h, const MachineData& md);
 
 // ARC-CR-1: a CR= circle reaches its end point when 0 < chord <= 2|CR|; margin 2|CR| - chord.
-ProgrammedDecision cr_circle_reach(const Block& b);
+ProgrammedDecision cr_circle_reach(const Block& b, MarginText text);
 // ARC-CENTRE-2: start and end lie on one circle about the programmed centre within
 // max(MD21000, MD21010 x start radius); margin |end radius - start radius| - tolerance.
-ProgrammedDecision circle_end_point(const Block& b, const MachineData& md);
+ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, MarginText text);
 
 }  // namespace cutcom
