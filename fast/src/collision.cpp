@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 
-#include "engine_state.hpp"
+#include "compensation.hpp"
 
 namespace cutcom::fast {
 
-bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
+bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
   en.element = element_of(m);
   en.before_line = before.line, en.before_number = before.number;
   const Element& next = en.element;
@@ -87,14 +87,14 @@ bool Engine::State::entry_of(const BlockCopy& m, const BlockCopy& before, Entry&
   return true;
 }
 
-PathPiece Engine::State::piece_of(const HeldRecord& rec) const {
+PathPiece Compensation::piece_of(const HeldRecord& rec) const {
   const PathElement& e = rec.element;
   Vec2 a = ab(e.start), b = ab(e.end);
   if (e.type == ElementType::kLine) return PathPiece::segment(a, b);
   return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
 }
 
-PathPiece Engine::State::open_piece() const {
+PathPiece Compensation::open_piece() const {
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!open_el.arc) return PathPiece::segment(open_start, end);
   // A full circle is whole when it was opened at its normal start (as ref's exact equality).
@@ -102,12 +102,12 @@ PathPiece Engine::State::open_piece() const {
                            open_el.full && open_at_normal_start);
 }
 
-bool Engine::State::is_candidate(const HeldRecord& rec) {
+bool Compensation::is_candidate(const HeldRecord& rec) {
   return rec.is_element &&
          (rec.element.origin.kind == OriginKind::kOffset || rec.element.origin.kind == OriginKind::kTransitionCircle);
 }
 
-bool Engine::State::bottleneck(const BlockCopy& m, const BlockCopy& before) {
+bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (r == 0) return false;  // no width: nothing to collide
   int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
   Entry entry;
@@ -136,7 +136,7 @@ bool Engine::State::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   return false;
 }
 
-void Engine::State::cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, double near) {
+void Compensation::cut(const BlockCopy& m, const Entry& en, int record, const PieceCrossing& c, double near) {
   const Vec2 x = c.point;
   double margin = std::min(c.slack, -near);  // lowered to a nearer miss before it
   decide("TRC-CD-3", m.line, "cut", margin);
@@ -144,28 +144,24 @@ void Engine::State::cut(const BlockCopy& m, const Entry& en, int record, const P
   continue_entry(m, en, c.entry_piece, x);
 }
 
-bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number) {
+bool Compensation::cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number) {
   int last_run = -1;  // the last block (BlockCopy::block) run again from held records
   if (record >= 0) {
-    HeldRecord& rec = held[static_cast<std::size_t>(record)];
-    const HeldRecord crossed = rec;
-    rec.element.end = xyz(x, h(rec.element.end));
-    const PathPoint end = rec.element.end;
-    held.scratch().assign(held.records().begin() + record + 1, held.records().end());
-    held.records().erase(held.records().begin() + record + 1, held.records().end());
+    const HeldRecord crossed = held[static_cast<std::size_t>(record)];
+    const PathPoint end = xyz(x, h(crossed.element.end));
     // Cut at (or, rounded, next to) its start: nothing is left of it; an arc from a point to
     // itself would read as a full circle.
     double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
-    if (along <= 64 * std::numeric_limits<double>::epsilon() * scale)
-      held.records().erase(held.records().begin() + record);
+    bool vanishes = along <= 64 * std::numeric_limits<double>::epsilon() * scale;
+    const std::vector<HeldRecord>& dropped = held.cut(static_cast<std::size_t>(record), end, vanishes);
     bool rest = open.block == crossed.owner_block;  // its equidistant was still open
-    for (const HeldRecord& k : held.scratch()) rest = rest || k.owner_block == crossed.owner_block;
+    for (const HeldRecord& k : dropped) rest = rest || k.owner_block == crossed.owner_block;
     if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
-    for (std::size_t i = 0; i < held.scratch().size(); ++i) {
-      const HeldRecord& k = held.scratch()[i];
+    for (std::size_t i = 0; i < dropped.size(); ++i) {
+      const HeldRecord& k = dropped[i];
       if (k.owner_block == crossed.owner_block) continue;
       if (k.owner_block != last_run) {
-        if (last_run >= 0) infeed_of(held.scratch()[i - 1], x);
+        if (last_run >= 0) infeed_of(dropped[i - 1], x);
         decide("TRC-LOOK-3", k.owner_line, "skipped");
         last_run = k.owner_block;
       }
@@ -175,7 +171,7 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
         held.hold(a);
       }
     }
-    if (last_run >= 0) infeed_of(held.scratch().back(), x);
+    if (last_run >= 0) infeed_of(dropped.back(), x);
     if (open.block != crossed.owner_block && open.block != last_run) skip_at(open, x);
   } else {
     looking = false;
@@ -190,7 +186,7 @@ bool Engine::State::cut_at(int record, Vec2 x, double along, int line_no, std::o
   return true;
 }
 
-void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
+void Compensation::continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
   bool on_lead = en.lead != Entry::Lead::kNone && entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
   if (!on_lead) return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
   double hv = h(m.start);
@@ -213,7 +209,7 @@ void Engine::State::continue_entry(const BlockCopy& m, const Entry& en, int entr
   open_element(owner, en.element, en.own_start, en.radius);
 }
 
-bool Engine::State::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
+bool Compensation::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
   PathPiece aux = curve_piece(curve);
   int lo = d.seq - md.cutcom_maxnum_check_blocks, hi = d.seq - 2;
   bool compared = false;
@@ -234,7 +230,7 @@ bool Engine::State::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
   return false;
 }
 
-PathPiece Engine::State::curve_piece(const EdgeCurve& curve) {
+PathPiece Compensation::curve_piece(const EdgeCurve& curve) {
   const Carrier& k = curve.carrier;
   if (k.circle) {
     Vec2 a{k.point.a + k.radius, k.point.b};

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <limits>
 
-#include "engine_state.hpp"
+#include "compensation.hpp"
 
 namespace cutcom::fast {
 
-void Engine::State::approach(const Block& b) {
+void Compensation::approach(const Block& b) {
   if (b.state.side == Side::kOff) {
     // TRC-SEL-8: deselected before any traversing block: no selection takes place.
     decide("TRC-SEL-8", selection.line, "deselected-before-contour");
@@ -34,7 +34,7 @@ void Engine::State::approach(const Block& b) {
     if (!selection_from_tool && !e.arc && first.exact && selection.exact)
       k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
     if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
-    if (stopped) return;
+    if (trace.stopped()) return;
   }
   // TRC-APPR-NORM-1: straight to the normal point of the first contour element's start.
   Vec2 q = Element::offset(e.start, e.start_tangent(), s * r);
@@ -54,7 +54,7 @@ void Engine::State::approach(const Block& b) {
   phase = Phase::kActive;
 }
 
-void Engine::State::flush_approach() {
+void Compensation::flush_approach() {
   if (!approach_pending) return;
   approach_pending = false;
   line(selection, selection.start, approach_to, OriginKind::kApproach, selection.rapid);
@@ -65,15 +65,15 @@ void Engine::State::flush_approach() {
   approach_dummy_count = 0;
 }
 
-std::optional<int> Engine::State::exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u,
-                                                   int k) const {
+std::optional<int> Compensation::exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u,
+                                                  int k) const {
   std::optional<ExactProducts> p = exact_products(t, u);
   if (!p) return std::nullopt;
   return k * ((p->cross > 0) - (p->cross < 0));
 }
 
-bool Engine::State::kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent,
-                              std::optional<int> exact_sign) {
+bool Compensation::kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent,
+                             std::optional<int> exact_sign) {
   double cr = cross(tangent, point - vertex);
   int sign = exact_sign ? *exact_sign : (cr > 0) - (cr < 0);
   double margin = sign == 0 ? 0.0 : s * cr / norm(tangent);
@@ -82,7 +82,7 @@ bool Engine::State::kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point
   return behind;
 }
 
-bool Engine::State::kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm) {
+bool Compensation::kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 tangent, int alarm) {
   if (!kont_side(at_block, k.vertex, k.point, tangent, k.exact_sign)) return false;
   Vec2 off = k.point - k.vertex;
   double distance = norm(off);
@@ -92,8 +92,8 @@ bool Engine::State::kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 t
   return !inside;
 }
 
-bool Engine::State::kont_intersection(const BlockCopy& at_block, const Kont& k, const Element& e, double e_radius,
-                                      Vec2 on_line, Vec2 d, Vec2& x) {
+bool Compensation::kont_intersection(const BlockCopy& at_block, const Kont& k, const Element& e, double e_radius,
+                                     Vec2 on_line, Vec2 d, Vec2& x) {
   Vec2 u1 = (1.0 / norm(k.d1)) * k.d1;
   if (!e.arc) {
     Corner c = classify_corner(u1, (1.0 / norm(k.d2)) * k.d2, s);
@@ -108,12 +108,12 @@ bool Engine::State::kont_intersection(const BlockCopy& at_block, const Kont& k, 
   return found;
 }
 
-bool Engine::State::kont_circle(const BlockCopy& at_block, const Kont& k) {
+bool Compensation::kont_circle(const BlockCopy& at_block, const Kont& k) {
   Corner c = classify_corner((1.0 / norm(k.d1)) * k.d1, (1.0 / norm(k.d2)) * k.d2, s);
   return outer_corner_circle(at_block.line, at_block.g451, c);
 }
 
-void Engine::State::approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k) {
+void Compensation::approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k) {
   kont_first = true;
   Vec2 a = Element::offset(k.vertex, (1.0 / norm(k.d1)) * k.d1, s * r);
   bool circle = kont_circle(selection, k);
@@ -139,7 +139,7 @@ void Engine::State::approach_around(const BlockCopy& first, const Element& e, do
   phase = Phase::kActive;
 }
 
-void Engine::State::retract_edge(const Block& b) {
+void Compensation::retract_edge(const Block& b) {
   reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   BlockCopy d = copy_of(b);
   const BlockCopy* last_block = nullptr;
@@ -152,7 +152,7 @@ void Engine::State::retract_edge(const Block& b) {
     Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt};
     if (!last.arc && last_block->exact && d.exact) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
     if (kont_behind(d, k, k.d1, 10756)) return retract_edge_around(d, *last_block, k);
-    if (stopped) return;
+    if (trace.stopped()) return;
   }
   decide("TRC-EDGE-1", d.line, g_code(d.edge_strategy));
   Vec2 normal_end = Element::offset(last.end, last.end_tangent(), s * r);
@@ -170,7 +170,7 @@ void Engine::State::retract_edge(const Block& b) {
   retraction_line(d, hit);
 }
 
-void Engine::State::retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k) {
+void Compensation::retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k) {
   if (!kont_circle(d, k))
     throw UnsupportedError(  // TRC-EDGE-7 (planned)
         d.line, "KONT retraction from behind by intersection (G451) after a too-short last block");
@@ -200,7 +200,7 @@ void Engine::State::retract_edge_around(BlockCopy& d, const BlockCopy& last_bloc
   retraction_line(d, rp);
 }
 
-void Engine::State::approach_edge(const Candidate& c) {
+void Compensation::approach_edge(const Candidate& c) {
   decide("TRC-EDGE-1", selection.line, g_code(selection.edge_strategy));
   const Element& first = open_el;
   EdgeCurve curve = edge_curve(selection.edge_strategy, r, first.start, open_start, -1.0 * first.start_tangent(),
@@ -227,7 +227,7 @@ void Engine::State::approach_edge(const Candidate& c) {
   if (selection.cdon) approach_curve = curve, approach_until = selection.seq + md.cutcom_maxnum_check_blocks;
 }
 
-bool Engine::State::approach_further_ahead(const Block& b, const BlockCopy& m) {
+bool Compensation::approach_further_ahead(const Block& b, const BlockCopy& m) {
   if (m.seq > approach_until || !m.cdon) {
     approach_until = -1;
     return false;
@@ -252,7 +252,7 @@ bool Engine::State::approach_further_ahead(const Block& b, const BlockCopy& m) {
   return false;
 }
 
-void Engine::State::deselect(const Block& b) {
+void Compensation::deselect(const Block& b) {
   reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   decide("TRC-DESEL-1", b.words.line, "deselected");
   BlockCopy last = copy_of(b);
@@ -261,7 +261,7 @@ void Engine::State::deselect(const Block& b) {
     Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt};
     if (!open_el.arc && open.exact && last.exact) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
     if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
-    if (stopped) return;
+    if (trace.stopped()) return;
   }
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!close_open(end, last.line, last.number, true)) return;
@@ -271,7 +271,7 @@ void Engine::State::deselect(const Block& b) {
 
 // TRC-DESEL-3: G40 without a plane axis ends the last contour block at its normal end point now;
 // the block (and those after it without a plane axis) run there.
-void Engine::State::deselect_in_place(const Block& b) {
+void Compensation::deselect_in_place(const Block& b) {
   decide("TRC-DESEL-3", b.words.line, "in-place");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!close_open(end, b.words.line, b.words.number, true)) return;
@@ -281,7 +281,7 @@ void Engine::State::deselect_in_place(const Block& b) {
   retraction_pending(b);
 }
 
-void Engine::State::retraction_pending(const Block& b) {
+void Compensation::retraction_pending(const Block& b) {
   if (b.state.plane != plane) return raise(10757, b.words.line, b.words.number);  // TRC-PLANE-1
   BlockCopy c = copy_of(b);
   if (!b.programs_plane_axis()) {
@@ -303,7 +303,7 @@ void Engine::State::retraction_pending(const Block& b) {
   }
 }
 
-void Engine::State::retraction_line(BlockCopy& last, Vec2 from_point) {
+void Compensation::retraction_line(BlockCopy& last, Vec2 from_point) {
   PathPoint from = xyz(from_point, h(last.start));
   double length =
       std::sqrt((last.end.x - from.x) * (last.end.x - from.x) + (last.end.y - from.y) * (last.end.y - from.y) +
@@ -313,7 +313,7 @@ void Engine::State::retraction_line(BlockCopy& last, Vec2 from_point) {
   phase = Phase::kOff;
 }
 
-void Engine::State::retract_around(BlockCopy& last, const Kont& k) {
+void Compensation::retract_around(BlockCopy& last, const Kont& k) {
   Vec2 rp = Element::offset(k.vertex, (1.0 / norm(k.d2)) * k.d2, s * r);
   bool circle = kont_circle(last, k);
   Vec2 x;
@@ -335,7 +335,7 @@ void Engine::State::retract_around(BlockCopy& last, const Kont& k) {
   retraction_line(last, x);
 }
 
-void Engine::State::end_of_program() {
+void Compensation::end_of_program() {
   if (looking) {  // the program ends before an intersection was found
     const BlockCopy& last = skipped.back();
     decide("TRC-LOOK-2", last.line, "none");

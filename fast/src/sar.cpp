@@ -1,10 +1,10 @@
-// fast: smooth approach and retraction (spec sar.md), in double. The SAR block is expanded into
-// sub-blocks that run through the compensation as if programmed (SAR-TRC-1); their in-plane
-// points at P3 are doubles kept beside the block (PlaneOverride). ref decides the same clauses
-// exactly in ref/src/sar.cpp.
+// Stage 1, the SAR expansion of fast (sar.hpp), in double. ref decides the same clauses exactly
+// in ref/src/sar.cpp.
+#include "sar.hpp"
+
 #include <cmath>
 
-#include "engine_state.hpp"
+#include "arc_check.hpp"
 
 namespace cutcom::fast {
 
@@ -15,103 +15,113 @@ Vec2 plane_of(const Point3& p, PlaneAxes a) {
 
 }  // namespace
 
-void Engine::State::apply(const PlaneOverride& o, BlockCopy& c) const {
-  PlaneAxes a = o.axes;
-  if (o.start) c.start = xyz_in(o.start_ab, h_in(c.start, a), a);
-  if (o.end) c.end = xyz_in(o.end_ab, h_in(c.end, a), a);
-  if (o.circle) c.arc = true, c.has_centre = true, c.centre = xyz_in(o.centre, h_in(c.start, a), a), c.sense = o.sense;
-  c.tangent_after = o.tangent_after, c.tangent_before = o.tangent_before;
+void SarExpansion::keep_last_contour(const Block& b) {
+  last_contour_.words.line = b.words.line, last_contour_.words.number = b.words.number;
+  last_contour_.words.cr = b.words.cr;
+  last_contour_.index = b.index, last_contour_.state = b.state;
+  last_contour_.start = b.start, last_contour_.end = b.end, last_contour_.centre = b.centre;
+  last_contour_.circle = b.circle, last_contour_.sar = b.sar, last_contour_.insert = b.insert;
 }
 
-void Engine::State::sar_alarm(int number, const Block& at) {
-  const AlarmInfo* info = find_alarm(number);
-  raise(number, at.words.line, at.words.number, info ? info->clause : std::string_view{});
+void SarExpansion::forward(const Block& b, const PlaneOverride* o) {
+  if (trace_.stopped()) return;
+  if (b.sar.move == SarMove::kNone && b.moves_in_plane()) {
+    keep_last_contour(b), has_last_contour_ = true, last_contour_overridden_ = o != nullptr;
+    if (o) last_contour_over_ = *o;
+  }
+  next_.step(b, o);
 }
 
-void Engine::State::take(const Block& b) {
+void SarExpansion::finish() {
+  if (!trace_.stopped() && sequence_.finish() == SarSequence::Step::kAlarm)
+    trace_.raise_catalogued(sequence_.alarm(), sequence_.alarm_block());
+}
+
+void SarExpansion::take(const Block& b) {
   // SAR-END-3: after a retraction that ended without end point the blocks start there.
   PlaneOverride end_over;
   bool use_end = false;
-  if (at_sar_end) {
-    end_over.axes = plane_axes(sar_end_plane);
-    end_over.start = true, end_over.start_ab = sar_end;
-    if (keeps_sar_end(b, sar_end_plane))
-      end_over.end = true, end_over.end_ab = sar_end;
+  if (at_sar_end_) {
+    end_over.axes = plane_axes(sar_end_plane_);
+    end_over.start = true, end_over.start_ab = sar_end_;
+    if (keeps_sar_end(b, sar_end_plane_))
+      end_over.end = true, end_over.end_ab = sar_end_;
     else
-      at_sar_end = false;
+      at_sar_end_ = false;
     use_end = true;
   }
-  switch (sar_seq.take(b)) {
+  switch (sequence_.take(b)) {
     case SarSequence::Step::kPass:
-      return step(b, use_end ? &end_over : nullptr);
+      return forward(b, use_end ? &end_over : nullptr);
     case SarSequence::Step::kHold:
       return;
     case SarSequence::Step::kApproach:
-      sar_approach(sar_seq.gathered(), sar_seq.p4_index());
-      return sar_seq.release();
+      approach(sequence_.gathered(), sequence_.p4_index());
+      return sequence_.release();
     case SarSequence::Step::kRetraction:
-      if (!has_last_contour) return sar_alarm(10744, b);
-      return sar_retraction(b);
+      if (!has_last_contour_) return trace_.raise_catalogued(10744, b);
+      return retraction(b);
     case SarSequence::Step::kAlarm:
-      return sar_alarm(sar_seq.alarm(), sar_seq.alarm_block());
+      return trace_.raise_catalogued(sequence_.alarm(), sequence_.alarm_block());
   }
 }
 
-Engine::State::SarTrc Engine::State::sar_trc(const ModalState& st) {
+SarExpansion::SarTrc SarExpansion::sar_trc(const ModalState& st) {
   if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return std::nullopt;
   return compensation_side(st);  // TRC-RADIUS-2 (decided in core)
 }
 
-int Engine::State::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0) {
+int SarExpansion::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0) {
   SarSide mode = b.state.sar_side;
   int line_no = b.words.line;
-  if (mode == SarSide::kG141) return decide("SAR-SIDE-1", line_no, "G141-left"), 1;
-  if (mode == SarSide::kG142) return decide("SAR-SIDE-1", line_no, "G142-right"), -1;
+  if (mode == SarSide::kG141) return trace_.decide("SAR-SIDE-1", line_no, "G141-left"), 1;
+  if (mode == SarSide::kG142) return trace_.decide("SAR-SIDE-1", line_no, "G142-right"), -1;
   if (mode == SarSide::kG140 && trc)
-    return decide("SAR-SIDE-1", line_no, trc->s > 0 ? "G140-left" : "G140-right"), trc->s;
+    return trace_.decide("SAR-SIDE-1", line_no, trc->s > 0 ? "G140-left" : "G140-right"), trc->s;
   if (!p0) {  // SAR-SIDE-3
-    decide("SAR-SIDE-3", line_no, "implicit-end-point");
-    sar_alarm(10747, b);
+    trace_.decide("SAR-SIDE-3", line_no, "implicit-end-point");
+    trace_.raise_catalogued(10747, b);
     return 0;
   }
   double distance = cross(t, *p0 - p4);  // SAR-SIDE-2 (t is a unit vector)
-  decide("SAR-SIDE-2", line_no, distance > 0 ? "left" : distance < 0 ? "right" : "on-tangent", distance);
+  trace_.decide("SAR-SIDE-2", line_no, distance > 0 ? "left" : distance < 0 ? "right" : "on-tangent", distance);
   if (distance == 0) {
-    raise(10744, line_no, b.words.number, "SAR-SIDE-2");
+    trace_.raise(10744, line_no, b.words.number, "SAR-SIDE-2");
     return 0;
   }
   return distance > 0 ? 1 : -1;
 }
 
-bool Engine::State::sar_size(const Block& b, const SarTrc& trc, int sd, double& size) {
+bool SarExpansion::sar_size(const Block& b, const SarTrc& trc, int sd, double& size) {
   SarSize z = cutcom::sar_size(b, trc, sd);  // SAR-DISR-1/2 (decided in core)
-  decide(z.decision, b.words.line);
-  if (!z.size) return raise(10742, b.words.line, b.words.number, z.decision.clause), false;
+  trace_.decide(z.decision, b.words.line);
+  if (!z.size) return trace_.raise(10742, b.words.line, b.words.number, z.decision.clause), false;
   size = z.size->to_double();
   return true;
 }
 
-bool Engine::State::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
+bool SarExpansion::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
   h = cutcom::sar_levels(b, end_case, h4);
   // SAR-DISRP-2, SAR-DISCL-3 (decision 9): decided in core; P2 clamped there.
-  SarLevelCheck check = check_sar_levels(b, h, md);
-  if (check.retraction_plane) decide(*check.retraction_plane, b.words.line);
-  if (check.reversal) decide(*check.reversal, b.words.line);
+  SarLevelCheck check = check_sar_levels(b, h, md_);
+  if (check.retraction_plane) trace_.decide(*check.retraction_plane, b.words.line);
+  if (check.reversal) trace_.decide(*check.reversal, b.words.line);
   if (check.alarm)
-    return raise(check.alarm, b.words.line, b.words.number, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"),
+    return trace_.raise(check.alarm, b.words.line, b.words.number,
+                        check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"),
            false;
   set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }
 
-void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
+void SarExpansion::approach(std::span<const Block> g, int p4_index) {
   const Block& a = g[0];
   const Block& m = g[static_cast<std::size_t>(p4_index)];
   const Block& d = g.back();
   PlaneAxes ax = plane_axes(a.state.plane);
-  if (d.is_arc() && !arc_is_consistent(d)) return;
+  if (d.is_arc() && !arc_is_consistent(d, md_, trace_)) return;
   Vec2 t = element_in(BlockCopy::of(d), ax).start_tangent();  // SAR-TANGENT-1
-  decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
+  trace_.decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
   Vec2 p4 = plane_of(m.end, ax), p0 = plane_of(a.start, ax);
   SarTrc trc = sar_trc(a.state);
   SarContour c = *a.words.sar_contour;
@@ -129,40 +139,40 @@ void Engine::State::sar_approach(std::span<const Block> g, int p4_index) {
   plan.p3_b = nearest_decimal(shape.p3.b * Decimal::kUnitsPerOne);
   plan.lead_moves = p0.a != shape.p3.a || p0.b != shape.p3.b;
   plan.sense = shape.sense;
-  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead", norm(shape.p3 - p0));
-  sar_sub_blocks(a, m, plan, sar_subs);
+  trace_.decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead", norm(shape.p3 - p0));
+  sar_sub_blocks(a, m, plan, subs_);
   // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
   SarVariables v;
   v.line = a.words.line, v.block = a.words.number;
   v.p_apr = xyz_in(shape.p3, plan.h.h3.to_double(), ax);
   v.p_aep = xyz_in(p4, plan.h.h4.to_double(), ax);
-  sink.sar_variables(v);
+  sink_.sar_variables(v);
   push_sub_blocks(shape, std::nullopt);
-  for (std::size_t k = 1; k < g.size() && !stopped; ++k) {
-    if (static_cast<int>(k) == p4_index && sar_subs.element_in_p4_block) {
+  for (std::size_t k = 1; k < g.size() && !trace_.stopped(); ++k) {
+    if (static_cast<int>(k) == p4_index && subs_.element_in_p4_block) {
       PlaneOverride o;
       o.axes = ax;
       o.start = true, o.start_ab = shape.p3, o.end = true, o.end_ab = p4;
       o.circle = shape.circle, o.centre = shape.centre, o.sense = shape.sense, o.tangent_after = true;
-      step(sar_subs.p4_element, &o);
+      forward(subs_.p4_element, &o);
     } else {
-      step(g[k]);
+      forward(g[k]);
     }
   }
 }
 
-void Engine::State::sar_retraction(const Block& block) {
+void SarExpansion::retraction(const Block& block) {
   PlaneAxes ax = plane_axes(block.state.plane);
-  BlockCopy copy = BlockCopy::of(last_contour);
-  if (last_contour_overridden) apply(last_contour_over, copy);
+  BlockCopy copy = BlockCopy::of(last_contour_);
+  if (last_contour_overridden_) last_contour_over_.apply(copy);
   Element last = element_in(copy, ax);
   Vec2 t = last.end_tangent(), p4 = last.end;  // SAR-TANGENT-1
-  decide("SAR-TANGENT-1", block.words.line, "end-of-contour");
+  trace_.decide("SAR-TANGENT-1", block.words.line, "end-of-contour");
   SarEndCase end_case = sar_end_case(block);
-  decide("SAR-END-1", block.words.line,
-         end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
-         : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
-                                                  : "programmed-p0");
+  trace_.decide("SAR-END-1", block.words.line,
+                end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
+                : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
+                                                         : "programmed-p0");
   std::optional<Vec2> p0;
   if (end_case == SarEndCase::kPlaneAxis) p0 = plane_of(block.end, ax);
   SarTrc trc = sar_trc(block.previous.side != Side::kOff ? block.previous : block.state);
@@ -191,36 +201,36 @@ void Engine::State::sar_retraction(const Block& block) {
     plan.tc_a = nearest_decimal(tool_centre->a * Decimal::kUnitsPerOne);
     plan.tc_b = nearest_decimal(tool_centre->b * Decimal::kUnitsPerOne);
   }
-  decide("SAR-SUB-1", block.words.line, plan.lead_moves ? "lead" : "no-lead", p0 ? norm(shape.p3 - *p0) : 0.0);
-  sar_sub_blocks(block, block, plan, sar_subs);
+  trace_.decide("SAR-SUB-1", block.words.line, plan.lead_moves ? "lead" : "no-lead", p0 ? norm(shape.p3 - *p0) : 0.0);
+  sar_sub_blocks(block, block, plan, subs_);
   push_sub_blocks(shape, tool_centre);
-  if (stopped) return;
+  if (trace_.stopped()) return;
   if (end_case == SarEndCase::kPlaneAxis) {
     // SAR-END-1: without the applicate the retraction ended at P2's level, not at the reader's.
     if (plan.h.h0 != coord(block.end, ax.applicate)) {
       Point3 p = block.end;
       Decimal* coords[3] = {&p.x, &p.y, &p.z};
       *coords[ax.applicate] = plan.h.h0;
-      reposition = p;
+      reposition_ = p;
     }
     return;
   }
   // SAR-END-3: the next blocks start where the retraction ended.
-  at_sar_end = true;
-  sar_end = tool_centre ? *tool_centre : shape.p3;
-  sar_end_plane = block.state.plane;
+  at_sar_end_ = true;
+  sar_end_ = tool_centre ? *tool_centre : shape.p3;
+  sar_end_plane_ = block.state.plane;
   Point3 picture = block.end;
   Decimal* cs[3] = {&picture.x, &picture.y, &picture.z};
   *cs[ax.abscissa] = tool_centre ? plan.tc_a : plan.p3_a;
   *cs[ax.ordinate] = tool_centre ? plan.tc_b : plan.p3_b;
   *cs[ax.applicate] = plan.h.h0;
-  reposition = picture;
+  reposition_ = picture;
 }
 
-void Engine::State::push_sub_blocks(const SarShape& shape, const std::optional<Vec2>& tool_centre) {
-  PlaneAxes ax = plane_axes(sar_subs.blocks[0].state.plane);
-  for (int k = 0; k < sar_subs.count && !stopped; ++k) {
-    const Block& b = sar_subs.blocks[static_cast<std::size_t>(k)];
+void SarExpansion::push_sub_blocks(const SarShape& shape, const std::optional<Vec2>& tool_centre) {
+  PlaneAxes ax = plane_axes(subs_.blocks[0].state.plane);
+  for (int k = 0; k < subs_.count && !trace_.stopped(); ++k) {
+    const Block& b = subs_.blocks[static_cast<std::size_t>(k)];
     PlaneOverride o;
     o.axes = ax;
     if (b.sar.start_at_p3) o.start = true, o.start_ab = shape.p3;
@@ -233,7 +243,7 @@ void Engine::State::push_sub_blocks(const SarShape& shape, const std::optional<V
       (shape.approach ? o.tangent_after : o.tangent_before) = true;
     }
     if (b.sar.end_at_tool_centre) o.end = true, o.end_ab = *tool_centre;
-    step(b, &o);
+    forward(b, &o);
   }
 }
 

@@ -49,9 +49,12 @@ double CircleFrame::radians(const CirclePosition& from, const CirclePosition& to
   const double pi = std::acos(-1.0);
   // A d of the wrong sign is a rounding at a tie (tiny) or a rotation past pi (atan2's range):
   // 1e-9 rad lies far above the one and far below the other.
-  if (in_turn == CGAL::ZERO) d = 0;
-  else if (in_turn == CGAL::POSITIVE && d <= 0) d = d > -1e-9 ? 0 : d + 2 * pi;
-  else if (in_turn == CGAL::NEGATIVE && d >= 0) d = d < 1e-9 ? 0 : d - 2 * pi;
+  if (in_turn == CGAL::ZERO)
+    d = 0;
+  else if (in_turn == CGAL::POSITIVE && d <= 0)
+    d = d > -1e-9 ? 0 : d + 2 * pi;
+  else if (in_turn == CGAL::NEGATIVE && d >= 0)
+    d = d < 1e-9 ? 0 : d - 2 * pi;
   return d + 2 * pi * static_cast<double>(to.turns - from.turns);
 }
 

@@ -37,7 +37,7 @@ class CircleFrame {
   std::string length_text(const CirclePosition& from, const CirclePosition& to, const FT& radius) const;
 
  private:
-  int half(const Vector& v) const;                                  // 0: [0, pi), 1: [pi, 2 pi)
+  int half(const Vector& v) const;                                     // 0: [0, pi), 1: [pi, 2 pi)
   CGAL::Sign compare_in_turn(const Vector& a, const Vector& b) const;  // rotations from u in [0, 2 pi)
   CGAL::Sign turn_sign(const Vector& a, const Vector& b) const;        // sense of the rotation from a to b
 

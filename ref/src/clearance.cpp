@@ -3,8 +3,8 @@
 
 #include <sstream>
 
-#include "cutcom/ref/exact_checks.hpp"
 #include "circle_position.hpp"
+#include "cutcom/ref/exact_checks.hpp"
 #include "exact_path.hpp"
 #include "exact_root.hpp"
 

@@ -1,10 +1,10 @@
 // ref: collision detection CDON (TRC-CD-*): a block's entry against the held-back output and the
-// cut there. Geometry in bottleneck.cpp; the held-back output in held_output.hpp.
-#include "reference.hpp"
+// cut there. Geometry in bottleneck.cpp; the held-back output in collision_window.hpp.
+#include "compensation.hpp"
 
 namespace cutcom::ref::detail {
 
-std::optional<Reference::Entry> Reference::entry_of(const Block& m, const Block& before) {
+std::optional<Compensation::Entry> Compensation::entry_of(const Block& m, const Block& before) {
   Entry en;
   en.element = element_of(m);
   en.before = &before;
@@ -82,9 +82,9 @@ std::optional<Reference::Entry> Reference::entry_of(const Block& m, const Block&
   return en;
 }
 
-bool Reference::outer_corner_is_circle(const Block& m, const ContourElement& prev, const FT& prev_radius,
-                                       const ContourElement& next, const FT& next_radius,
-                                       const std::optional<CornerClass>& rc) {
+bool Compensation::outer_corner_is_circle(const Block& m, const ContourElement& prev, const FT& prev_radius,
+                                          const ContourElement& next, const FT& next_radius,
+                                          const std::optional<CornerClass>& rc) {
   FT cross = rc ? to_ft(rc->cross) : prev.end_dir.x() * next.start_dir.y() - prev.end_dir.y() * next.start_dir.x();
   FT dot = rc ? to_ft(rc->dot) : prev.end_dir * next.start_dir;
   if (outer_corner_circle(m, rc, cross, dot)) return true;  // traced: the entry may part the runs here
@@ -100,21 +100,21 @@ bool Reference::outer_corner_is_circle(const Block& m, const ContourElement& pre
   return !g451_point_;
 }
 
-PathPiece Reference::piece_of(const HeldRecord& r) {
+PathPiece Compensation::piece_of(const HeldRecord& r) {
   const ExactPath::Element& e = r.exact;
   Point a = e.start.plane(e.axes), b = e.end.plane(e.axes);
   if (r.element->type == ElementType::kLine) return PathPiece::segment(a, b);
   return PathPiece::circle(a, b, e.centre->plane(e.axes), CGAL::abs(e.side_radius), r.element->ccw ? 1 : -1, a == b);
 }
 
-PathPiece Reference::open_piece() const {
+PathPiece Compensation::open_piece() const {
   const ContourElement& e = *open_;
   Point end = equidistant_point<Kernel>(e.b, e.end_normal(), comp_->side_radius);
   if (!e.is_arc()) return PathPiece::segment(open_start_, end);
   return PathPiece::circle(open_start_, end, e.centre, open_radius_, e.sense, e.full_circle && open_at_normal_start_);
 }
 
-bool Reference::bottleneck(const Block& m, const Block& before) {
+bool Compensation::bottleneck(const Block& m, const Block& before) {
   if (comp_->radius.sign() == 0) return false;  // no width: nothing to collide
   int lo = seq_of(m) - md_.cutcom_maxnum_check_blocks, hi = seq_of(m) - 2;
   std::optional<Entry> entry;
@@ -133,7 +133,7 @@ bool Reference::bottleneck(const Block& m, const Block& before) {
     if (!c.point) return std::nullopt;
     return c;
   };
-  std::deque<HeldRecord>& records = held_.records();
+  const std::deque<HeldRecord>& records = held_.records();
   for (std::size_t i = 0; i < records.size(); ++i) {
     const HeldRecord& r = records[i];
     if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
@@ -147,8 +147,8 @@ bool Reference::bottleneck(const Block& m, const Block& before) {
   return false;
 }
 
-void Reference::cut(const Block& m, const Entry& en, std::optional<std::size_t> record, const PieceCrossing& c,
-                    const std::optional<FT>& near) {
+void Compensation::cut(const Block& m, const Entry& en, std::optional<std::size_t> record, const PieceCrossing& c,
+                       const std::optional<FT>& near) {
   const Point x = *c.point;
   FT margin = lowered(c.slack, near);
   decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
@@ -156,7 +156,7 @@ void Reference::cut(const Block& m, const Entry& en, std::optional<std::size_t> 
   continue_entry(m, en, c.entry_piece, x);
 }
 
-bool Reference::cut_at(const Block& reporting, std::optional<std::size_t> record, const Point& x) {
+bool Compensation::cut_at(const Block& reporting, std::optional<std::size_t> record, const Point& x) {
   std::vector<const Block*> passed;
   auto pass = [&](const Block* b) {
     for (const Block* p : passed)
@@ -164,24 +164,20 @@ bool Reference::cut_at(const Block& reporting, std::optional<std::size_t> record
     passed.push_back(b);
   };
   if (record) {
-    std::deque<HeldRecord>& records = held_.records();
-    HeldRecord& r = records[*record];
+    const HeldRecord& r = held_.records()[*record];
     const Block* crossed = r.owner;
     ExactPoint end = r.exact.end;
     FT* coords[3] = {&end.x, &end.y, &end.z};
     *coords[comp_->axes.abscissa] = x.x(), *coords[comp_->axes.ordinate] = x.y();
-    r.exact.end = end, r.element->end = path.output(end);
     bool rest = false;  // the crossed block had more after the cut element
-    for (std::size_t i = *record + 1; i < records.size(); ++i) {
-      const Block* owner = records[i].owner;
-      if (!records[i].element) actions_done_[static_cast<std::size_t>(owner->index)] = false;  // run again at x
+    for (const HeldRecord& k : held_.cut(*record, end)) {
+      const Block* owner = k.owner;
+      if (!k.element) actions_done_[static_cast<std::size_t>(owner->index)] = false;  // run again at x
       if (owner == crossed)
         rest = true;
       else
         pass(owner);
     }
-    records.erase(records.begin() + static_cast<std::ptrdiff_t>(*record) + 1, records.end());
-    if (path.same(r.exact.start, r.exact.end)) records.erase(records.begin() + static_cast<std::ptrdiff_t>(*record));
     if (open_block_ == crossed)
       rest = true;  // its equidistant was still open
     else
@@ -207,7 +203,7 @@ bool Reference::cut_at(const Block& reporting, std::optional<std::size_t> record
   return true;
 }
 
-void Reference::continue_entry(const Block& m, const Entry& en, int entry_piece, const Point& x) {
+void Compensation::continue_entry(const Block& m, const Entry& en, int entry_piece, const Point& x) {
   const Entry::Lead lead = en.lead;
   bool on_lead = lead != Entry::Lead::kNone && entry_piece == 0 && x != en.own_start;
   if (!on_lead) return open(m, en.element, x, en.radius, x == en.normal_start);
@@ -229,12 +225,12 @@ void Reference::continue_entry(const Block& m, const Entry& en, int entry_piece,
   open(m, en.element, en.own_start, en.radius);
 }
 
-bool Reference::search_further_back(const Block& b, const EdgeCurve& curve) {
+bool Compensation::search_further_back(const Block& b, const EdgeCurve& curve) {
   std::vector<PathPiece> aux{curve_piece(curve)};
   int lo = seq_of(b) - md_.cutcom_maxnum_check_blocks, hi = seq_of(b) - 2;
   std::optional<FT> near;
   bool compared = false;
-  std::deque<HeldRecord>& records = held_.records();
+  const std::deque<HeldRecord>& records = held_.records();
   for (std::size_t i = 0; i < records.size(); ++i) {
     const HeldRecord& r = records[i];
     if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
@@ -253,7 +249,7 @@ bool Reference::search_further_back(const Block& b, const EdgeCurve& curve) {
   return false;
 }
 
-PathPiece Reference::curve_piece(const EdgeCurve& curve) const {
+PathPiece Compensation::curve_piece(const EdgeCurve& curve) const {
   const Carrier<Kernel>& k = curve.carrier;
   if (k.circle)
     return PathPiece::circle(k.point + Vector(k.radius, 0), k.point + Vector(k.radius, 0), k.point, k.radius, 1, true);

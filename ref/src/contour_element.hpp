@@ -57,7 +57,6 @@ CornerClass classify_corner(const RationalVector& end_tangent, const RationalVec
 // The same from exact (possibly irrational) directions.
 CornerKind classify_corner(const Vector& end_tangent, const Vector& start_tangent, int side);
 
-
 FT to_ft(const mpq_class& q);
 
 }  // namespace cutcom::ref

@@ -1,11 +1,11 @@
 // ref: the ends of compensation - the approach onto the contour and the retraction off it: NORM,
 // KONT travelling around the start or end point (TRC-KONT-*), G460/G461/G462 for a too-short
 // first or last block (TRC-EDGE-*), and the end of the program (TRC-END-1).
-#include "reference.hpp"
+#include "compensation.hpp"
 
 namespace cutcom::ref::detail {
 
-void Reference::approach(const Block& first_block) {
+void Compensation::approach(const Block& first_block) {
   prev_block_ = &first_block;
   ContourElement first = element_of(first_block);
   FT radius;
@@ -23,7 +23,7 @@ void Reference::approach(const Block& first_block) {
                                       units_of(coord(selection_->start, comp_->axes.ordinate)))},
       k.r2 = first.start_tangent;
     if (kont_behind(*selection_, k, k.d2, 10755)) return approach_around(first_block, first, radius, from, h, k);
-    if (stopped_) return;
+    if (trace_.stopped()) return;
   }
   Point onto = equidistant_point<Kernel>(first.a, first.start_normal(), comp_->side_radius);
   ExactPoint to = at({onto, h});
@@ -38,7 +38,7 @@ void Reference::approach(const Block& first_block) {
   phase_ = Phase::kActive;
 }
 
-bool Reference::kont_side(const Block& at_block, const Point& vertex, const Point& point, const Vector& tangent) {
+bool Compensation::kont_side(const Block& at_block, const Point& vertex, const Point& point, const Vector& tangent) {
   Vector off = point - vertex;
   FT cross = tangent.x() * off.y() - tangent.y() * off.x();
   bool behind = comp_->s * static_cast<int>(CGAL::sign(cross)) < 0;
@@ -47,7 +47,7 @@ bool Reference::kont_side(const Block& at_block, const Point& vertex, const Poin
   return behind;
 }
 
-bool Reference::kont_behind(const Block& at_block, const KontCorner& k, const Vector& tangent, int alarm) {
+bool Compensation::kont_behind(const Block& at_block, const KontCorner& k, const Vector& tangent, int alarm) {
   if (!kont_side(at_block, k.vertex, k.point, tangent)) return false;
   Vector off = k.point - k.vertex;
   FT distance2 = off.squared_length();
@@ -58,14 +58,15 @@ bool Reference::kont_behind(const Block& at_block, const KontCorner& k, const Ve
   return !inside;
 }
 
-bool Reference::kont_circle(const Block& at_block, const KontCorner& k) {
+bool Compensation::kont_circle(const Block& at_block, const KontCorner& k) {
   if (k.r1 && k.r2) return outer_corner_circle(at_block, classify_corner(*k.r1, *k.r2, comp_->s), {}, {});
   FT cross = k.d1.x() * k.d2.y() - k.d1.y() * k.d2.x(), dot = k.d1 * k.d2;
   return outer_corner_circle(at_block, std::nullopt, cross, dot);
 }
 
-std::optional<Point> Reference::kont_intersection(const Block& at_block, const KontCorner& k, const ContourElement& e,
-                                                  const FT& e_radius, const Point& on_line, const Vector& d) {
+std::optional<Point> Compensation::kont_intersection(const Block& at_block, const KontCorner& k,
+                                                     const ContourElement& e, const FT& e_radius, const Point& on_line,
+                                                     const Vector& d) {
   if (!e.is_arc()) {
     FT cross = k.d1.x() * k.d2.y() - k.d1.y() * k.d2.x(), dot = k.d1 * k.d2;
     FT l1 = exact_root(k.d1.squared_length()), l2 = exact_root(k.d2.squared_length());
@@ -81,8 +82,8 @@ std::optional<Point> Reference::kont_intersection(const Block& at_block, const K
   return x;
 }
 
-void Reference::approach_around(const Block& first_block, const ContourElement& first, const FT& radius,
-                                const ExactPoint& from, const Decimal& h, const KontCorner& k) {
+void Compensation::approach_around(const Block& first_block, const ContourElement& first, const FT& radius,
+                                   const ExactPoint& from, const Decimal& h, const KontCorner& k) {
   kont_first_ = true;
   Point a = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d1), comp_->side_radius);
   bool circle = kont_circle(*selection_, k);
@@ -110,7 +111,7 @@ void Reference::approach_around(const Block& first_block, const ContourElement& 
   phase_ = Phase::kActive;
 }
 
-void Reference::flush_approach() {
+void Compensation::flush_approach() {
   if (!approach_) return;
   PendingApproach a = std::move(*approach_);
   approach_.reset();
@@ -120,7 +121,7 @@ void Reference::flush_approach() {
   dummies_.swap(a.held_back);
 }
 
-void Reference::retract_edge(const Block& b) {
+void Compensation::retract_edge(const Block& b) {
   reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   const Block* last_block = nullptr;
   for (const Block* d : skipped_)
@@ -130,7 +131,7 @@ void Reference::retract_edge(const Block& b) {
   if (b.state.approach == ApproachMode::kKont) {  // TRC-KONT-1/2, then TRC-EDGE-6
     KontCorner k = retraction_corner(b, last);
     if (kont_behind(b, k, k.d1, 10756)) return retract_edge_around(b, *last_block, k);
-    if (stopped_) return;
+    if (trace_.stopped()) return;
   }
   decide("TRC-EDGE-1", b.words.line, g_code(b.state.edge_strategy));
   Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
@@ -146,7 +147,7 @@ void Reference::retract_edge(const Block& b) {
   retraction_line(b, *hit);
 }
 
-void Reference::approach_edge(const Candidate& c) {
+void Compensation::approach_edge(const Candidate& c) {
   const Block& sel = *selection_;
   decide("TRC-EDGE-1", sel.words.line, g_code(sel.state.edge_strategy));
   const ContourElement& first = *open_;
@@ -175,7 +176,7 @@ void Reference::approach_edge(const Candidate& c) {
     approach_search_ = ApproachSearch{curve, seq_of(sel) + md_.cutcom_maxnum_check_blocks};
 }
 
-bool Reference::approach_further_ahead(const Block& m) {
+bool Compensation::approach_further_ahead(const Block& m) {
   if (seq_of(m) > approach_search_->until || m.state.collision != CollisionMode::kCdon) {
     approach_search_.reset();
     return false;
@@ -189,7 +190,7 @@ bool Reference::approach_further_ahead(const Block& m) {
   EdgeHit hit = edge_hit(approach_search_->curve, e, radius, std::nullopt, true);
   decide("TRC-CD-6", m.words.line, hit.point ? "later-block" : "none", hit.margin);
   if (!hit.point) return false;
-  std::deque<HeldRecord>& records = held_.records();
+  const std::deque<HeldRecord>& records = held_.records();
   for (std::size_t i = 0; i < records.size(); ++i) {
     if (!records[i].element || records[i].element->origin.kind != OriginKind::kApproach) continue;
     if (!cut_at(m, i, *hit.point)) return true;
@@ -199,13 +200,13 @@ bool Reference::approach_further_ahead(const Block& m) {
   return false;
 }
 
-void Reference::deselect(const Block& b) {
+void Compensation::deselect(const Block& b) {
   reject_kontc_kontt(b, true);  // TRC-UNSUP-1
   decide("TRC-DESEL-1", b.words.line, "deselected");
   if (b.state.approach == ApproachMode::kKont) {
     KontCorner k = retraction_corner(b, *open_);
     if (kont_behind(b, k, k.d1, 10756)) return retract_around(b, k);
-    if (stopped_) return;
+    if (trace_.stopped()) return;
   }
   Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
   if (!close_open(end, b, true)) return;
@@ -215,7 +216,7 @@ void Reference::deselect(const Block& b) {
 
 // TRC-DESEL-3: G40 without a plane axis ends the last contour block at its normal end point now;
 // the block (and those after it without a plane axis) run there.
-void Reference::deselect_in_place(const Block& b) {
+void Compensation::deselect_in_place(const Block& b) {
   decide("TRC-DESEL-3", b.words.line, "in-place");
   Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
   if (!close_open(end, b, true)) return;
@@ -226,7 +227,7 @@ void Reference::deselect_in_place(const Block& b) {
   retraction_pending(b);
 }
 
-void Reference::retraction_pending(const Block& b) {
+void Compensation::retraction_pending(const Block& b) {
   Decimal from_h = coord(b.start, comp_->axes.applicate);
   if (b.state.plane != comp_->plane) return raise(10757, b);  // TRC-PLANE-1: the tool is off its plane position
   if (!b.programs_plane_axis()) {
@@ -250,7 +251,7 @@ void Reference::retraction_pending(const Block& b) {
   if (phase_ == Phase::kApproach) selection_from_ = tool;
 }
 
-Reference::KontCorner Reference::retraction_corner(const Block& b, const ContourElement& last) const {
+Compensation::KontCorner Compensation::retraction_corner(const Block& b, const ContourElement& last) const {
   KontCorner k;
   k.vertex = last.b, k.point = plane_end(b);
   k.d1 = last.end_dir, k.d2 = k.point - k.vertex;
@@ -262,7 +263,7 @@ Reference::KontCorner Reference::retraction_corner(const Block& b, const Contour
   return k;
 }
 
-void Reference::retract_edge_around(const Block& b, const Block& last_block, const KontCorner& k) {
+void Compensation::retract_edge_around(const Block& b, const Block& last_block, const KontCorner& k) {
   if (!kont_circle(b, k))
     throw UnsupportedError(  // TRC-EDGE-7 (planned)
         b.words.line, "KONT retraction from behind by intersection (G451) after a too-short last block");
@@ -291,7 +292,7 @@ void Reference::retract_edge_around(const Block& b, const Block& last_block, con
   retraction_line(b, r_point);
 }
 
-void Reference::retraction_line(const Block& b, const Point& from_point) {
+void Compensation::retraction_line(const Block& b, const Point& from_point) {
   ExactPoint from = at({from_point, coord(b.start, comp_->axes.applicate)});
   ExactPoint to = end_of(b);
   FT length = path.distance(from, to);
@@ -302,7 +303,7 @@ void Reference::retraction_line(const Block& b, const Point& from_point) {
   open_.reset();
 }
 
-void Reference::retract_around(const Block& b, const KontCorner& k) {
+void Compensation::retract_around(const Block& b, const KontCorner& k) {
   Point r = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d2), comp_->side_radius);
   bool circle = kont_circle(b, k);
   std::optional<Point> x;
@@ -325,7 +326,7 @@ void Reference::retract_around(const Block& b, const KontCorner& k) {
   retraction_line(b, *x);
 }
 
-void Reference::end_of_program() {
+void Compensation::end_of_program() {
   if (looking_) {  // the program ends before an intersection was found
     decide("TRC-LOOK-2", skipped_.back()->words.line, "none");
     return raise(10751, *skipped_.back());

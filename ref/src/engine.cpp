@@ -1,495 +1,68 @@
-// ref's walk through the program, one block at a time: selection, corners (TRC-CORNER-*,
-// TRC-G450/451-*, TRC-INNER-1), the look-ahead over too-short blocks (TRC-LOOK-*) and the output.
+// ref's pipeline (docs/architecture.md): the stages in the order a block passes them, each
+// owning its state; the trace is their shared channel for decisions and alarms.
+//   reader → SAR expansion (sar.cpp) → compensation (compensation.cpp, ends.cpp, collision.cpp)
+//          → collision window (collision_window.hpp) → sink and the exact path
 #include "cutcom/ref/engine.hpp"
 
-#include "reference.hpp"
-
-namespace cutcom::ref::detail {
-
-void Reference::step(const Block& b) {
-  if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
-    throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
-  if (b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b)) return;
-  switch (phase_) {
-    case Phase::kOff:
-      return compensation_off(b);
-    case Phase::kApproach:
-      return waiting_for_contour(b);
-    case Phase::kActive:
-      return compensation_active(b);
-    case Phase::kRetracting:
-      return retraction_pending(b);
-  }
-}
-
-bool Reference::arc_is_consistent(const Block& b) {
-  if (!b.centre) {  // ARC-CR-1: a CR= circle must reach its end point (decided in core)
-    ProgrammedDecision reach = cr_circle_reach(b, MarginText::kExact);
-    decide(reach, b.words.line);
-    if (reach.branch != "circle") raise(14040, b, "ARC-CR-1");
-    return reach.branch == "circle";
-  }
-  ProgrammedDecision t = circle_end_point(b, md_, MarginText::kExact);  // ARC-CENTRE-2 (decided in core)
-  decide(t, b.words.line);
-  if (t.branch != "within") raise(14040, b);
-  return t.branch == "within";
-}
-
-void Reference::run_uncompensated(const Block& b) {
-  if (!b.is_arc()) return emit_line(b, start_of(b), end_of(b), OriginKind::kProgrammed);
-  // A programmed circle, about its (corrected, ARC-CENTRE-1) centre; or a SAR circle.
-  PlaneAxes axes = plane_axes(b.state.plane);
-  ContourElement arc = element_of(b);
-  Decimal h = coord(b.start, axes.applicate);
-  emit_arc(b, start_of(b), end_of(b), ExactPoint::in_plane(arc.centre, h, axes), arc.radius, arc.sense > 0,
-           origin(b, OriginKind::kProgrammed), axes);
-}
-
-void Reference::compensation_off(const Block& b) {
-  if (b.state.side == Side::kOff) return run_uncompensated(b);
-  if (b.is_arc()) return raise(10753, b);  // TRC-SEL-2
-  if (!b.programs_plane_axis()) {          // TRC-SEL-4
-    decide("TRC-SEL-4", b.words.line, "no-plane-axis");
-    return run_uncompensated(b);
-  }
-  if (b.state.tool == 0) return raise(10750, b);  // TRC-SEL-6
-  if (b.state.edge == 0) {                        // TRC-SEL-5
-    decide("TRC-SEL-5", b.words.line, "d0");
-    if (!d0_noticed_) sink_.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
-    d0_noticed_ = true;
-    return run_uncompensated(b);
-  }
-  if (!b.state.edge_defined) return raise(17181, b);  // TRC-SEL-7
-  select(b);
-}
-
-void Reference::change_side(const Block& b) {
-  if (b.is_arc()) return raise(10753, b);  // TRC-SEL-2: the new selection needs a linear block
-  if (!b.programs_plane_axis()) {
-    decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
-    return hold_back(b);
-  }
-  decide("TRC-SIDE-1", b.words.line, "side-change");
-  Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
-  if (!close_open(end, b, true)) return;
-  run_held_back(end);
-  ExactPoint tool = at({end, coord(b.start, comp_->axes.applicate)});
-  open_.reset();
-  comp_.reset();
-  select(b);
-  selection_from_ = tool;
-}
-
-void Reference::select(const Block& b) {
-  selection_from_.reset();
-  reject_kontc_kontt(b, false);  // TRC-UNSUP-1
-  // TRC-SEL-3: a single programmed plane axis was completed by the reader (NC-POS-1).
-  decide("TRC-SEL-1", b.words.line, "selected");
-  CompensationSide side = compensation_side(b.state);  // TRC-RADIUS-2 (decided in core)
-  decide(side.decision, b.words.line);
-  int s = side.s;
-  Decimal r = side.r;
-  comp_ = Compensation{b.state.plane,          plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
-                       ActiveEdge::of(b.state)};
-  selection_ = &b;
-  prev_block_ = nullptr;
-  approach_search_.reset();
-  dummies_.clear();
-  phase_ = Phase::kApproach;
-}
-
-bool Reference::still_compensable(const Block& b) {
-  if (b.state.side == Side::kOff) {
-    if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
-      raise(10754, b);
-      return false;
-    }
-    return true;
-  }
-  if (b.state.plane != comp_->plane) {  // TRC-PLANE-1
-    raise(10757, b);
-    return false;
-  }
-  if (b.state.side != comp_->side) return true;  // TRC-SIDE-1, handled by the caller
-  reject_change_while_active(b, comp_->edge);    // TRC-UNSUP-1
-  return true;
-}
-
-void Reference::hold_back(const Block& b) {
-  if (static_cast<int>(dummies_.size()) == md_.cutcom_maxnum_dummy_blocks) return raise(10762, b);
-  dummies_.push_back(&b);
-}
-
-void Reference::run_held_back(const Point& corner_point) {
-  for (const Block* d : dummies_)
-    emit_line(*d, at({corner_point, coord(d->start, comp_->axes.applicate)}),
-              at({corner_point, coord(d->end, comp_->axes.applicate)}), OriginKind::kInfeed);
-  dummies_.clear();
-}
-
-void Reference::run_held_back_uncompensated() {
-  for (const Block* d : dummies_) emit_line(*d, start_of(*d), end_of(*d), OriginKind::kProgrammed);
-  dummies_.clear();
-}
-
-void Reference::waiting_for_contour(const Block& b) {
-  if (b.state.side == Side::kOff) {
-    // TRC-SEL-8: deselected before any block moved in the plane: no selection took place.
-    decide("TRC-SEL-8", selection_->words.line, "deselected-before-contour");
-    emit_line(*selection_, selection_start(), end_of(*selection_), OriginKind::kProgrammed);
-    run_held_back_uncompensated();
-    phase_ = Phase::kOff;
-    comp_.reset();
-    return compensation_off(b);
-  }
-  if (!still_compensable(b)) return;
-  if (b.state.side != comp_->side)
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "change of compensation side G41/G42 before the first contour block");
-  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
-  approach(b);
-}
-
-void Reference::compensation_active(const Block& b) {
-  if (!still_compensable(b)) return;
-  if (b.state.side == comp_->side && b.moves_in_plane()) {
-    const Block* before = prev_block_;
-    prev_block_ = &b;
-    if (approach_search_ && approach_further_ahead(b)) return;
-    if (b.state.collision == CollisionMode::kCdon && before && bottleneck(b, *before)) return;
-  }
-  if (looking_) return look_ahead(b);
-  if (b.state.side != Side::kOff && b.state.side != comp_->side) return change_side(b);
-  if (b.state.side == Side::kOff) {
-    if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
-    return deselect(b);
-  }
-  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
-  corner(b);
-}
-
-bool Reference::close_open(const Point& end_point, const Block& reporting, bool at_normal_end,
-                           const Candidate* candidate) {
-  const ContourElement& e = *open_;
-  CGAL::Sign sign;
-  std::string margin;
-  if (!e.is_arc()) {
-    FT left = (end_point - open_start_) * e.d;  // signed length along the block, times |d|
-    sign = CGAL::sign(left);                     // without the square root: a cheaper exact zero
-    margin = exact_mm(left / e.length);
-  } else {
-    // Positions on the programmed circle from its start: the cut start (a signed rotation from
-    // the normal start) and the cut end (a signed rotation from the normal end, after the sweep).
-    CircleFrame f(e.a - e.centre, e.sense);
-    CirclePosition from = open_at_normal_start_ ? f.start() : f.signed_from(f.start(), open_start_ - e.centre);
-    CirclePosition to = f.end(e.b - e.centre, e.full_circle);
-    if (!at_normal_end) to = f.signed_from(to, end_point - e.centre);
-    sign = f.compare(to, from);
-    margin = f.length_text(from, to, open_radius_);
-  }
-  std::string_view clause = e.is_arc() ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
-  if (sign == CGAL::NEGATIVE) {
-    decide(clause, e.line, "reverses", margin);
-    // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
-    if (approach_ && candidate) return approach_edge(*candidate), false;
-    if (kont_first_ && candidate)
-      throw UnsupportedError(  // TRC-EDGE-7 (planned)
-          selection_->words.line, "KONT approach from behind the contour before a too-short first block");
-    raise(10751, reporting);
-    return false;
-  }
-  decide(clause, e.line, sign == CGAL::ZERO ? "vanishes" : "fits", margin);
-  flush_approach();
-  kont_first_ = false;
-  ExactPoint from = at({open_start_, coord(e.start3, comp_->axes.applicate)});
-  ExactPoint to = at({end_point, coord(e.end3, comp_->axes.applicate)});
-  if (sign == CGAL::ZERO) {
-    run_actions(*open_block_, path.output(to));
-    return true;
-  }
-  if (!e.is_arc()) {
-    emit_line(*open_block_, from, to, OriginKind::kOffset, &e);
-  } else {
-    ExactPoint centre = at({e.centre, coord(e.start3, comp_->axes.applicate)});
-    emit_arc(*open_block_, from, to, centre, open_radius_, e.sense > 0, origin(*open_block_, OriginKind::kOffset),
-             comp_->axes);
-  }
-  return true;
-}
-
-void Reference::corner(const Block& next_block) {
-  ContourElement next = element_of(next_block);
-  FT next_radius;
-  if (!equidistant_exists(next, next_radius)) return start_look_ahead(next_block);
-  const ContourElement& first = *open_;
-  // TRC-CORNER-1 on the tangents: rational predicates where both are rational, exact Expr signs
-  // otherwise (CR= circles).
-  bool rational = first.rational && next.rational;
-  std::optional<CornerClass> rc;
-  CornerKind kind;
-  FT cross, dot;
-  if (rational) {
-    rc = classify_corner(first.end_tangent, next.start_tangent, comp_->s);
-    kind = rc->kind, cross = to_ft(rc->cross), dot = to_ft(rc->dot);
-  } else {
-    kind = classify_corner(first.end_dir, next.start_dir, comp_->s);
-    cross = first.end_dir.x() * next.start_dir.y() - first.end_dir.y() * next.start_dir.x();
-    dot = first.end_dir * next.start_dir;
-  }
-  static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
-  FT sine = FT(comp_->s) * cross / exact_root(dot * dot + cross * cross);  // |t1||t2| = sqrt(dot^2 + cross^2)
-  decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(kind)], exact_text(sine));
-
-  bool circle = kind == CornerKind::kReversal;  // TRC-G450-3
-  if (kind == CornerKind::kOuter) circle = outer_corner_circle(next_block, rc, cross, dot);
-  const Point vertex = first.b;  // a copy: open() replaces the element it comes from
-  if (circle) return transition_circle(next_block, next, next_radius, vertex);
-  if (kind == CornerKind::kTangent) {
-    // Both equidistants pass through the common normal point.
-    Point x = equidistant_point<Kernel>(vertex, first.end_normal(), comp_->side_radius);
-    if (!close_open(x, next_block, true)) return;
-    run_held_back(x);
-    return open(next_block, next, x, next_radius, true);
-  }
-  std::optional<Point> x;
-  if (!first.is_arc() && !next.is_arc()) {
-    // TRC-G451-1 / TRC-INNER-1 for two straight blocks.
-    FT trim = corner_trim<Kernel>(cross, dot, first.length, next.length, comp_->side_radius);
-    x = corner_intersection<Kernel>(vertex, first.normal, first.d, first.length, comp_->side_radius, trim);
-  } else {
-    // TRC-ARC-CORNER-1: the intersection of the equidistants' carriers nearest to the corner.
-    Carrier<Kernel> u = carrier_of(first, open_radius_), v = carrier_of(next, next_radius);
-    x = nearest_intersection(u, v, vertex, next.start_dir);
-    decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none", exact_mm(carrier_gap<Kernel>(u, v)));
-    if (!x && kind == CornerKind::kOuter)
-      return transition_circle(next_block, next, next_radius, vertex);  // TRC-ARC-CORNER-2
-    if (!x) return raise(10751, next_block);
-  }
-  // TRC-LOOK-1: the next equidistant must reach the intersection before its own end.
-  Extent reach = extent_of(next, next_radius, *x);
-  bool too_short = reach.after_end == CGAL::NEGATIVE;
-  decide("TRC-LOOK-1", next_block.words.line, too_short ? "too-short" : "reaches", reach.left_text);
-  if (too_short) return start_look_ahead(next_block);
-  Candidate cand{&next_block, &next, next_radius};
-  if (!close_open(*x, next_block, false, &cand)) return;
-  run_held_back(*x);
-  open(next_block, next, *x, next_radius);
-}
-
-bool Reference::outer_corner_circle(const Block& at_block, const std::optional<CornerClass>& rc, const FT& cross,
-                                    const FT& dot) {
-  bool g451 = at_block.state.corner == CornerMode::kG451;
-  const Decimal& limit = g451 ? md_.cutcom_corner_limit : md_.cutcom_curve_insert_limit;
-  AngleComparison a;
-  if (rc) {
-    const CornerClass& c = *rc;
-    mpz_class ic = c.a1 * c.b2 - c.b1 * c.a2, id = c.a1 * c.a2 + c.b1 * c.b2;
-    mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
-    a = compare_contour_angle(ic, id, l2, limit);
-  } else {
-    a = compare_contour_angle_exact(cross, dot, dot * dot + cross * cross, limit);
-  }
-  if (g451) {
-    bool circle = a.sign > 0;
-    decide("TRC-CORNER-3", at_block.words.line, circle ? "switch-to-G450" : "keep-G451", a.margin_text);
-    return circle;
-  }
-  bool circle = !(a.sign < 0);
-  decide("TRC-CORNER-4", at_block.words.line, circle ? "keep-G450" : "switch-to-G451", a.margin_text);
-  return circle;
-}
-
-Reference::Extent Reference::extent_of(const ContourElement& e, const FT& radius, const Point& p) const {
-  Extent x;
-  if (!e.is_arc()) {
-    Point start = equidistant_point<Kernel>(e.a, e.normal, comp_->side_radius);
-    // Signs on the lengths times |d| (no square root in the exact zero tests).
-    FT along_d = (p - start) * e.d, left_d = e.d * e.d - along_d;
-    x.before_start = CGAL::sign(along_d), x.after_end = CGAL::sign(left_d);
-    x.start_nearer = CGAL::compare(along_d, left_d) == CGAL::SMALLER;
-    x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
-  } else {
-    CircleFrame f(e.a - e.centre, e.sense);
-    CirclePosition start = f.start(), at = f.signed_from(start, p - e.centre);
-    CirclePosition end = f.end(e.b - e.centre, e.full_circle);
-    x.before_start = f.compare(at, start), x.after_end = f.compare(end, at);
-    x.start_nearer = std::fabs(f.radians(start, at)) < std::fabs(f.radians(at, end));  // picks a margin only
-    x.along_text = f.length_text(start, at, radius), x.left_text = f.length_text(at, end, radius);
-  }
-  return x;
-}
-
-void Reference::start_look_ahead(const Block& too_short) {
-  for (const Block* d : dummies_) skipped_.push_back(d);
-  dummies_.clear();
-  skipped_.push_back(&too_short);
-  examined_ = 1;
-  looking_ = true;
-  if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, too_short);
-}
-
-void Reference::look_ahead(const Block& b) {
-  if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
-  if (b.state.side != comp_->side && b.state.side != Side::kOff) {  // the contour ends before an intersection
-    decide("TRC-LOOK-2", b.words.line, "none");
-    return raise(10751, b);
-  }
-  if (!b.moves_in_plane()) {
-    if (++dummy_run_ > md_.cutcom_maxnum_dummy_blocks) return raise(10762, b);  // TRC-DUMMY-2
-    skipped_.push_back(&b);
-    return;
-  }
-  dummy_run_ = 0;
-  ++examined_;
-  ContourElement cand = element_of(b);
-  FT radius;
-  if (!equidistant_exists(cand, radius)) return pass_over(b);
-  Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
-  Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
-  std::optional<Point> y = nearest_intersection(u, v, start, cand.start_dir);
-  bool valid = false;
-  // No intersection at all: the gap between the carriers (lines: parallel, "inf").
-  std::string margin = u.circle || v.circle ? exact_mm(carrier_gap<Kernel>(u, v)) : std::string("inf");
-  if (y) {
-    Extent on = extent_of(cand, radius, *y);
-    valid = on.before_start != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;
-    // The nearer end: the violated one, or on the equidistant the one with less to spare.
-    if (on.before_start == CGAL::NEGATIVE)
-      margin = on.along_text;
-    else if (on.after_end == CGAL::NEGATIVE)
-      margin = on.left_text;
-    else
-      margin = on.start_nearer ? on.along_text : on.left_text;
-  }
-  decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
-  if (!valid) return pass_over(b);
-  looking_ = false;
-  Candidate candidate{&b, &cand, radius};
-  if (!close_open(*y, b, false, &candidate)) return;
-  run_skipped(*y);
-  open(b, cand, *y, radius);
-}
-
-void Reference::pass_over(const Block& b) {
-  skipped_.push_back(&b);
-  if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, b);
-}
-
-void Reference::run_skipped(const Point& at_point) {
-  for (const Block* d : skipped_) {
-    decide("TRC-LOOK-3", d->words.line, "skipped");
-    emit_line(*d, at({at_point, coord(d->start, comp_->axes.applicate)}),
-              at({at_point, coord(d->end, comp_->axes.applicate)}), OriginKind::kInfeed);
-  }
-  skipped_.clear();
-}
-
-std::optional<Point> Reference::nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
-                                                     const Point& vertex, const Vector& ahead) {
-  std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
-  if (xs.empty()) return std::nullopt;
-  if (xs.size() == 1) return xs[0];
-  CGAL::Comparison_result c = CGAL::compare_distance_to_point(vertex, xs[1], xs[0]);
-  if (c == CGAL::EQUAL)
-    return CGAL::compare((xs[1] - vertex) * ahead, (xs[0] - vertex) * ahead) == CGAL::LARGER ? xs[1] : xs[0];
-  return c == CGAL::SMALLER ? xs[1] : xs[0];
-}
-
-void Reference::transition_circle(const Block& next_block, const ContourElement& next, const FT& next_radius,
-                                  const Point& vertex) {
-  Point from = equidistant_point<Kernel>(vertex, open_->end_normal(), comp_->side_radius);
-  if (!close_open(from, next_block, true)) return;
-  run_held_back(from);
-  Point to = equidistant_point<Kernel>(vertex, next.start_normal(), comp_->side_radius);
-  Decimal h = coord(next_block.start, comp_->axes.applicate);
-  Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
-  corner.next_line = next_block.words.line, corner.next_block = next_block.words.number;
-  corner.next_insert = next_block.insert;
-  open(next_block, next, to, next_radius, true);
-  if (comp_->radius.sign() != 0) {  // TRC-G450-2: no circle for a zero radius
-    // Around the outside of the corner: clockwise on the left, counter-clockwise on the right.
-    emit_arc(next_block, at({from, h}), at({to, h}), at({vertex, h}), comp_->side_radius, comp_->s < 0, corner,
-             comp_->axes);
-  }
-}
-
-bool Reference::equidistant_exists(const ContourElement& e, FT& radius) {
-  if (!e.is_arc()) return true;
-  radius = equidistant_radius<Kernel>(e.radius, e.sense, comp_->side_radius);
-  CGAL::Sign sign = CGAL::sign(radius);
-  decide("TRC-ARC-EQ-1", e.line, sign == CGAL::POSITIVE ? "concentric" : "collapses", exact_mm(radius));
-  return sign == CGAL::POSITIVE;
-}
-
-void Reference::emit_line(const Block& owner, const ExactPoint& from, const ExactPoint& to, OriginKind kind,
-                          const ContourElement* offset_of, const Block* named) {
-  PathPoint a = path.output(from), b = path.output(to);
-  run_actions(owner, a);
-  if (path.same(from, to)) return;
-  PathElement e;
-  e.type = ElementType::kLine, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
-  e.feed_type = owner.state.feed_type;
-  e.start = a, e.end = b, e.origin = origin(named ? *named : owner, kind);
-  hold(owner, e,
-       ExactPath::line_element(owner.words.line, from, to, offset_of, comp_ ? comp_->side_radius : FT(0),
-                               comp_ ? comp_->axes : PlaneAxes{0, 1, 2}));
-}
-
-void Reference::emit_arc(const Block& owner, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
-                         const FT& radius, bool ccw, const Origin& from_what, PlaneAxes axes) {
-  PathPoint a = path.output(from);
-  run_actions(owner, a);
-  PathElement e;
-  e.type = ElementType::kArc, e.rapid = owner.state.motion == Motion::kRapid, e.feed = owner.state.feed;
-  e.feed_type = owner.state.feed_type;
-  e.start = a, e.end = path.output(to), e.center = path.output(centre), e.ccw = ccw;
-  e.origin = from_what;
-  hold(owner, e, ExactPath::circle_element(owner.words.line, from, to, centre, radius, axes));
-}
-
-void Reference::run_actions(const Block& b, const PathPoint& at) {
-  if (actions_done_[static_cast<std::size_t>(b.index)]) return;
-  actions_done_[static_cast<std::size_t>(b.index)] = true;
-  for (int i = 0; i < b.words.aux_count; ++i) {
-    HeldRecord r;
-    r.owner = &b, r.seq = seq_of(b),
-    r.action = {b.words.line, b.words.number, b.words.aux[static_cast<std::size_t>(i)], at};
-    held_.hold(std::move(r));
-  }
-}
-
-void Reference::release_window(const Block& b) {
-  if (stopped_) return;
-  bool window = phase_ == Phase::kActive && b.state.collision == CollisionMode::kCdon && comp_;
-  held_.release_before(window ? traversing_ + 1 - md_.cutcom_maxnum_check_blocks : INT_MAX);
-}
-
-void Reference::open(const Block& b, const ContourElement& e, const Point& start, const FT& radius,
-                     bool at_normal_start) {
-  open_at_normal_start_ = at_normal_start;
-  open_ = e;
-  open_block_ = &b;
-  open_start_ = start;
-  open_radius_ = radius;
-}
-
-}  // namespace cutcom::ref::detail
+#include "collision_window.hpp"
+#include "compensation.hpp"
+#include "sar.hpp"
+#include "trace.hpp"
 
 namespace cutcom::ref {
 
-using detail::Reference;
+namespace {
+
+class Pipeline {
+ public:
+  Pipeline(const MachineData& md, PathSink& sink, ExactPath& path)
+      : sink_(sink),
+        trace_(sink),
+        window_(sink, path, md),
+        compensation_(md, sink, trace_, window_, path),
+        sar_(md, sink, trace_, path, compensation_) {
+    // ALARM-1: before an alarm, the approach decided so far and everything held back go out.
+    trace_.set_before_alarm([this] {
+      compensation_.flush_approach();
+      window_.release_all();
+    });
+  }
+
+  // Blocks are read one by one, as a control reads them.
+  bool run(ProgramReader& reader) {
+    Block b;
+    while (!trace_.stopped() && reader.next(b)) {
+      if (!b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice});  // the reader's
+      sar_.take(b);
+      if (auto p = sar_.take_reposition()) reader.set_position(*p);  // SAR-END-1/3
+    }
+    // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
+    while (trace_.stopped() && reader.next(b)) {
+    }
+    sar_.finish();
+    if (!trace_.stopped()) compensation_.end_of_program();
+    window_.release_all();
+    return !trace_.stopped();
+  }
+
+ private:
+  PathSink& sink_;
+  detail::Trace trace_;
+  CollisionWindow window_;
+  detail::Compensation compensation_;
+  detail::SarExpansion sar_;
+};
+
+}  // namespace
 
 bool run_exact(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactPath& path) {
-  Reference engine(md, sink);
-  bool ok = engine.run(reader);
-  path = std::move(engine.path);
-  return ok;
+  return Pipeline(md, sink, path).run(reader);
 }
 
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
-  Reference engine(md, sink);
-  bool ok = engine.run(reader);
-  if (checks) engine.path.check(*checks);
+  ExactPath path;
+  bool ok = Pipeline(md, sink, path).run(reader);
+  if (checks) path.check(*checks);
   return ok;
 }
 

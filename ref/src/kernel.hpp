@@ -10,6 +10,7 @@
 
 #include "cutcom/block.hpp"
 #include "cutcom/path.hpp"
+#include "exact_root.hpp"
 
 namespace cutcom::ref {
 
@@ -25,6 +26,12 @@ FT leaf(const Decimal& d);
 
 // The in-plane point (abscissa, ordinate) of a programmed position, in units.
 Point plane_point(const Point3& p, PlaneAxes axes);
+
+// The unit normal to the left of d (one square root).
+inline Vector unit_left_normal(const Vector& d) {
+  FT l = exact_root(d.squared_length());
+  return Vector(-d.y() / l, d.x() / l);
+}
 
 // A margin for the decision trace: the sign is exact, the digits are a 20-digit rendering.
 std::string exact_text(const FT& value);

@@ -1,71 +1,41 @@
-// ref: smooth approach and retraction (spec sar.md). The SAR block is expanded into sub-blocks
-// that run through the compensation as if programmed (SAR-TRC-1); their points are exact: P3
-// has one square root (the unit tangent), the applicates are decimals.
-#include "reference.hpp"
+// Stage 1, the SAR expansion of ref (sar.hpp), exact. fast decides the same clauses in double in
+// fast/src/sar.cpp.
+#include "sar.hpp"
+
+#include "arc_check.hpp"
 
 namespace cutcom::ref::detail {
 
-void Reference::take(Block b) {
-  if (!stopped_ && !b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice});  // the reader's
+void SarExpansion::take(const Block& b) {
   std::optional<PlaneOverride> over = after_sar_end(b);
-  if (stopped_) return;
-  switch (sar_seq_.take(b)) {
+  switch (sequence_.take(b)) {
     case SarSequence::Step::kPass:
-      return push(b, over);
+      return forward(b, over);
     case SarSequence::Step::kHold:
       return;
     case SarSequence::Step::kApproach:
-      sar_approach(sar_seq_.gathered(), sar_seq_.p4_index());
-      return sar_seq_.release();
+      approach(sequence_.gathered(), sequence_.p4_index());
+      return sequence_.release();
     case SarSequence::Step::kRetraction:
-      if (last_contour_ < 0) return raise(10744, b, "SAR-TANGENT-1");
-      return sar_retraction(b, program_[static_cast<std::size_t>(last_contour_)]);
-    case SarSequence::Step::kAlarm: {
-      const AlarmInfo* info = find_alarm(sar_seq_.alarm());
-      return raise(sar_seq_.alarm(), sar_seq_.alarm_block(), info ? info->clause : std::string_view{});
-    }
+      if (!last_contour_) return trace_.raise(10744, b, "SAR-TANGENT-1");
+      return retraction(b);
+    case SarSequence::Step::kAlarm:
+      return trace_.raise_catalogued(sequence_.alarm(), sequence_.alarm_block());
   }
 }
 
-void Reference::push(Block b, const std::optional<PlaneOverride>& over) {
-  if (stopped_) return;
-  b.index = static_cast<int>(program_.size());
-  if (over) overrides_[b.index] = *over;
-  program_.push_back(b);
-  actions_done_.push_back(false);
-  const Block& kept = program_.back();
-  if (kept.moves_in_plane()) ++traversing_;
-  if (kept.sar.move == SarMove::kNone && kept.moves_in_plane()) last_contour_ = kept.index;
-  seq_.push_back(traversing_);
-  step(kept);
-  release_window(kept);
+void SarExpansion::forward(const Block& b, const std::optional<PlaneOverride>& over) {
+  if (trace_.stopped()) return;
+  if (b.sar.move == SarMove::kNone && b.moves_in_plane()) last_contour_ = b, last_contour_over_ = over;
+  next_.step(b, over);
 }
 
-ExactPoint Reference::start_of(const Block& b) const {
-  auto it = overrides_.find(b.index);
-  if (it == overrides_.end() || !it->second.start) return at(b.start);
-  return ExactPoint::in_plane(*it->second.start, coord(b.start, plane_axes(b.state.plane).applicate),
-                              plane_axes(b.state.plane));
+void SarExpansion::finish() {
+  if (!trace_.stopped() && sequence_.finish() == SarSequence::Step::kAlarm)
+    trace_.raise(sequence_.alarm(), sequence_.alarm_block(), "SAR-TANGENT-1");
 }
 
-ExactPoint Reference::end_of(const Block& b) const {
-  auto it = overrides_.find(b.index);
-  if (it == overrides_.end() || !it->second.end) return at(b.end);
-  return ExactPoint::in_plane(*it->second.end, coord(b.end, plane_axes(b.state.plane).applicate),
-                              plane_axes(b.state.plane));
-}
-
-ContourElement Reference::element_of(const Block& b) const {
-  PlaneAxes axes = comp_ ? comp_->axes : plane_axes(b.state.plane);
-  auto it = overrides_.find(b.index);
-  if (it == overrides_.end()) return b.is_arc() ? ContourElement::of_arc(b, axes) : ContourElement::of_line(b, axes);
-  if (it->second.shape) return sar_element(*it->second.shape, b);
-  return exact_line(b, start_of(b).plane(axes), end_of(b).plane(axes));
-}
-
-// SAR-END-3: after a retraction that ended without end point (cases 1 and 2) the tool stands at
-// an exact point off the decimal grid; the blocks after it start there.
-std::optional<PlaneOverride> Reference::after_sar_end(const Block& b) {
+std::optional<PlaneOverride> SarExpansion::after_sar_end(const Block& b) {
   if (!sar_end_) return std::nullopt;
   PlaneOverride over;
   over.start = sar_end_->at;
@@ -76,67 +46,67 @@ std::optional<PlaneOverride> Reference::after_sar_end(const Block& b) {
   return over;
 }
 
-Reference::SarTrc Reference::sar_trc(const ModalState& st) {
+SarExpansion::SarTrc SarExpansion::sar_trc(const ModalState& st) {
   if (st.side == Side::kOff || st.edge == 0 || st.tool == 0 || !st.edge_defined) return std::nullopt;
   return compensation_side(st);  // TRC-RADIUS-2 (decided in core)
 }
 
-int Reference::sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4,
-                        const std::optional<Point>& p0) {
+int SarExpansion::sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4,
+                           const std::optional<Point>& p0) {
   SarSide mode = b.state.sar_side;
-  if (mode == SarSide::kG141) return decide("SAR-SIDE-1", b.words.line, "G141-left"), 1;
-  if (mode == SarSide::kG142) return decide("SAR-SIDE-1", b.words.line, "G142-right"), -1;
+  if (mode == SarSide::kG141) return trace_.decide("SAR-SIDE-1", b.words.line, "G141-left"), 1;
+  if (mode == SarSide::kG142) return trace_.decide("SAR-SIDE-1", b.words.line, "G142-right"), -1;
   if (mode == SarSide::kG140 && trc)
-    return decide("SAR-SIDE-1", b.words.line, trc->s > 0 ? "G140-left" : "G140-right"), trc->s;
+    return trace_.decide("SAR-SIDE-1", b.words.line, trc->s > 0 ? "G140-left" : "G140-right"), trc->s;
   // SAR-SIDE-2: G143 (or G140 without compensation): the side of the tangent P0 lies on.
   if (!p0) {
-    decide("SAR-SIDE-3", b.words.line, "implicit-end-point");
-    raise(10747, b, "SAR-SIDE-3");
+    trace_.decide("SAR-SIDE-3", b.words.line, "implicit-end-point");
+    trace_.raise(10747, b, "SAR-SIDE-3");
     return 0;
   }
   Vector off = *p0 - p4;
   FT cross = t.x() * off.y() - t.y() * off.x();
   CGAL::Sign sign = CGAL::sign(cross);
-  decide("SAR-SIDE-2", b.words.line,
-         sign == CGAL::POSITIVE   ? "left"
-         : sign == CGAL::NEGATIVE ? "right"
-                                  : "on-tangent",
-         exact_mm(cross / exact_root(t.squared_length())));
+  trace_.decide("SAR-SIDE-2", b.words.line,
+                sign == CGAL::POSITIVE   ? "left"
+                : sign == CGAL::NEGATIVE ? "right"
+                                         : "on-tangent",
+                exact_mm(cross / exact_root(t.squared_length())));
   if (sign == CGAL::ZERO) {
-    raise(10744, b, "SAR-SIDE-2");
+    trace_.raise(10744, b, "SAR-SIDE-2");
     return 0;
   }
   return sign == CGAL::POSITIVE ? 1 : -1;
 }
 
-std::optional<FT> Reference::sar_size(const Block& b, const SarTrc& trc, int s) {
+std::optional<FT> SarExpansion::sar_size(const Block& b, const SarTrc& trc, int s) {
   SarSize z = cutcom::sar_size(b, trc, s);  // SAR-DISR-1/2 (decided in core)
-  decide(z.decision, b.words.line);
-  if (!z.size) return raise(10742, b, z.decision.clause), std::nullopt;
+  trace_.decide(z.decision, b.words.line);
+  if (!z.size) return trace_.raise(10742, b, z.decision.clause), std::nullopt;
   return leaf(*z.size);
 }
 
-bool Reference::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
+bool SarExpansion::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4) {
   h = cutcom::sar_levels(b, end_case, h4);
   // SAR-DISRP-2, SAR-DISCL-3 (decision 9): decided in core; P2 clamped there.
   SarLevelCheck check = check_sar_levels(b, h, md_);
-  if (check.retraction_plane) decide(*check.retraction_plane, b.words.line);
-  if (check.reversal) decide(*check.reversal, b.words.line);
-  if (check.alarm) return raise(check.alarm, b, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"), false;
+  if (check.retraction_plane) trace_.decide(*check.retraction_plane, b.words.line);
+  if (check.reversal) trace_.decide(*check.reversal, b.words.line);
+  if (check.alarm) return trace_.raise(check.alarm, b, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"), false;
   set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }
 
-void Reference::sar_approach(std::span<const Block> g, int p4_index) {
+void SarExpansion::approach(std::span<const Block> g, int p4_index) {
   const Block& a = g[0];
   const Block& m = g[static_cast<std::size_t>(p4_index)];
   const Block& d = g.back();
   PlaneAxes ax = plane_axes(a.state.plane);
-  if (d.is_arc() && !arc_is_consistent(d)) return;
+  if (d.is_arc() && !arc_is_consistent(d, md_, trace_)) return;
   // SAR-TANGENT-1: the start tangent of the first element that starts at P4.
   ContourElement de = d.is_arc() ? ContourElement::of_arc(d, ax) : ContourElement::of_line(d, ax);
   Vector t = de.start_dir;
-  decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
+  trace_.decide("SAR-TANGENT-1", a.words.line, p4_index == 0 ? "p4-in-sar-block" : "p4-in-later-block");
   Point p4 = plane_point(m.end, ax), p0 = plane_point(a.start, ax);
   SarTrc trc = sar_trc(a.state);
   SarContour c = *a.words.sar_contour;
@@ -155,38 +125,41 @@ void Reference::sar_approach(std::span<const Block> g, int p4_index) {
   FT lead = exact_root((shape.p3 - p0).squared_length());
   plan.lead_moves = CGAL::sign(lead) != CGAL::ZERO;
   plan.sense = shape.sense;
-  decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead", exact_mm(lead));
+  trace_.decide("SAR-SUB-1", a.words.line, plan.lead_moves ? "lead" : "no-lead", exact_mm(lead));
   SarSubBlocks subs;
   sar_sub_blocks(a, m, plan, subs);
   // SAR-VAR-1: $P_APR = P3, $P_AEP = P4 (programmed contour, workpiece coordinates).
   SarVariables v;
   v.line = a.words.line, v.block = a.words.number;
-  v.p_apr = path.output(ExactPoint::in_plane(shape.p3, plan.h.h3, ax));
-  v.p_aep = path.output(at(m.end));
+  v.p_apr = path_.output(ExactPoint::in_plane(shape.p3, plan.h.h3, ax));
+  v.p_aep = path_.output(ExactPoint::programmed(m.end));
   sink_.sar_variables(v);
   push_sub_blocks(subs, shape, std::nullopt);
-  for (std::size_t k = 1; k < g.size() && !stopped_; ++k) {
+  for (std::size_t k = 1; k < g.size() && !trace_.stopped(); ++k) {
     if (static_cast<int>(k) == p4_index && subs.element_in_p4_block) {
       PlaneOverride over;
       over.start = shape.p3, over.shape = shape;
-      push(subs.p4_element, over);
+      forward(subs.p4_element, over);
     } else {
-      push(g[k]);
+      forward(g[k]);
     }
   }
 }
 
-void Reference::sar_retraction(const Block& r, const Block& last) {
+void SarExpansion::retraction(const Block& r) {
   PlaneAxes ax = plane_axes(r.state.plane);
-  // SAR-TANGENT-1: the end tangent of the contour's last block.
-  Vector t = element_of(last).end_dir;
-  decide("SAR-TANGENT-1", r.words.line, "end-of-contour");
+  // SAR-TANGENT-1: the end tangent of the contour's last block, in its plane.
+  const Block& last = *last_contour_;
+  const PlaneOverride* last_over = last_contour_over_ ? &*last_contour_over_ : nullptr;
+  PlaneAxes last_axes = plane_axes(last.state.plane);
+  Vector t = element_with(last, last_over, last_axes).end_dir;
+  trace_.decide("SAR-TANGENT-1", r.words.line, "end-of-contour");
   SarEndCase end_case = sar_end_case(r);
-  decide("SAR-END-1", r.words.line,
-         end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
-         : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
-                                                  : "programmed-p0");
-  Point p4 = plane_end(last);
+  trace_.decide("SAR-END-1", r.words.line,
+                end_case == SarEndCase::kNoAxis          ? "ends-at-p2"
+                : end_case == SarEndCase::kApplicateOnly ? "ends-at-p1"
+                                                         : "programmed-p0");
+  Point p4 = end_with(last, last_over).plane(last_axes);
   std::optional<Point> p0;
   if (end_case == SarEndCase::kPlaneAxis) p0 = plane_point(r.end, ax);
   SarTrc trc = sar_trc(r.previous.side != Side::kOff ? r.previous : r.state);
@@ -220,18 +193,18 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
     tool_centre = shape.p3;
     plan.tc_a = plan.p3_a, plan.tc_b = plan.p3_b;
   }
-  decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead", exact_mm(lead));
+  trace_.decide("SAR-SUB-1", r.words.line, plan.lead_moves ? "lead" : "no-lead", exact_mm(lead));
   SarSubBlocks subs;
   sar_sub_blocks(r, r, plan, subs);
   push_sub_blocks(subs, shape, tool_centre);
-  if (stopped_) return;
+  if (trace_.stopped()) return;
   if (end_case == SarEndCase::kPlaneAxis) {
     // SAR-END-1: without the applicate the retraction ended at P2's level, not at the reader's.
     if (plan.h.h0 != coord(r.end, ax.applicate)) {
       Point3 p = r.end;
       Decimal* coords[3] = {&p.x, &p.y, &p.z};
       *coords[ax.applicate] = plan.h.h0;
-      reader_->set_position(p);
+      reposition_ = p;
     }
     return;
   }
@@ -243,12 +216,12 @@ void Reference::sar_retraction(const Block& r, const Block& last) {
   *cs[ax.abscissa] = tool_centre ? plan.tc_a : plan.p3_a;
   *cs[ax.ordinate] = tool_centre ? plan.tc_b : plan.p3_b;
   *cs[ax.applicate] = plan.h.h0;
-  reader_->set_position(picture);
+  reposition_ = picture;
 }
 
-void Reference::push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape,
-                                const std::optional<Point>& tool_centre) {
-  for (int k = 0; k < subs.count && !stopped_; ++k) {
+void SarExpansion::push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape,
+                                   const std::optional<Point>& tool_centre) {
+  for (int k = 0; k < subs.count && !trace_.stopped(); ++k) {
     const Block& b = subs.blocks[static_cast<std::size_t>(k)];
     PlaneOverride over;
     if (b.sar.start_at_p3) over.start = shape.p3;
@@ -259,7 +232,7 @@ void Reference::push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape,
       (shape.approach ? over.end : over.start) = shape.p4;
     }
     if (b.sar.end_at_tool_centre) over.end = *tool_centre;
-    push(b, over);
+    forward(b, over);
   }
 }
 

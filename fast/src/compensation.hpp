@@ -1,6 +1,8 @@
-// fast's engine state: the TRC state machine, block by block. Its member functions live in
-// engine.cpp (selection, corners, look-ahead, output), ends.cpp (approach and retraction: NORM,
-// KONT, G460-G462) and collision.cpp (CDON: entry, crossing, cut). Private to fast.
+// Stage 2, the compensation: the TRC state machine, block by block (as ref/src/compensation.hpp).
+// Its member functions live in compensation.cpp (selection, corners, look-ahead, output into the
+// collision window), ends.cpp (approach and retraction: NORM, KONT, G460-G462) and collision.cpp
+// (the collision check under CDON: entry, crossing, cut). It owns its state; it hands its output
+// to the collision window (stage 3) and its decisions and alarms to the trace. Private to fast.
 #pragma once
 
 #include <algorithm>
@@ -11,109 +13,39 @@
 #include <span>
 #include <vector>
 
+#include "block_copy.hpp"
 #include "bottleneck.hpp"
+#include "collision_window.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/programmed_decisions.hpp"
-#include "cutcom/sar_layout.hpp"
-#include "cutcom/sar_sequence.hpp"
 #include "edge_strategy.hpp"
-#include "held_output.hpp"
 #include "plane_geometry.hpp"
-#include "sar_shape.hpp"
+#include "trace.hpp"
 
 namespace cutcom::fast {
 
-// What fast keeps of a block: converted once, copied into fixed slots (no allocation).
-struct BlockCopy {
-  int line = 0;
-  int block = 0;  // the block's index in the program: its identity (inserted elements share a line)
-  std::optional<std::int64_t> number;
-  PathPoint start, end;  // programmed, workpiece coordinates
-  bool rapid = false;
-  bool arc = false;  // G2/G3 with I/J/K
-  int sense = 1;     // +1 G3, -1 G2
-  PathPoint centre;  // programmed centre (I/J/K arcs)
-  bool has_centre = false;
-  double cr = 0;                  // CR= arcs
-  std::array<Int128, 3> delta{};  // exact programmed displacement X Y Z, units of 1e-9 mm
-  Decimal feed;
-  std::array<AuxFunction, BlockWords::kMaxAux> aux{};
-  int aux_count = 0;
-  bool actions_done = false;
-  bool kont = false;  // KONT in force (approach and retraction)
-  bool g451 = false;  // G451 in force
-  bool cdon = false;  // CDON in force
-  int seq = 0;        // ordinal of the last traversing block up to this one (TRC-CD-1 window)
-  EdgeStrategy edge_strategy = EdgeStrategy::kG462;
-  FeedType feed_type = FeedType::kG94;
-  SarMove sar = SarMove::kNone;
-  ContourInsert insert;  // NC-CONTOUR-*: an element the reader inserted
-  bool moves = false;    // motion in the plane
-  bool exact = true;     // start and end are the programmed decimals (`delta` is valid)
-  // SAR-POINTS-1/2: a SAR element is tangent to the contour at P4 by construction: after it on
-  // approach, before it on retraction.
-  bool tangent_after = false, tangent_before = false;
+class Compensation {
+ public:
+  Compensation(const MachineData& m, PathSink& out, Trace& t, CollisionWindow& window)
+      : md(m), sink(out), trace(t), held(window) {}
 
-  static BlockCopy of(const Block& b) {
-    BlockCopy c;
-    c.line = b.words.line;
-    c.block = b.index;
-    c.number = b.words.number;
-    c.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
-    c.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
-    c.rapid = b.state.motion == Motion::kRapid;
-    c.arc = b.is_arc();
-    c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
-    c.has_centre = b.centre.has_value();
-    if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
-    if (b.words.cr) c.cr = b.words.cr->to_double();
-    c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
-    c.feed = b.state.feed;
-    std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
-    c.aux_count = b.words.aux_count;
-    c.kont = b.state.approach == ApproachMode::kKont;
-    c.g451 = b.state.corner == CornerMode::kG451;
-    c.cdon = b.state.collision == CollisionMode::kCdon;
-    c.edge_strategy = b.state.edge_strategy;
-    c.feed_type = b.state.feed_type;
-    c.sar = b.sar.move;
-    c.insert = b.insert;
-    c.moves = b.moves_in_plane();
-    c.exact = b.sar.move == SarMove::kNone;
-    return c;
-  }
-};
-
-inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
-
-// Plane <-> workpiece coordinates in a given plane (the compensation's, or a SAR block's).
-inline Vec2 ab_in(const PathPoint& p, PlaneAxes a) { return {pick(p, a.abscissa), pick(p, a.ordinate)}; }
-inline double h_in(const PathPoint& p, PlaneAxes a) { return pick(p, a.applicate); }
-inline PathPoint xyz_in(Vec2 v, double applicate, PlaneAxes a) {
-  PathPoint p;
-  double* c[3] = {&p.x, &p.y, &p.z};
-  *c[a.abscissa] = v.a, *c[a.ordinate] = v.b, *c[a.applicate] = applicate;
-  return p;
-}
-// The element of a block in the plane `a`.
-inline Element element_in(const BlockCopy& c, PlaneAxes a) {
-  if (!c.arc) return Element::line(ab_in(c.start, a), ab_in(c.end, a));
-  if (c.has_centre) return Element::circle(ab_in(c.start, a), ab_in(c.end, a), ab_in(c.centre, a), c.sense);
-  return Element::circle_by_radius(ab_in(c.start, a), ab_in(c.end, a), c.cr, c.sense);
-}
-
-struct Engine::State {
+  // A block from the SAR expansion; `o` gives its in-plane points where they are not its decimals.
+  void step(const Block& b, const PlaneOverride* o = nullptr);
+  // TRC-END-1 at the program's end.
+  void end_of_program();
+  // ALARM-1: the approach line decided before an alarm is output.
+  void flush_approach();
+  // ALARM-1: the approach line decided before an alarm is output.
   // kRetracting: a G40 block without a plane axis left the tool at the normal end point of the
   // last contour block; the next block with a plane axis finishes the retraction (TRC-DESEL-3).
   enum class Phase { kOff, kApproach, kActive, kRetracting };
 
-  State(const MachineData& m, PathSink& out) : md(m), sink(out), held(out, m), sar_seq(m) {}
-
+ private:
   const MachineData& md;
   PathSink& sink;
-  HeldOutput held;  // TRC-CD-1: the collision window's held-back output (held_output.hpp)
+  Trace& trace;
+  CollisionWindow& held;  // stage 3: where output goes (collision_window.hpp)
   Phase phase = Phase::kOff;
-  bool stopped = false;
   bool d0_noticed = false;
 
   // Compensation in force (set at selection).
@@ -151,8 +83,6 @@ struct Engine::State {
   std::vector<BlockCopy> skipped;
   int examined = 0, dummy_run = 0;
 
-  bool holding = false;  // CDON in force for the block being processed: output waits in `held`
-  int traversing = 0;
   std::array<BlockCopy, 2> prev_blocks;  // the last traversing block with compensation and the one before
   int prev_slot = 0;
   bool has_prev = false;
@@ -161,60 +91,14 @@ struct Engine::State {
 
   BlockCopy copy_of(const Block& b) const {
     BlockCopy c = BlockCopy::of(b);
-    c.seq = traversing;
-    if (&b == over_block) apply(over, c);
+    c.seq = held.seq();
+    if (&b == over_block) over.apply(c);
     return c;
   }
 
-  // --- SAR: smooth approach and retraction (sar.cpp) -----------------------------------------
-  // Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3).
-  struct PlaneOverride {
-    PlaneAxes axes{0, 1, 2};  // the plane its points are in (the SAR block's)
-    bool start = false, end = false;
-    Vec2 start_ab, end_ab;
-    bool circle = false;  // the SAR element's circle
-    Vec2 centre;
-    int sense = 0;
-    bool tangent_after = false, tangent_before = false;
-  };
-  void apply(const PlaneOverride& o, BlockCopy& c) const;
-  // A programmed block: through the SAR sequence (SAR-P4-1 ...), then run.
-  void take(const Block& b);
-  // Runs one block through the compensation; `o` gives its in-plane points where needed (SAR).
-  void step(const Block& b, const PlaneOverride* o = nullptr);
-  void sar_approach(std::span<const Block> gathered, int p4_index);
-  void sar_retraction(const Block& block);
-  // The compensation in force at a SAR block, side and radius as decided in core (empty: none).
-  using SarTrc = std::optional<CompensationSide>;
-  static SarTrc sar_trc(const ModalState& st);
-  int sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, const std::optional<Vec2>& p0);
-  bool sar_size(const Block& b, const SarTrc& trc, int sd, double& size);
-  bool sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4);
-  void push_sub_blocks(const SarShape& shape, const std::optional<Vec2>& tool_centre);
-  void sar_alarm(int number, const Block& at);
-
-  SarSequence sar_seq;
-  SarSubBlocks sar_subs;  // reused: nothing allocated per SAR block
+  // The block being stepped and its override (SAR-SUB-1, SAR-END-3), as the SAR expansion gave it.
   PlaneOverride over;
   const Block* over_block = nullptr;
-  // The last programmed block moving in the plane, as run (SAR-TANGENT-1 at a retraction): only
-  // what BlockCopy::of reads of its geometry, since a whole Block (its words and actions) or a
-  // BlockCopy per block would cost more than the reader (converted only at a retraction).
-  Block last_contour;
-  void keep_last_contour(const Block& b) {
-    last_contour.words.line = b.words.line, last_contour.words.number = b.words.number;
-    last_contour.words.cr = b.words.cr;
-    last_contour.index = b.index, last_contour.state = b.state;
-    last_contour.start = b.start, last_contour.end = b.end, last_contour.centre = b.centre;
-    last_contour.circle = b.circle, last_contour.sar = b.sar, last_contour.insert = b.insert;
-  }
-  PlaneOverride last_contour_over;
-  bool last_contour_overridden = false;
-  bool has_last_contour = false;
-  bool at_sar_end = false;  // SAR-END-3: the tool stands at sar_end (in the plane)
-  Vec2 sar_end;
-  Plane sar_end_plane = Plane::kG17;
-  std::optional<Point3> reposition;  // for the reader (SAR-END-3)
   HeldRecord record_of(const BlockCopy& owner) const {
     HeldRecord k;
     k.seq = owner.seq, k.owner_line = owner.line, k.owner_number = owner.number, k.owner_start = owner.start;
@@ -223,12 +107,8 @@ struct Engine::State {
     k.owner_feed_type = owner.feed_type, k.owner_sar = owner.sar;
     return k;
   }
-  // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
-  bool direct() const { return !holding && held.empty(); }
-  void release_before(int seq) { held.release_before(seq); }
-  void release_all() { held.release_all(); }
-  // With CDON in force the output of the last MD20240 traversing blocks waits; otherwise it goes
-  // out block by block.
+  bool direct() const { return held.direct(); }
+  // TRC-CD-1: the window is in force while compensation is active under CDON.
   void release_window(const Block& b);
 
   // --- plane <-> workpiece coordinates -------------------------------------------------------
@@ -237,26 +117,13 @@ struct Engine::State {
   PathPoint xyz(Vec2 v, double applicate) const { return xyz_in(v, applicate, axes); }
 
   // --- output ----------------------------------------------------------------------------------
-  void decide(std::string_view clause, int line, std::string_view branch) {
-    Decision d;
-    d.clause = clause, d.line = line, d.branch = branch;
-    sink.decision(d);
-  }
+  void decide(std::string_view clause, int line, std::string_view branch) { trace.decide(clause, line, branch); }
   void decide(std::string_view clause, int line, std::string_view branch, double margin) {
-    Decision d;
-    d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin = margin;
-    sink.decision(d);
+    trace.decide(clause, line, branch, margin);
   }
-  // A decision on programmed decimals, taken in core (programmed_decisions.hpp): traced as given.
-  void decide(const ProgrammedDecision& d, int line) {
-    if (d.has_margin) return decide(d.clause, line, d.branch, d.approx);
-    decide(d.clause, line, d.branch);
-  }
+  void decide(const ProgrammedDecision& d, int line) { trace.decide(d, line); }
   void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
-    flush_approach();  // ALARM-1: what was decided before the alarm is output
-    release_all();
-    sink.alarm(make_alarm(number, line, block, clause));
-    stopped = true;
+    trace.raise(number, line, block, clause);
   }
   void actions(BlockCopy& b, const PathPoint& at);
   Origin origin(const BlockCopy& b, OriginKind kind) const {
@@ -335,8 +202,6 @@ struct Engine::State {
 
   // --- phase: selection block waiting for the first contour block --------------------------
   void approach(const Block& b);
-
-  void flush_approach();
 
   // --- KONT: travelling around the start or end point (TRC-KONT-*) -----------------------------
   // The corner a KONT move makes with the contour at `vertex`: d1 runs into it, d2 out of it;
@@ -492,14 +357,6 @@ struct Engine::State {
   void retract_edge_around(BlockCopy& d, const BlockCopy& last_block, const Kont& k);
 
   void retract_around(BlockCopy& last, const Kont& k);
-
-  // TRC-END-1: the program ends with compensation in force.
-  void end_of_program();
-
-  // ARC-CENTRE-2: the end point may miss the circle about the programmed centre by at most
-  // max(MD21000, MD21010 * radius); beyond, alarm 14040. ARC-CR-1: a CR= circle must reach its end
-  // point. Both decided in core (programmed_decisions.hpp).
-  bool arc_is_consistent(const Block& b);
 };
 
 }  // namespace cutcom::fast

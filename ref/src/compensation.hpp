@@ -1,6 +1,8 @@
-// ref's engine class: the walk through the program, block by block. Its member functions live
-// in engine.cpp (selection, corners, look-ahead, output), ends.cpp (approach and retraction:
-// NORM, KONT, G460-G462) and collision.cpp (CDON: entry, crossing, cut). Private to ref.
+// Stage 2, the compensation: ref's walk through the blocks (as fast/src/compensation.hpp). Its
+// member functions live in compensation.cpp (selection, corners, look-ahead, output into the
+// collision window), ends.cpp (approach and retraction: NORM, KONT, G460-G462) and collision.cpp
+// (the collision check under CDON: entry, crossing, cut). It owns its state; it hands its output
+// to the collision window (stage 3) and its decisions and alarms to the trace. Private to ref.
 #pragma once
 
 #include <algorithm>
@@ -11,19 +13,17 @@
 #include <span>
 
 #include "bottleneck.hpp"
+#include "circle_position.hpp"
+#include "collision_window.hpp"
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
 #include "cutcom/programmed_decisions.hpp"
 #include "cutcom/ref/engine.hpp"
-#include "cutcom/sar_layout.hpp"
-#include "cutcom/sar_sequence.hpp"
 #include "edge_strategy.hpp"
 #include "equidistant.hpp"
-#include "circle_position.hpp"
 #include "exact_path.hpp"
-#include "exact_root.hpp"
-#include "held_output.hpp"
-#include "sar_shape.hpp"
+#include "plane_override.hpp"
+#include "trace.hpp"
 
 namespace cutcom::ref::detail {
 
@@ -33,34 +33,19 @@ struct CentrePoint {
   Decimal applicate;
 };
 
-// Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3): exact values.
-struct PlaneOverride {
-  std::optional<Point> start, end;
-  std::optional<SarShape> shape;  // the SAR element
-};
-
-class Reference {
+class Compensation {
  public:
-  Reference(const MachineData& md, PathSink& sink) : md_(md), sink_(sink), held_(sink, path), sar_seq_(md) {}
+  Compensation(const MachineData& md, PathSink& sink, Trace& trace, CollisionWindow& window, ExactPath& path)
+      : md_(md), sink_(sink), trace_(trace), held_(window), path(path) {}
 
-  // Blocks are read one by one, as a control reads them, and kept: ref may look back at any of
-  // them (a deque keeps references to earlier blocks valid). SAR blocks are expanded into their
-  // sub-blocks first (sar.cpp).
-  bool run(ProgramReader& reader) {
-    reader_ = &reader;
-    Block b;
-    while (!stopped_ && reader.next(b)) take(b);
-    // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
-    while (stopped_ && reader.next(b)) {
-    }
-    if (!stopped_ && sar_seq_.finish() == SarSequence::Step::kAlarm)
-      raise(sar_seq_.alarm(), sar_seq_.alarm_block(), "SAR-TANGENT-1");
-    if (!stopped_) end_of_program();
-    held_.release_before(INT_MAX);
-    return !stopped_;
-  }
-
-  ExactPath path;
+  // A block from the SAR expansion; `over` gives its exact in-plane points where they are not its
+  // decimals. Blocks are kept: ref may look back at any of them (a deque keeps references to
+  // earlier blocks valid).
+  void step(Block b, const std::optional<PlaneOverride>& over = std::nullopt);
+  // TRC-END-1 at the program's end.
+  void end_of_program();
+  // ALARM-1: the approach line decided before an alarm is output.
+  void flush_approach();
 
  private:
   // kRetracting: a G40 block without a plane axis left the tool at the normal end point of the
@@ -68,7 +53,7 @@ class Reference {
   enum class Phase { kOff, kApproach, kActive, kRetracting };
 
   // --- the compensation in force ---------------------------------------------------------------
-  struct Compensation {
+  struct InForce {
     Plane plane;
     PlaneAxes axes;
     Side side;
@@ -79,27 +64,12 @@ class Reference {
   };
 
   // --- trace, alarms, output ---------------------------------------------------------------------
-  void decide(std::string_view clause, int line, std::string_view branch) {
-    Decision d;
-    d.clause = clause, d.line = line, d.branch = branch;
-    sink_.decision(d);
-  }
+  void decide(std::string_view clause, int line, std::string_view branch) { trace_.decide(clause, line, branch); }
   void decide(std::string_view clause, int line, std::string_view branch, std::string margin) {
-    Decision d;
-    d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin_exact = std::move(margin);
-    sink_.decision(d);
+    trace_.decide(clause, line, branch, std::move(margin));
   }
-  // A decision on programmed decimals, taken in core (programmed_decisions.hpp): its exact margin.
-  void decide(const ProgrammedDecision& d, int line) {
-    if (d.has_margin) return decide(d.clause, line, d.branch, d.exact);
-    decide(d.clause, line, d.branch);
-  }
-  void raise(int number, const Block& at, std::string_view clause = {}) {
-    flush_approach();  // ALARM-1: what was decided before the alarm is output
-    held_.release_before(INT_MAX);
-    sink_.alarm(make_alarm(number, at.words.line, at.words.number, clause));
-    stopped_ = true;
-  }
+  void decide(const ProgrammedDecision& d, int line) { trace_.decide(d, line); }
+  void raise(int number, const Block& at, std::string_view clause = {}) { trace_.raise(number, at, clause); }
 
   // Auxiliary functions of a block run before its first element (PATH-ACTION-1).
   void run_actions(const Block& b, const PathPoint& at);
@@ -131,43 +101,18 @@ class Reference {
   ExactPoint at(const CentrePoint& p) const { return ExactPoint::in_plane(p.plane, p.applicate, comp_->axes); }
   static ExactPoint at(const Point3& p) { return ExactPoint::programmed(p); }
 
-  // --- SAR: smooth approach and retraction (sar.cpp) ---------------------------------------------
-  // A programmed block: through the SAR sequence (SAR-P4-1 ...), then run.
-  void take(Block b);
-  // Runs one block (programmed or a SAR sub-block); `over` gives its exact in-plane points where
-  // they are not its decimals.
-  void push(Block b, const std::optional<PlaneOverride>& over = std::nullopt);
-  // SAR-POINTS-1, SAR-SIDE-*, SAR-DISR-*, SAR-DISCL-*, SAR-SUB-1 ...: expands an approach.
-  void sar_approach(std::span<const Block> gathered, int p4_index);
-  // SAR-POINTS-2, SAR-END-*: expands a retraction; `last` is the contour's last block.
-  void sar_retraction(const Block& r, const Block& last);
-  // The compensation in force at a SAR block, side and radius as decided in core (empty: none).
-  using SarTrc = std::optional<CompensationSide>;
-  static SarTrc sar_trc(const ModalState& state);
-  // SAR-SIDE-1/2/3: the side of a circle; 0 after an alarm.
-  int sar_side(const Block& b, const SarTrc& trc, const Vector& t, const Point& p4, const std::optional<Point>& p0);
-  // SAR-DISR-1/2: L or R in units; empty after an alarm.
-  std::optional<FT> sar_size(const Block& b, const SarTrc& trc, int s);
-  // SAR-DISCL-1..3, SAR-DISRP-1/2, SAR-SEG-1/2: the levels; false after an alarm.
-  bool sar_levels(const Block& b, SarLevels& h, SarEndCase end_case, const Decimal& h4);
-  // Pushes the sub-blocks with their exact points.
-  void push_sub_blocks(const SarSubBlocks& subs, const SarShape& shape, const std::optional<Point>& tool_centre);
-  // SAR-END-3: a programmed block after a retraction that ended without end point starts there.
-  std::optional<PlaneOverride> after_sar_end(const Block& b);
-
-  ExactPoint start_of(const Block& b) const;
-  ExactPoint end_of(const Block& b) const;
+  // The block's override, if the SAR expansion gave one.
+  const PlaneOverride* override_of(const Block& b) const {
+    auto it = overrides_.find(b.index);
+    return it == overrides_.end() ? nullptr : &it->second;
+  }
+  ExactPoint start_of(const Block& b) const { return start_with(b, override_of(b)); }
+  ExactPoint end_of(const Block& b) const { return end_with(b, override_of(b)); }
   Point plane_end(const Block& b) const { return end_of(b).plane(plane_axes(b.state.plane)); }
 
-  // --- one block ---------------------------------------------------------------------------------
-  void step(const Block& b);
-
-  // ARC-CENTRE-2: a circle's end point may miss the circle about its programmed centre by at most
-  // max(MD21000, MD21010 * radius); beyond, alarm 14040. ARC-CR-1: a CR= circle must reach its end
-  // point. Both decided in core (programmed_decisions.hpp).
-  bool arc_is_consistent(const Block& b);
-
-  ContourElement element_of(const Block& b) const;
+  ContourElement element_of(const Block& b) const {
+    return element_with(b, override_of(b), comp_ ? comp_->axes : plane_axes(b.state.plane));
+  }
 
   void run_uncompensated(const Block& b);
 
@@ -224,11 +169,6 @@ class Reference {
   // contour element's carrier, nearest the vertex; empty if they do not meet (circles only).
   std::optional<Point> kont_intersection(const Block& at_block, const KontCorner& k, const ContourElement& e,
                                          const FT& e_radius, const Point& on_line, const Vector& d);
-
-  static Vector unit_left_normal(const Vector& d) {
-    FT l = exact_root(d.squared_length());
-    return Vector(-d.y() / l, d.x() / l);
-  }
 
   // TRC-KONT-3 / TRC-KONT-4 on approach: the approach line is a contour element ending at the
   // start point S and meeting the first block at an outer corner.
@@ -290,8 +230,6 @@ class Reference {
   // the orientation of the plane (TRC-ARC-CORNER-1, TRC-LOOK-2).
   static std::optional<Point> nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
                                                    const Point& vertex, const Vector& ahead);
-
-  void flush_approach();
 
   // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*, edge_strategy.cpp) ------
   EdgeCurve edge_curve(EdgeStrategy strategy, const Point& vertex, const Point& normal_point, const Vector& outward,
@@ -419,21 +357,18 @@ class Reference {
   // the end point E and meeting the last block at an outer corner.
   void retract_around(const Block& b, const KontCorner& k);
 
-  // TRC-END-1: the program ends while compensation is selected.
-  void end_of_program();
-
   std::deque<Block> program_;
+  std::map<int, PlaneOverride> overrides_;  // by block index
   const MachineData& md_;
-  ProgramReader* reader_ = nullptr;
   PathSink& sink_;
-  std::vector<int> seq_;  // per block: the ordinal of the last traversing block up to it (TRC-CD-1)
-  int traversing_ = 0;
-  HeldOutput held_;
+  Trace& trace_;
+  CollisionWindow& held_;  // stage 3: where output goes (collision_window.hpp)
+  ExactPath& path;         // rounds points as the output does
+  std::vector<int> seq_;   // per block: the window's ordinal of the last traversing block up to it (TRC-CD-1)
   std::vector<bool> actions_done_;
   Phase phase_ = Phase::kOff;
-  bool stopped_ = false;
   bool d0_noticed_ = false;
-  std::optional<Compensation> comp_;
+  std::optional<InForce> comp_;
   const Block* selection_ = nullptr;
   const Block* prev_block_ = nullptr;         // the last traversing block with compensation (TRC-CD-1)
   std::optional<ExactPoint> selection_from_;  // set after a side change (TRC-SIDE-1)
@@ -457,15 +392,6 @@ class Reference {
   std::vector<const Block*> skipped_;
   int examined_ = 0;
   int dummy_run_ = 0;
-  // SAR
-  SarSequence sar_seq_;
-  std::map<int, PlaneOverride> overrides_;  // by block index
-  int last_contour_ = -1;                   // index of the last programmed block moving in the plane
-  struct SarEnd {
-    Point at;
-    Plane plane;
-  };
-  std::optional<SarEnd> sar_end_;  // SAR-END-3
 };
 
 }  // namespace cutcom::ref::detail

@@ -1,0 +1,117 @@
+// What fast's stages hand each other about a block: the block converted once into doubles
+// (BlockCopy, copied into fixed slots: no allocation), and where a block's in-plane points are
+// not its decimals, the points the SAR expansion computed (PlaneOverride, SAR-SUB-1, SAR-END-3).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <optional>
+
+#include "cutcom/block.hpp"
+#include "cutcom/sink.hpp"
+#include "edge_strategy.hpp"
+#include "plane_geometry.hpp"
+
+namespace cutcom::fast {
+
+// What fast keeps of a block: converted once, copied into fixed slots (no allocation).
+struct BlockCopy {
+  int line = 0;
+  int block = 0;  // the block's index in the program: its identity (inserted elements share a line)
+  std::optional<std::int64_t> number;
+  PathPoint start, end;  // programmed, workpiece coordinates
+  bool rapid = false;
+  bool arc = false;  // G2/G3 with I/J/K
+  int sense = 1;     // +1 G3, -1 G2
+  PathPoint centre;  // programmed centre (I/J/K arcs)
+  bool has_centre = false;
+  double cr = 0;                  // CR= arcs
+  std::array<Int128, 3> delta{};  // exact programmed displacement X Y Z, units of 1e-9 mm
+  Decimal feed;
+  std::array<AuxFunction, BlockWords::kMaxAux> aux{};
+  int aux_count = 0;
+  bool actions_done = false;
+  bool kont = false;  // KONT in force (approach and retraction)
+  bool g451 = false;  // G451 in force
+  bool cdon = false;  // CDON in force
+  int seq = 0;        // ordinal of the last traversing block up to this one (TRC-CD-1 window)
+  EdgeStrategy edge_strategy = EdgeStrategy::kG462;
+  FeedType feed_type = FeedType::kG94;
+  SarMove sar = SarMove::kNone;
+  ContourInsert insert;  // NC-CONTOUR-*: an element the reader inserted
+  bool moves = false;    // motion in the plane
+  bool exact = true;     // start and end are the programmed decimals (`delta` is valid)
+  // SAR-POINTS-1/2: a SAR element is tangent to the contour at P4 by construction: after it on
+  // approach, before it on retraction.
+  bool tangent_after = false, tangent_before = false;
+
+  static BlockCopy of(const Block& b) {
+    BlockCopy c;
+    c.line = b.words.line;
+    c.block = b.index;
+    c.number = b.words.number;
+    c.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
+    c.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
+    c.rapid = b.state.motion == Motion::kRapid;
+    c.arc = b.is_arc();
+    c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
+    c.has_centre = b.centre.has_value();
+    if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
+    if (b.words.cr) c.cr = b.words.cr->to_double();
+    c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
+    c.feed = b.state.feed;
+    std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
+    c.aux_count = b.words.aux_count;
+    c.kont = b.state.approach == ApproachMode::kKont;
+    c.g451 = b.state.corner == CornerMode::kG451;
+    c.cdon = b.state.collision == CollisionMode::kCdon;
+    c.edge_strategy = b.state.edge_strategy;
+    c.feed_type = b.state.feed_type;
+    c.sar = b.sar.move;
+    c.insert = b.insert;
+    c.moves = b.moves_in_plane();
+    c.exact = b.sar.move == SarMove::kNone;
+    return c;
+  }
+};
+
+inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
+// Plane <-> workpiece coordinates in a given plane (the compensation's, or a SAR block's).
+inline Vec2 ab_in(const PathPoint& p, PlaneAxes a) { return {pick(p, a.abscissa), pick(p, a.ordinate)}; }
+inline double h_in(const PathPoint& p, PlaneAxes a) { return pick(p, a.applicate); }
+inline PathPoint xyz_in(Vec2 v, double applicate, PlaneAxes a) {
+  PathPoint p;
+  double* c[3] = {&p.x, &p.y, &p.z};
+  *c[a.abscissa] = v.a, *c[a.ordinate] = v.b, *c[a.applicate] = applicate;
+  return p;
+}
+// The element of a block in the plane `a`.
+inline Element element_in(const BlockCopy& c, PlaneAxes a) {
+  if (!c.arc) return Element::line(ab_in(c.start, a), ab_in(c.end, a));
+  if (c.has_centre) return Element::circle(ab_in(c.start, a), ab_in(c.end, a), ab_in(c.centre, a), c.sense);
+  return Element::circle_by_radius(ab_in(c.start, a), ab_in(c.end, a), c.cr, c.sense);
+}
+
+// Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3): doubles in the
+// plane of the SAR block.
+struct PlaneOverride {
+  PlaneAxes axes{0, 1, 2};  // the plane its points are in (the SAR block's)
+  bool start = false, end = false;
+  Vec2 start_ab, end_ab;
+  bool circle = false;  // the SAR element's circle
+  Vec2 centre;
+  int sense = 0;
+  bool tangent_after = false, tangent_before = false;
+
+  // The block's copy with these points.
+  void apply(BlockCopy& c) const {
+    PlaneAxes a = axes;
+    if (start) c.start = xyz_in(start_ab, h_in(c.start, a), a);
+    if (end) c.end = xyz_in(end_ab, h_in(c.end, a), a);
+    if (circle) c.arc = true, c.has_centre = true, c.centre = xyz_in(centre, h_in(c.start, a), a), c.sense = sense;
+    c.tangent_after = tangent_after, c.tangent_before = tangent_before;
+  }
+};
+
+}  // namespace cutcom::fast

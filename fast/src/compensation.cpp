@@ -1,0 +1,423 @@
+// Stage 2 of fast, the compensation (compensation.hpp), one block at a time: selection, corners,
+// the look-ahead over too-short blocks and the output into the collision window. Clause IDs name
+// the spec rule each step implements; ref implements the same clauses independently in exact
+// arithmetic (ref/src/compensation.cpp).
+#include "compensation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "arc_check.hpp"
+
+namespace cutcom::fast {
+
+void Compensation::compensation_off(const Block& b) {
+  if (b.state.side != Side::kOff) {
+    if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
+    if (!b.programs_plane_axis()) {
+      decide("TRC-SEL-4", b.words.line, "no-plane-axis");
+    } else if (b.state.tool == 0) {
+      return raise(10750, b.words.line, b.words.number);  // TRC-SEL-6
+    } else if (b.state.edge == 0) {
+      decide("TRC-SEL-5", b.words.line, "d0");
+      if (!d0_noticed) sink.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
+      d0_noticed = true;
+    } else if (!b.state.edge_defined) {
+      return raise(17181, b.words.line, b.words.number);  // TRC-SEL-7
+    } else {
+      return select(b);
+    }
+  }
+  BlockCopy c = copy_of(b);
+  if (!c.arc) return line(c, c.start, c.end, OriginKind::kProgrammed, c.rapid);
+  // A programmed circle about its (corrected, ARC-CENTRE-1) centre.
+  axes = plane_axes(b.state.plane);
+  Element e = element_of(c);
+  arc(c, c.start, c.end, xyz(e.centre, h(c.start)), c.sense > 0, origin(c, OriginKind::kProgrammed));
+}
+
+void Compensation::change_side(const Block& b) {
+  if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
+  if (!b.programs_plane_axis()) {
+    decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
+    return hold_back(b);
+  }
+  decide("TRC-SIDE-1", b.words.line, "side-change");
+  Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
+  if (!close_open(end, b.words.line, b.words.number, true)) return;
+  run_held_back(end);
+  PathPoint tool = xyz(end, h(copy_of(b).start));
+  select(b);
+  selection.start = tool;  // the approach starts where the tool is
+  selection_from_tool = true;
+}
+
+void Compensation::select(const Block& b) {
+  reject_kontc_kontt(b, false);  // TRC-UNSUP-1
+  // TRC-SEL-1; TRC-SEL-3: a single plane axis was completed by the reader (NC-POS-1).
+  decide("TRC-SEL-1", b.words.line, "selected");
+  plane = b.state.plane;
+  axes = plane_axes(plane);
+  side = b.state.side;
+  edge = ActiveEdge::of(b.state);
+  CompensationSide cs = compensation_side(b.state);  // TRC-RADIUS-2 (decided in core)
+  decide(cs.decision, b.words.line);
+  s = cs.s;
+  r = cs.r.to_double();
+  selection = copy_of(b);
+  selection_from_tool = false;
+  has_prev = false;
+  approach_until = -1;
+  dummy_count = 0;
+  phase = Phase::kApproach;
+}
+
+bool Compensation::still_compensable(const Block& b) {
+  if (b.state.side == Side::kOff) {
+    if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
+      raise(10754, b.words.line, b.words.number);
+      return false;
+    }
+    return true;
+  }
+  if (b.state.plane != plane) {  // TRC-PLANE-1
+    raise(10757, b.words.line, b.words.number);
+    return false;
+  }
+  if (b.state.side != side) return true;  // TRC-SIDE-1, handled by the caller
+  reject_change_while_active(b, edge);    // TRC-UNSUP-1
+  return true;
+}
+
+void Compensation::hold_back(const Block& b) {
+  if (dummy_count == md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
+  dummies[static_cast<std::size_t>(dummy_count++)] = copy_of(b);
+}
+
+void Compensation::run_held_back(Vec2 at) {
+  for (int i = 0; i < dummy_count; ++i) {
+    BlockCopy& d = dummies[static_cast<std::size_t>(i)];
+    line(d, xyz(at, h(d.start)), xyz(at, h(d.end)), OriginKind::kInfeed, d.rapid);
+  }
+  dummy_count = 0;
+}
+
+void Compensation::run_held_back_uncompensated() {
+  for (int i = 0; i < dummy_count; ++i) {
+    BlockCopy& d = dummies[static_cast<std::size_t>(i)];
+    line(d, d.start, d.end, OriginKind::kProgrammed, d.rapid);
+  }
+  dummy_count = 0;
+}
+
+bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block,
+                              bool at_normal_end, const Candidate* candidate) {
+  const Element& e = open_el;
+  double margin;
+  if (!e.arc) {
+    margin = dot(end_point - open_start, e.unit);
+  } else {
+    double left = sweep(e) - signed_rotation(e.start - e.centre, open_start - e.centre, e.sense) +
+                  signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
+    margin = left * open_radius;
+  }
+  std::string_view clause = e.arc ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
+  if (margin < 0) {
+    decide(clause, open.line, "reverses", margin);
+    // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
+    if (approach_pending && candidate) return approach_edge(*candidate), false;
+    if (kont_first && candidate)
+      throw UnsupportedError(  // TRC-EDGE-7 (planned)
+          selection.line, "KONT approach from behind the contour before a too-short first block");
+    raise(10751, alarm_line, alarm_block);
+    return false;
+  }
+  decide(clause, open.line, margin == 0 ? "vanishes" : "fits", margin);
+  flush_approach();
+  kont_first = false;
+  PathPoint from = xyz(open_start, h(open.start)), to = xyz(end_point, h(open.end));
+  if (margin == 0) {
+    actions(open, to);
+    return true;
+  }
+  if (!e.arc) {
+    line(open, from, to, OriginKind::kOffset, open.rapid);
+  } else {
+    // A whole full circle ends where it starts, exactly (ref's start and end are the same point;
+    // an ulp apart the arc would read as a sliver or as nearly a full turn).
+    if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end));
+    arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
+  }
+  return true;
+}
+
+void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
+  if (first.tangent_after || second.tangent_before) {  // SAR-POINTS-1/2: tangent by construction
+    c.kind = Corner::Kind::kTangent, c.sine = 0;
+    return;
+  }
+  if (first.arc || second.arc || !first.exact || !second.exact) return;
+  std::optional<ExactProducts> p = exact_products(first.delta, second.delta);
+  if (!p) return;
+  Int128 cr = p->cross, dt = p->dot;
+  if (cr == 0) {
+    c.kind = dt > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
+    c.sine = 0;
+  } else {
+    c.kind = (cr > 0) == (s > 0) ? Corner::Kind::kInner : Corner::Kind::kOuter;
+  }
+}
+
+std::optional<Compensation::ExactProducts> Compensation::exact_products(const std::array<Int128, 3>& t,
+                                                                        const std::array<Int128, 3>& u) const {
+  const Int128 limit = Int128(1) << 62;
+  Int128 a1 = t[static_cast<std::size_t>(axes.abscissa)], b1 = t[static_cast<std::size_t>(axes.ordinate)];
+  Int128 a2 = u[static_cast<std::size_t>(axes.abscissa)], b2 = u[static_cast<std::size_t>(axes.ordinate)];
+  for (Int128 v : {a1, b1, a2, b2})
+    if (v >= limit || v <= -limit) return std::nullopt;  // beyond the range: the double decision stands
+  return ExactProducts{a1 * b2 - b1 * a2, a1 * a2 + b1 * b2};
+}
+
+bool Compensation::equidistant_exists(const Block& b, const Element& e, double& radius) {
+  if (!e.arc) return true;
+  radius = e.equidistant_radius(s * r);
+  decide("TRC-ARC-EQ-1", b.words.line, radius > 0 ? "concentric" : "collapses", radius);
+  return radius > 0;
+}
+
+void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, bool at_normal_start) {
+  open = b;
+  open_el = e;
+  open_start = start;
+  open_at_normal_start = at_normal_start;
+  open_radius = radius;
+}
+
+void Compensation::compensation_active(const Block& b) {
+  if (!still_compensable(b)) return;
+  const BlockCopy* current = nullptr;  // a traversing block, converted once
+  if (b.state.side == side && b.moves_in_plane()) {
+    int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
+    prev_blocks[static_cast<std::size_t>(slot)] = copy_of(b);
+    const BlockCopy& before = prev_blocks[static_cast<std::size_t>(prev_slot)];
+    bool had_prev = has_prev;
+    prev_slot = slot, has_prev = true;
+    current = &prev_blocks[static_cast<std::size_t>(slot)];
+    if (approach_until >= 0 && approach_further_ahead(b, *current)) return;
+    if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(*current, before)) return;
+  }
+  if (looking) return look_ahead(b, current);
+  if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
+  if (b.state.side == Side::kOff) {
+    if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
+    return deselect(b);
+  }
+  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
+  corner(b, *current);
+}
+
+void Compensation::corner(const Block& b, const BlockCopy& copy) {
+  Element next = element_of(copy);
+  double next_radius = 0;
+  if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
+  Vec2 v = open_el.end;
+  Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
+  decide_kind_exactly(open, copy, c);
+  static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
+  decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
+
+  bool circle = c.kind == Corner::Kind::kReversal;  // TRC-G450-3: a reversal is always a circle
+  if (c.kind == Corner::Kind::kOuter) circle = outer_corner_circle(b.words.line, copy.g451, c);
+  if (circle) return transition_circle(copy, next, next_radius, v);
+  Vec2 x;
+  if (c.kind == Corner::Kind::kTangent) {
+    x = Element::offset(v, open_el.end_tangent(), s * r);  // both equidistants pass through it
+  } else if (!open_el.arc && !next.arc) {
+    // TRC-G451-1 / TRC-INNER-1: the intersection of two straight equidistants.
+    x = Element::offset(v, open_el.unit, s * r) - corner_trim(c, s, r) * open_el.unit;
+  } else {
+    // TRC-ARC-CORNER-1: the intersection of the carriers nearest to the corner.
+    Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(next, next_radius);
+    bool found = nearest_intersection(cu, cv, v, next.start_tangent(), x);
+    decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", carrier_gap(cu, cv));
+    if (!found && c.kind == Corner::Kind::kOuter)
+      return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
+    if (!found) return raise(10751, b.words.line, b.words.number);
+  }
+  if (c.kind != Corner::Kind::kTangent) {
+    // TRC-LOOK-1: the next equidistant must reach the intersection before its own end (at a
+    // tangent corner the point is its normal start).
+    Extent reach = extent_of(next, next_radius, x);
+    bool too_short = reach.left < 0;
+    decide("TRC-LOOK-1", b.words.line, too_short ? "too-short" : "reaches", reach.left);
+    if (too_short) return start_look_ahead(b);
+  }
+  Candidate cand{&copy, &next, next_radius};
+  if (!close_open(x, b.words.line, b.words.number, c.kind == Corner::Kind::kTangent, &cand)) return;
+  run_held_back(x);
+  open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
+}
+
+bool Compensation::outer_corner_circle(int line_no, bool g451, const Corner& c) {
+  double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
+  if (g451) {  // TRC-CORNER-3: G451 switches to G450 above MD20210
+    double limit = md.cutcom_corner_limit.to_double();
+    bool circle = angle > limit;
+    decide("TRC-CORNER-3", line_no, circle ? "switch-to-G450" : "keep-G451", angle - limit);
+    return circle;
+  }
+  double limit = md.cutcom_curve_insert_limit.to_double();  // TRC-CORNER-4: G450 to G451 below MD20230
+  bool circle = !(angle < limit);
+  decide("TRC-CORNER-4", line_no, circle ? "keep-G450" : "switch-to-G451", angle - limit);
+  return circle;
+}
+
+Compensation::Extent Compensation::extent_of(const Element& e, double radius, Vec2 p) const {
+  if (!e.arc) {
+    double along = dot(p - Element::offset(e.start, e.unit, s * r), e.unit);
+    return {along, e.length - along};
+  }
+  double along = signed_rotation(e.start - e.centre, p - e.centre, e.sense);
+  return {along * radius, (sweep(e) - along) * radius};
+}
+
+void Compensation::skip(const BlockCopy& c) {
+  if (skipped.capacity() == 0) skipped.reserve(kSkippedCapacity);
+  skipped.push_back(c);
+}
+
+void Compensation::pass_over(const BlockCopy& c) {
+  skip(c);
+  if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, c.line, c.number);
+}
+
+void Compensation::start_look_ahead(const Block& too_short) {
+  for (int i = 0; i < dummy_count; ++i) skip(dummies[static_cast<std::size_t>(i)]);
+  dummy_count = 0;
+  skip(copy_of(too_short));
+  examined = 1, dummy_run = 0;
+  looking = true;
+  if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, too_short.words.line, too_short.words.number);
+}
+
+void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
+  if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
+  if (b.state.side != side && b.state.side != Side::kOff) {  // the contour ends before an intersection
+    decide("TRC-LOOK-2", b.words.line, "none");
+    return raise(10751, b.words.line, b.words.number);
+  }
+  if (!b.moves_in_plane()) {
+    if (++dummy_run > md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
+    return skip(copy_of(b));
+  }
+  dummy_run = 0;
+  ++examined;
+  const BlockCopy& c = *current;
+  Element cand = element_of(c);
+  double radius = 0;
+  if (!equidistant_exists(b, cand, radius)) return pass_over(c);
+  Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
+  Vec2 y;
+  Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(cand, radius);
+  bool found = nearest_intersection(cu, cv, start, cand.start_tangent(), y);
+  bool valid = false;
+  double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
+  if (found) {
+    Extent on = extent_of(cand, radius, y);
+    valid = on.along >= 0 && on.left >= 0;
+    margin = on.along < 0 ? on.along : on.left < 0 ? on.left : std::min(on.along, on.left);  // the nearer end
+  }
+  decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
+  if (!valid) return pass_over(c);
+  looking = false;
+  Candidate candidate{&c, &cand, radius};
+  if (!close_open(y, b.words.line, b.words.number, false, &candidate)) return;
+  for (BlockCopy& d : skipped) skip_at(d, y);
+  skipped.clear();
+  open_element(c, cand, y, radius);
+}
+
+void Compensation::skip_at(BlockCopy& k, Vec2 at) {
+  decide("TRC-LOOK-3", k.line, "skipped");
+  line(k, xyz(at, h(k.start)), xyz(at, h(k.end)), OriginKind::kInfeed, k.rapid);
+}
+
+void Compensation::transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
+  Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
+  if (!close_open(from, b.line, b.number, true)) return;
+  run_held_back(from);
+  Vec2 to = Element::offset(v, next.start_tangent(), s * r);
+  Origin corner = origin(open, OriginKind::kTransitionCircle);
+  open_element(b, next, to, next_radius, true);
+  corner.next_line = open.line, corner.next_block = open.number, corner.next_insert = open.insert;
+  if (r > 0) {  // TRC-G450-2: no circle for a zero radius
+    double hv = h(open.start);
+    // Around the outside: clockwise on the left, counter-clockwise on the right.
+    arc(open, xyz(from, hv), xyz(to, hv), xyz(v, hv), s < 0, corner);
+  }
+}
+
+void Compensation::arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
+                       const Origin& from_what) {
+  actions(owner, from);
+  PathElement e;
+  e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
+  e.feed = owner.feed, e.feed_type = owner.feed_type, e.origin = from_what;
+  if (direct()) return sink.element(e);
+  HeldRecord rec = record_of(owner);
+  rec.is_element = true, rec.element = e, rec.radius = norm(ab(from) - ab(centre));
+  held.hold(rec);
+}
+
+void Compensation::actions(BlockCopy& b, const PathPoint& at) {
+  if (b.actions_done) return;
+  b.actions_done = true;
+  for (int i = 0; i < b.aux_count; ++i) {
+    ActionEvent a{b.line, b.number, b.aux[static_cast<std::size_t>(i)], at};
+    if (direct()) {
+      sink.action(a);
+      continue;
+    }
+    HeldRecord rec = record_of(b);
+    rec.action = a;
+    held.hold(rec);
+  }
+}
+
+void Compensation::release_window(const Block& b) {
+  if (trace.stopped()) return;
+  held.end_block(phase == Phase::kActive && b.state.collision == CollisionMode::kCdon);
+}
+
+void Compensation::step(const Block& b, const PlaneOverride* o) {
+  if (trace.stopped()) return;
+  if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
+    throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
+  if (o) over = *o;
+  // Off, the compensation has no plane of its own yet: that of the block's overridden points.
+  if (o && phase == Phase::kOff) axes = o->axes;
+  over_block = o ? &b : nullptr;
+  held.begin_block(b);
+  if (!(b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b, md, trace))) {
+    switch (phase) {
+      case Phase::kOff:
+        compensation_off(b);
+        break;
+      case Phase::kApproach:
+        approach(b);
+        break;
+      case Phase::kActive:
+        compensation_active(b);
+        break;
+      case Phase::kRetracting:
+        retraction_pending(b);
+        break;
+    }
+    release_window(b);
+  }
+  over_block = nullptr;
+}
+
+}  // namespace cutcom::fast
