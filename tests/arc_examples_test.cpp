@@ -176,3 +176,32 @@ TEST(ArcExamples, CompensatedCircleByRadiusTangentToLines) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+// covers: PATH-ELEMENT-2 TRC-INNER-1
+TEST(ArcExamples, FullCircleCutARoundingPastItsStartStaysAWholeTurn) {
+  // r = 0: the equidistants are the contour. N30 is a full cw circle about (21.476, -30.438)
+  // through (13.19, -30.038); N40's circle meets it again at (13.19, -30.038) itself, nearly
+  // tangent, so fast's intersection lands a few 1e-12 mm from that point. Where it lands past
+  // the start along N30, the arc would read as a sliver: it must end exactly at its start, a
+  // whole turn, as ref's exact end does.
+  Runs r = run_both(program("N20 G1 G42 X13.19 Y-30.038 F500\nN30 G2 X13.19 Y-30.038 I8.286 J-0.4\n"
+                            "N40 G2 X26.138 Y-3.422 I37.526 J-1.798\nN50 G1 G40 X30 Y0\n",
+                            "0"));
+  ASSERT_TRUE(r.fast_ok && r.ref_ok);
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    const PathElement* circle = nullptr;
+    for (const PathElement& e : x->path)
+      if (e.type == ElementType::kArc && e.origin.line == 5) circle = &e;
+    ASSERT_NE(circle, nullptr);
+    EXPECT_EQ(circle->start.x, circle->end.x);
+    EXPECT_EQ(circle->start.y, circle->end.y);
+    EXPECT_NEAR(circle->start.x, 13.19, 1e-9);
+    EXPECT_NEAR(circle->start.y, -30.038, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace cutcom::test

@@ -116,12 +116,13 @@ bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std:
                               bool at_normal_end, const Candidate* candidate) {
   const Element& e = open_el;
   double margin;
+  double turn = 0;  // arcs: the angle the trimmed element turns
   if (!e.arc) {
     margin = dot(end_point - open_start, e.unit);
   } else {
-    double left = sweep(e) - signed_rotation(e.start - e.centre, open_start - e.centre, e.sense) +
-                  signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
-    margin = left * open_radius;
+    turn = sweep(e) - signed_rotation(e.start - e.centre, open_start - e.centre, e.sense) +
+           signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
+    margin = turn * open_radius;
   }
   std::string_view clause = e.arc ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
   if (margin < 0) {
@@ -148,6 +149,10 @@ bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std:
     // A whole full circle ends where it starts, exactly (ref's start and end are the same point;
     // an ulp apart the arc would read as a sliver or as nearly a full turn).
     if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end));
+    // PATH-ELEMENT-2: a circle that turns more than half a turn but whose end, rounded, lies just
+    // past its start would read as a sliver: it ends at its start (a whole turn) instead.
+    double reads = signed_rotation(open_start - e.centre, end_point - e.centre, e.sense);
+    if (turn > std::numbers::pi && reads > 0 && reads < std::numbers::pi) to = xyz(open_start, h(open.end));
     arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
   }
   return true;
