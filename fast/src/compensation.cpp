@@ -150,9 +150,10 @@ bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std:
     // an ulp apart the arc would read as a sliver or as nearly a full turn).
     if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end));
     // PATH-ELEMENT-2: a circle that turns more than half a turn but whose end, rounded, lies just
-    // past its start would read as a sliver: it ends at its start (a whole turn) instead.
+    // past its start (within 1e-8 of the radius) would read as a sliver: it ends at its start.
     double reads = signed_rotation(open_start - e.centre, end_point - e.centre, e.sense);
-    if (turn > std::numbers::pi && reads > 0 && reads < std::numbers::pi) to = xyz(open_start, h(open.end));
+    if (turn > std::numbers::pi && reads > 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius))
+      to = xyz(open_start, h(open.end));
     arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
   }
   return true;

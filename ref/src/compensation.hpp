@@ -35,8 +35,8 @@ struct CentrePoint {
 
 class Compensation {
  public:
-  Compensation(const MachineData& md, PathSink& sink, Trace& trace, CollisionWindow& window, ExactPath& path)
-      : md_(md), sink_(sink), trace_(trace), held_(window), path(path) {}
+  Compensation(const MachineData& md, PathSink& sink, Trace& trace, CollisionWindow& window, ExactPath& exact_path)
+      : md_(md), sink_(sink), trace_(trace), held_(window), path(exact_path) {}
 
   // A block from the SAR expansion; `over` gives its exact in-plane points where they are not its
   // decimals. Blocks are kept: ref may look back at any of them (a deque keeps references to
