@@ -34,6 +34,7 @@ struct RunOptions {
   std::vector<std::string> tool_files;
   std::string offsets_file;
   bool trace = false;
+  std::int64_t max_loops = cutcom::InterpreterLimits{}.max_backward_jumps;
 };
 
 // A data file given on the command line is wrong: names the file and line (exit 2).
@@ -46,9 +47,11 @@ class FileError : public std::runtime_error {
 struct ControlData {
   cutcom::ToolTable tools;
   cutcom::OffsetTable offsets;
+  cutcom::InterpreterLimits limits;
   void into(cutcom::ProgramReader& reader) const {
     reader.tools() = tools;
     reader.offsets() = offsets;
+    reader.set_limits(limits);
   }
 };
 
@@ -68,6 +71,7 @@ ControlData control_data(const RunOptions& o) {
   ControlData c;
   for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
   if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
+  c.limits.max_backward_jumps = o.max_loops;
   return c;
 }
 
@@ -344,6 +348,9 @@ int main(int argc, char** argv) {
   run->add_option("--tools", o.tool_files,
                   "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");
   run->add_option("--offsets", o.offsets_file, "settable work offsets ($P_UIFR[n]=CTRANS(X,..,Y,..) lines)");
+  run->add_option("--max-loops", o.max_loops,
+                  "loop passes and backward jumps before a program counts as running away (NC-PARAM-FLOW-6)")
+      ->check(CLI::PositiveNumber);
   std::vector<std::string> md_assignments;
   auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
   md->add_option("--md", md_assignments, "override NAME=VALUE before listing");

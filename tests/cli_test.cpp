@@ -323,3 +323,25 @@ TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
 }
 
 }  // namespace
+
+namespace {
+// covers: NC-PARAM-FLOW-4 NC-PARAM-FLOW-3 NC-PARAM-FLOW-6 CLI-1
+TEST(Cli, ParametricExampleRunsAndARunawayLoopStops) {
+  const std::string example = CUTCOM_SOURCE_DIR "/examples/slots.mpf";
+  Result fast = sh(kCli + " run " + example + " --format json");
+  Result ref = sh(kCli + " run " + example + " --format json --engine ref");
+  ASSERT_EQ(fast.status, 0);
+  ASSERT_EQ(ref.status, 0);
+  auto f = nlohmann::json::parse(fast.out), r = nlohmann::json::parse(ref.out);
+  // Three slots, two passes each: 6 approaches, each followed by 4 walls, 4 roundings, 1 closing wall.
+  int approaches = 0;
+  for (const auto& e : f["path"]) approaches += e["origin"]["kind"] == "approach";
+  EXPECT_EQ(approaches, 6);
+  EXPECT_EQ(f["path"].size(), r["path"].size());
+  const std::string dir = CUTCOM_BINARY_DIR;
+  std::ofstream(dir + "/endless.mpf") << "G1 X0 F100\nAGAIN: R1=R1+1\nGOTOB AGAIN\n";
+  Result loop = sh(kCli + " run " + dir + "/endless.mpf --max-loops 500", true);
+  EXPECT_EQ(loop.status, 2);
+  EXPECT_NE(loop.out.find("line 3, column 1: the program runs away: more than 500"), std::string::npos) << loop.out;
+}
+}  // namespace

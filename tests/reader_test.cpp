@@ -115,19 +115,20 @@ struct BadLine {
   std::string contains;
 };
 
-// covers: NC-LEX-6 NC-ERR-1 NC-ERR-3 NC-END-1
+// covers: NC-LEX-6 NC-ERR-1 NC-ERR-3 NC-END-1 NC-PARAM-ERR-1
 TEST(Reader, BadInputNamesLineAndColumn) {
   const BadLine cases[] = {
       {"G1 X10\nG1 Q5\n", 2, 4, "'Q' is not a SINUMERIK word cutcom knows"},
       {"G1 X10 X20\n", 1, 8, "X programmed twice"},
       {"G1 G2 X1\n", 1, 4, "two G codes of the motion group"},
       {"G33 X1\n", 1, 1, "'G33' is SINUMERIK NC that cutcom does not simulate"},
-      {"R1=5\n", 1, 1, "'R1' is SINUMERIK NC that cutcom does not simulate (R parameters)"},
+      {"R1000=5\n", 1, 1, "R parameter R1000 does not exist"},
       {"G1 R_T=5\n", 1, 4, "'R_T' is not a SINUMERIK word cutcom knows"},
-      {"G1 X=R1\n", 1, 6, "expressions and variables ('R1') are not supported yet"},
-      {"N10 GOTOF END\n", 1, 5, "'GOTOF' is SINUMERIK NC that cutcom does not simulate (control flow)"},
+      {"G1 X=R1+XYZ\n", 1, 9, "undefined variable 'XYZ'"},
+      {"N10 GOTOF END\n", 1, 5, "jump target 'END' not found after this block"},
       {"G1 X10 ASPLINE\n", 1, 8, "'ASPLINE' is SINUMERIK NC that cutcom does not simulate (splines)"},
-      {"G1 X10 Y=5+2\n", 1, 11, "expressions are not supported yet"},
+      {"G1 X10 Y=5+\n", 1, 12, "a value is missing"},
+      {"PROC CONTOUR\n", 1, 1, "'PROC' is SINUMERIK NC that cutcom does not simulate (subprograms)"},
       {"MSG(\"open\n", 1, 1, "MSG: ')' expected"},
       {"$P_UIFR[1]=CTRANS(X,1)\n", 1, 1, "system variable '$P_UIFR' is SINUMERIK NC that cutcom does not simulate"},
       {"X1.2.3\n", 1, 2, "X"},

@@ -21,7 +21,8 @@ bool is_drilling_cycle(const std::string& name) {
 }
 }  // namespace
 
-ProgramReader::ProgramReader(std::istream& in, ModalState initial) : in_(in), state_(initial), effective_(initial) {}
+ProgramReader::ProgramReader(std::istream& in, ModalState initial)
+    : in_(in), interpreter_(in, this), state_(initial), effective_(initial) {}
 
 bool ProgramReader::next(Block& out) {
   for (;;) {
@@ -40,13 +41,13 @@ bool ProgramReader::next(Block& out) {
 }
 
 bool ProgramReader::read_block(Block& out) {
-  while (std::getline(in_, text_)) {
-    ++line_;
+  while (interpreter_.next(text_, line_)) {
     parse_block_words(text_, line_, out.words);
     const BlockWords& w = out.words;
     bool empty = w.word_count == 0;
     if (empty) continue;  // blank, comment-only, header or label-only line
-    if (end_line_ != 0)   // NC-END-1: nothing may follow M2/M30
+    if (end_line_ != 0 && interpreter_.uses_control_flow()) return false;  // M30 ends the run (NC-PARAM-FLOW-1)
+    if (end_line_ != 0)                                                    // NC-END-1: nothing may follow M2/M30
       throw InputError(line_, 1, fmt::format("block after the end of the program (M2/M30 in line {})", end_line_));
     out.notice.clear();
     out.notice_clause = {};
@@ -57,6 +58,37 @@ bool ProgramReader::read_block(Block& out) {
   }
   if (in_.bad()) throw std::runtime_error("read error");
   return false;
+}
+
+// NC-PARAM-SYS-1: what a program may read of the machine's state, as of the blocks read so far.
+std::optional<double> ProgramReader::system_value(std::string_view n, const std::vector<NcValue>& idx) {
+  bool inch = units_ == Units::kG70 || units_ == Units::kG700;
+  auto in_units = [&](const Decimal& v) { return inch ? v.to_double() / 25.4 : v.to_double(); };
+  if (n == "$P_TOOLR") return in_units(state_.edge_radius + state_.edge_wear);
+  if (n == "$P_TOOLNO") return static_cast<double>(state_.tool);
+  if (n == "$P_TOOL") return static_cast<double>(state_.edge);
+  if (n == "$P_EP" || n == "$AA_IW") {
+    if (idx.size() != 1 || idx[0].type != NcValue::Type::kString || idx[0].text.size() != 1) return std::nullopt;
+    int axis = idx[0].text[0] - 'X';
+    if (axis < 0 || axis > 2) return std::nullopt;
+    if (!programmed_known_) refresh_programmed(), programmed_known_ = true;
+    return in_units(coord(programmed_, axis));
+  }
+  if (n.substr(0, 6) == "$TC_DP" && idx.size() == 2) {
+    int k = 0;
+    for (char c : n.substr(6)) {
+      if (c < '0' || c > '9') return std::nullopt;
+      k = k * 10 + (c - '0');
+    }
+    const EdgeData* e = tools_.find(std::llround(idx[0].number), std::llround(idx[1].number));
+    if (!e || k < 1 || k > 25) return std::nullopt;
+    return k == 1    ? e->type.to_double()
+           : k == 2  ? e->position.to_double()
+           : k == 6  ? e->radius.to_double()
+           : k == 15 ? e->wear.to_double()
+                     : 0.0;
+  }
+  return std::nullopt;
 }
 
 void ProgramReader::note(Block& b, std::string_view clause, std::string text) {
@@ -123,9 +155,10 @@ void ProgramReader::change_tool(Block& b, ModalState& s) {
     // TOOL-TURN-1: a turning tool whose cutting edge position needs the edge-centre offset.
     if (e && e->type >= Decimal::from_int(500) && e->type < Decimal::from_int(600) && !e->position.is_zero() &&
         e->position != Decimal::from_int(9))
-      fail(fmt::format("T{} D{} is a turning tool with cutting edge position {} ($TC_DP2): the offset of the "
-                       "tool tip from the edge centre is SINUMERIK NC that cutcom does not simulate",
-                       s.tool, s.edge, e->position.to_string()));
+      fail(
+          fmt::format("T{} D{} is a turning tool with cutting edge position {} ($TC_DP2): the offset of the "
+                      "tool tip from the edge centre is SINUMERIK NC that cutcom does not simulate",
+                      s.tool, s.edge, e->position.to_string()));
   }
 }
 
@@ -147,8 +180,8 @@ void ProgramReader::resolve(Block& b) {
       if (first_offset_ < 0) {
         first_offset_ = idx;
         note(b, "NC-OFFSET-1",
-             fmt::format("coordinates are in the workpiece system of {}", idx <= 4 ? fmt::format("G{}", idx + 53)
-                                                                                   : fmt::format("G{}", idx + 500)));
+             fmt::format("coordinates are in the workpiece system of {}",
+                         idx <= 4 ? fmt::format("G{}", idx + 53) : fmt::format("G{}", idx + 500)));
       } else if (!offsets_.defined(idx) || !offsets_.defined(first_offset_)) {
         note(b, "NC-OFFSET-1", "a second settable offset without --offsets data: taken as equal to the first");
       }
@@ -192,7 +225,7 @@ void ProgramReader::resolve(Block& b) {
     if (w.contour->frcm) w.contour->frcm = w.contour->frcm->scaled(254, 10);
   }
   if (w.cw().frcm) corner_feed_modal_ = *w.cw().frcm;  // NC-CONTOUR-2
-  if (w.dwell) {  // NC-WORD-4: G4 F… / G4 S… is a dwell, no feed
+  if (w.dwell) {                                       // NC-WORD-4: G4 F… / G4 S… is a dwell, no feed
     if (w.programs_any_axis()) fail("G4 (dwell) must stand in a block without axis words");
     std::string text = w.feed ? fmt::format("G4 F{}", w.feed->to_string()) : "G4";
     w.feed.reset();
@@ -225,13 +258,14 @@ void ProgramReader::resolve(Block& b) {
   if (w.modal_call) {
     modal_call_ = true;
     modal_cycle_ = w.not_simulated;
-    note(b, "NC-CYCLE-2", fmt::format("MCALL {}: the cycle after each following move is not simulated",
-                                      w.not_simulated));
+    note(b, "NC-CYCLE-2",
+         fmt::format("MCALL {}: the cycle after each following move is not simulated", w.not_simulated));
   }
   if (!w.not_simulated.empty() && s.side != Side::kOff)
-    fail(fmt::format("'{}' with tool radius compensation G41/G42 in force: a move cutcom does not simulate "
-                     "cannot be compensated (deselect with G40 first)",
-                     w.not_simulated));
+    fail(
+        fmt::format("'{}' with tool radius compensation G41/G42 in force: a move cutcom does not simulate "
+                    "cannot be compensated (deselect with G40 first)",
+                    w.not_simulated));
 
   // The effective state of the block: a mirroring frame swaps G2/G3 and G41/G42 (NC-FRAME-3).
   ModalState eff = s;
@@ -286,11 +320,13 @@ void ProgramReader::resolve(Block& b) {
   }
   if (!unknown_used.empty()) {
     PlaneAxes pa = plane_axes(s.plane);
-    bool plane_unknown = unknown_[static_cast<std::size_t>(pa.abscissa)] || unknown_[static_cast<std::size_t>(pa.ordinate)];
+    bool plane_unknown =
+        unknown_[static_cast<std::size_t>(pa.abscissa)] || unknown_[static_cast<std::size_t>(pa.ordinate)];
     if (s.side != Side::kOff && plane_unknown)
-      fail(fmt::format("the position of {} is not known since {} in line {}: program the plane axes absolutely "
-                       "before compensating",
-                       unknown_used, unknown_after_, unknown_line_));
+      fail(
+          fmt::format("the position of {} is not known since {} in line {}: program the plane axes absolutely "
+                      "before compensating",
+                      unknown_used, unknown_after_, unknown_line_));
     if (unknown_line_ != 0) {
       note(b, "NC-CYCLE-1",
            fmt::format("the position of {} is not known since {} in line {}: the move starts where the tool was "
@@ -346,7 +382,8 @@ void ProgramReader::resolve(Block& b) {
     if (!has_centre && !w.cr && !defined_circle) fail("G2/G3 needs the centre (I, J, K) or the radius (CR=)");
     Decimal fa = frame_.factor[static_cast<std::size_t>(pa.abscissa)];
     Decimal fo = frame_.factor[static_cast<std::size_t>(pa.ordinate)];
-    if (fa != fo && fa != -fo) fail("a circle under a frame that scales the plane axes differently is an ellipse: not simulated");
+    if (fa != fo && fa != -fo)
+      fail("a circle under a frame that scales the plane axes differently is an ellipse: not simulated");
     if (w.cr) {
       w.cr = length(*w.cr).times(fa.sign() < 0 ? -fa : fa);
     }
@@ -376,8 +413,10 @@ void ProgramReader::resolve(Block& b) {
     fail("position out of range");
   }
   // Outside a rotated frame the frame's position is its inverse image, taken only when needed.
-  if (!defined && frame_.rotated()) update_programmed(w, s.absolute);
-  else if (!defined) programmed_known_ = false;
+  if (!defined && frame_.rotated())
+    update_programmed(w, s.absolute);
+  else if (!defined)
+    programmed_known_ = false;
   if (w.cw().turn && *w.cw().turn > 0 && (!b.is_arc() || !b.centre))
     fail("TURN= needs a circle given by its centre (I, J, K, AR= with the centre, or a polar circle)");
   if (b.moves_in_plane()) {  // CT continues from here

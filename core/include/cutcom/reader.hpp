@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "cutcom/block.hpp"
+#include "cutcom/interpreter.hpp"
 
 namespace cutcom {
 
@@ -78,7 +79,7 @@ struct ProgrammableFrame {
   bool rotated() const { return !rotation.is_zero(); }
 };
 // Reads blocks one by one and resolves modal state and positions (NC-MODAL-*, NC-POS-*).
-class ProgramReader {
+class ProgramReader : private SystemValues {
  public:
   explicit ProgramReader(std::istream& in, ModalState initial = {});
   // Next block, or false at the end of the text or after M2/M30. Throws InputError.
@@ -93,10 +94,14 @@ class ProgramReader {
     return offsets_;
   }
   const std::string& source_name() const { return source_; }
+  // NC-PARAM-FLOW-6: the runaway limit of the interpreter layer.
+  void set_limits(InterpreterLimits limits) { interpreter_.set_limits(limits); }
   void set_source_name(std::string name) { source_ = std::move(name); }
 
  private:
   bool read_block(Block& out);
+  // NC-PARAM-SYS-1: the system variables a program may read.
+  std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) override;
   void resolve(Block& b);
   void change_tool(Block& b, ModalState& s);
   void apply_frame(const BlockWords& w, Plane plane);
@@ -122,6 +127,7 @@ class ProgramReader {
   bool pop_ready(Block& out);
 
   std::istream& in_;
+  Interpreter interpreter_;  // NC-PARAM-*: variables, expressions and control flow before the words
   std::string text_;
   int line_ = 0;
   int index_ = 0;

@@ -1,0 +1,114 @@
+// The interpreter layer of the NC language (spec nc-parametric.md, NC-PARAM-*): between the text
+// and the block reader. It keeps R parameters and user variables, evaluates expressions, runs
+// control flow (labels, jumps, IF/ELSE, loops) and hands the reader plain blocks: every value
+// written as a decimal on the 10^-9 grid (NC-PARAM-GRID-1). A program without any of it passes
+// through unchanged, line by line: memory stays bounded whatever the program length.
+#pragma once
+
+#include <cstdint>
+#include <istream>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cutcom {
+
+// A value of the NC language: REAL (binary64, as the control computes), INT, BOOL or STRING.
+struct NcValue {
+  enum class Type { kReal, kInt, kBool, kString } type = Type::kReal;
+  double number = 0;  // REAL, INT (whole), BOOL (0 or 1)
+  std::string text;   // STRING, and AXIS names
+  static NcValue real(double v) { return {Type::kReal, v, {}}; }
+  static NcValue integer(double v) { return {Type::kInt, v, {}}; }
+  static NcValue boolean(bool v) { return {Type::kBool, v ? 1.0 : 0.0, {}}; }
+  static NcValue string(std::string s) { return {Type::kString, 0, std::move(s)}; }
+};
+
+// What the interpreter reads from the machine's state (system variables, NC-PARAM-SYS-1):
+// implemented by the ProgramReader, which knows the tool in force and the position.
+class SystemValues {
+ public:
+  virtual ~SystemValues() = default;
+  // The value of `name` (upper case, with its '$') with the given indices (an axis index is
+  // given as 0 X, 1 Y, 2 Z); empty if the variable is not known to cutcom.
+  virtual std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) = 0;
+};
+
+struct InterpreterLimits {
+  // NC-PARAM-FLOW-6: jumps back (loop passes and backward GOTOs) before a program is taken as
+  // running away.
+  std::int64_t max_backward_jumps = 10'000'000;
+};
+
+class Interpreter {
+ public:
+  Interpreter(std::istream& in, SystemValues* system = nullptr, InterpreterLimits limits = {});
+
+  // The next block's text for the reader and its line in the file; false at the end of the
+  // text. Throws InputError naming the line and column.
+  bool next(std::string& text, int& line);
+
+  void set_limits(InterpreterLimits limits) { limits_ = limits; }
+  // A label, a jump or a structure was met: blocks after M2/M30 are then jump targets, not an error.
+  bool uses_control_flow() const { return control_flow_; }
+
+  // Exposed for tests: evaluates an expression in the current variables.
+  NcValue evaluate(std::string_view expression, int line = 0);
+
+ private:
+  struct Variable {
+    NcValue::Type type = NcValue::Type::kReal;
+    std::vector<int> dims;  // empty: a scalar
+    std::vector<NcValue> values;
+  };
+  struct Frame {  // an open loop (NC-PARAM-FLOW-3/4)
+    enum class Kind { kWhile, kFor, kLoop, kRepeat } kind;
+    std::streamoff body;   // where its body starts (WHILE: its own line, decided again)
+    int body_line;         // the number of lines before that position
+    std::string variable;  // FOR: the counter
+    double end = 0;        // FOR: the last value
+  };
+
+  bool getline(std::string& text);
+  void seek(std::streamoff to, int line);
+  // A line that may hold NC language beyond plain words (a cheap test on every line).
+  static bool maybe_parametric(std::string_view text);
+  // Runs one line's statements and assignments; `out` is the plain block (empty: none).
+  void run_line(const std::string& text, std::string& out);
+  bool statement(std::string_view keyword, std::string_view line, std::size_t rest);
+  void define(std::string_view line, std::size_t at);
+  void store(Variable& var, std::size_t offset, const NcValue& value, std::size_t at);
+  double counter(const std::string& name);
+  void assign_counter(const std::string& name, double value, std::size_t at);
+  // Jumps (NC-PARAM-FLOW-1): to a label or block number, forward, backward or both.
+  void jump(std::string_view target, bool forward, bool backward, bool must_exist, std::size_t at);
+  bool find_forward(std::string_view target);
+  bool find_backward(std::string_view target, int before_line);
+  static bool defines(std::string_view text, std::string_view target);
+  // Skips lines to the `end` word matching `open` (nesting counted); with `or_else`, also stops
+  // at an ELSE of the same level. Returns the word found.
+  std::string skip_block(std::string_view open, std::string_view end, bool or_else);
+  void jump_back(const Frame& f);
+
+  Variable* find_variable(const std::string& name);
+
+  std::istream& in_;
+  SystemValues* system_;
+  InterpreterLimits limits_;
+  std::string raw_;
+  int line_ = 0;
+  std::streamoff offset_ = 0, start_offset_ = 0;  // of the next line, of the text's start
+  std::streamoff line_start_ = 0;                 // of the line just read
+  std::map<std::string, Variable> variables_;
+  std::map<int, double> r_;  // R parameters
+  std::vector<Frame> frames_;
+  std::vector<int> open_ifs_;  // lines of the IF structures whose running branch has not ended
+  std::map<std::string, std::vector<std::pair<std::streamoff, int>>> labels_seen_;  // label: (start, lines before)
+  std::int64_t backward_jumps_ = 0;
+  bool control_flow_ = false;
+  friend class InterpreterLookup;
+};
+
+}  // namespace cutcom

@@ -1,0 +1,389 @@
+// NC-PARAM-EXPR-*: expressions of the NC language, evaluated as the control does: REAL in
+// binary64, the operators' priority of the manual (JOB06 p.1-24, highest first: NOT B_NOT;
+// * / DIV MOD; + -; B_AND; B_XOR; B_OR; AND; XOR; OR; <<; comparisons), left to right within a
+// level, angles in degrees.
+#include "nc_expression.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cutcom/reader.hpp"
+#include "word_lexer.hpp"
+
+namespace cutcom {
+
+using lexer::is_digit;
+using lexer::is_letter;
+using lexer::is_name_char;
+using lexer::upper;
+
+namespace {
+
+double as_number(const NcValue& v, int line, std::size_t at) {
+  if (v.type == NcValue::Type::kString)
+    throw InputError(line, static_cast<int>(at) + 1,
+                     fmt::format("a number is needed here, not the string \"{}\"", v.text));
+  return v.number;
+}
+bool truth(const NcValue& v, int line, std::size_t at) { return as_number(v, line, at) != 0; }
+// NC-PARAM-TYPE-1: an INT from a REAL is rounded to the nearest whole number (halves away from 0).
+std::int64_t as_int(const NcValue& v, int line, std::size_t at) {
+  double d = as_number(v, line, at);
+  if (!(std::fabs(d) < 9.2e18)) throw InputError(line, static_cast<int>(at) + 1, "integer out of range");
+  return static_cast<std::int64_t>(std::llround(d));
+}
+const double kDegree = std::numbers::pi / 180;
+
+}  // namespace
+
+ExpressionParser::ExpressionParser(std::string_view text, std::size_t start, int line, Lookup& lookup)
+    : s_(text), i_(start), line_(line), lookup_(lookup) {}
+
+void ExpressionParser::fail(const std::string& what) const { throw InputError(line_, static_cast<int>(i_) + 1, what); }
+
+void ExpressionParser::skip_space() {
+  while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
+}
+
+// An upper-case keyword operator (AND, DIV, ...) at the current position, not part of a longer name.
+bool ExpressionParser::keyword(std::string_view k) {
+  skip_space();
+  if (i_ + k.size() > s_.size()) return false;
+  for (std::size_t j = 0; j < k.size(); ++j)
+    if (upper(s_[i_ + j]) != k[j]) return false;
+  if (i_ + k.size() < s_.size() && is_name_char(s_[i_ + k.size()])) return false;
+  i_ += k.size();
+  return true;
+}
+
+bool ExpressionParser::symbol(std::string_view k) {
+  skip_space();
+  if (s_.substr(i_, k.size()) != k) return false;
+  i_ += k.size();
+  return true;
+}
+
+NcValue ExpressionParser::parse() { return comparison(); }
+
+// Level 11: == <> > < >= <= (lowest priority).
+NcValue ExpressionParser::comparison() {
+  NcValue a = concatenation();
+  while (true) {
+    skip_space();
+    std::size_t at = i_;
+    int op = 0;
+    if (symbol("=="))
+      op = 1;
+    else if (symbol("<>"))
+      op = 2;
+    else if (symbol(">="))
+      op = 3;
+    else if (symbol("<="))
+      op = 4;
+    else if (symbol(">"))
+      op = 5;
+    else if (s_.substr(i_, 2) != "<<" && symbol("<"))
+      op = 6;
+    if (!op) return a;
+    NcValue b = concatenation();
+    bool r;
+    if (a.type == NcValue::Type::kString || b.type == NcValue::Type::kString) {
+      if (a.type != b.type) throw InputError(line_, static_cast<int>(at) + 1, "a string is compared with a number");
+      int c = a.text.compare(b.text);
+      r = op == 1 ? c == 0 : op == 2 ? c != 0 : op == 3 ? c >= 0 : op == 4 ? c <= 0 : op == 5 ? c > 0 : c < 0;
+    } else {
+      // NC-PARAM-EXPR-3: equality of REALs is relative, to 1e-12 of the larger (PGA19 p.444).
+      double x = a.number, y = b.number;
+      bool equal = x == y || std::fabs(x - y) <= 1e-12 * std::max(std::fabs(x), std::fabs(y));
+      r = op == 1   ? equal
+          : op == 2 ? !equal
+          : op == 3 ? (equal || x > y)
+          : op == 4 ? (equal || x < y)
+          : op == 5 ? (!equal && x > y)
+                    : (!equal && x < y);
+    }
+    a = NcValue::boolean(r);
+  }
+}
+
+// Level 10: << joins strings (numbers are written as text).
+NcValue ExpressionParser::concatenation() {
+  NcValue a = logical_or();
+  while (symbol("<<")) {
+    NcValue b = logical_or();
+    a = NcValue::string(text_of(a) + text_of(b));
+  }
+  return a;
+}
+
+std::string ExpressionParser::text_of(const NcValue& v) {
+  if (v.type == NcValue::Type::kString) return v.text;
+  if (v.type == NcValue::Type::kBool) return v.number != 0 ? "TRUE" : "FALSE";
+  if (v.type == NcValue::Type::kInt) return fmt::format("{}", static_cast<std::int64_t>(v.number));
+  return fmt::format("{}", v.number);
+}
+
+NcValue ExpressionParser::logical_or() {
+  NcValue a = logical_xor();
+  while (true) {
+    std::size_t at = i_;
+    if (!keyword("OR")) return a;
+    NcValue b = logical_xor();
+    a = NcValue::boolean(truth(a, line_, at) || truth(b, line_, at));
+  }
+}
+NcValue ExpressionParser::logical_xor() {
+  NcValue a = logical_and();
+  while (true) {
+    std::size_t at = i_;
+    if (!keyword("XOR")) return a;
+    NcValue b = logical_and();
+    a = NcValue::boolean(truth(a, line_, at) != truth(b, line_, at));
+  }
+}
+NcValue ExpressionParser::logical_and() {
+  NcValue a = bit_or();
+  while (true) {
+    std::size_t at = i_;
+    if (!keyword("AND")) return a;
+    NcValue b = bit_or();
+    a = NcValue::boolean(truth(a, line_, at) && truth(b, line_, at));
+  }
+}
+NcValue ExpressionParser::bit_or() {
+  NcValue a = bit_xor();
+  while (true) {
+    std::size_t at = i_;
+    if (!keyword("B_OR")) return a;
+    NcValue b = bit_xor();
+    a = NcValue::integer(static_cast<double>(as_int(a, line_, at) | as_int(b, line_, at)));
+  }
+}
+NcValue ExpressionParser::bit_xor() {
+  NcValue a = bit_and();
+  while (true) {
+    std::size_t at = i_;
+    if (!keyword("B_XOR")) return a;
+    NcValue b = bit_and();
+    a = NcValue::integer(static_cast<double>(as_int(a, line_, at) ^ as_int(b, line_, at)));
+  }
+}
+NcValue ExpressionParser::bit_and() {
+  NcValue a = sum();
+  while (true) {
+    std::size_t at = i_;
+    if (!keyword("B_AND")) return a;
+    NcValue b = sum();
+    a = NcValue::integer(static_cast<double>(as_int(a, line_, at) & as_int(b, line_, at)));
+  }
+}
+
+// INT op INT stays INT where the result is whole; otherwise REAL.
+static NcValue arithmetic(const NcValue& a, const NcValue& b, double r) {
+  if (a.type == NcValue::Type::kInt && b.type == NcValue::Type::kInt && r == std::trunc(r) && std::fabs(r) < 9e15)
+    return NcValue::integer(r);
+  return NcValue::real(r);
+}
+
+NcValue ExpressionParser::sum() {
+  NcValue a = product();
+  while (true) {
+    std::size_t at = i_;
+    skip_space();
+    bool plus = symbol("+");
+    if (!plus && !symbol("-")) return a;
+    NcValue b = product();
+    double x = as_number(a, line_, at), y = as_number(b, line_, at);
+    a = arithmetic(a, b, plus ? x + y : x - y);
+  }
+}
+
+NcValue ExpressionParser::product() {
+  NcValue a = unary();
+  while (true) {
+    std::size_t at = i_;
+    int op = symbol("*") ? 1 : symbol("/") ? 2 : keyword("DIV") ? 3 : keyword("MOD") ? 4 : 0;
+    if (!op) return a;
+    NcValue b = unary();
+    double x = as_number(a, line_, at), y = as_number(b, line_, at);
+    if (op == 1) {
+      a = arithmetic(a, b, x * y);
+      continue;
+    }
+    // NC-PARAM-ERR-1: division by zero stops the program (alarm 14051 on the control).
+    if (y == 0) throw InputError(line_, static_cast<int>(at) + 1, "division by zero");
+    if (op == 2)
+      a = NcValue::real(x / y);
+    else if (op == 3)
+      a = NcValue::integer(std::trunc(x / y));  // DIV: the whole part
+    else
+      a = arithmetic(a, b, std::fmod(x, y));  // MOD: the remainder
+  }
+}
+
+NcValue ExpressionParser::unary() {
+  std::size_t at = i_;
+  if (keyword("NOT")) return NcValue::boolean(!truth(unary(), line_, at));
+  if (keyword("B_NOT")) return NcValue::integer(static_cast<double>(~as_int(unary(), line_, at)));
+  if (symbol("-")) {
+    NcValue v = unary();
+    v.number = -as_number(v, line_, at);
+    if (v.type == NcValue::Type::kBool) v.type = NcValue::Type::kInt;
+    return v;
+  }
+  if (symbol("+")) return unary();
+  return primary();
+}
+
+std::string ExpressionParser::name() {
+  std::size_t start = i_;
+  if (i_ < s_.size() && s_[i_] == '$') ++i_;
+  while (i_ < s_.size() && is_name_char(s_[i_])) ++i_;
+  std::string n(s_.substr(start, i_ - start));
+  for (char& c : n) c = upper(c);
+  return n;
+}
+
+std::vector<NcValue> ExpressionParser::arguments(char close) {
+  std::vector<NcValue> args;
+  skip_space();
+  if (i_ < s_.size() && s_[i_] == close) {
+    ++i_;
+    return args;
+  }
+  while (true) {
+    args.push_back(parse());
+    skip_space();
+    if (i_ < s_.size() && s_[i_] == ',') {
+      ++i_;
+      continue;
+    }
+    if (i_ < s_.size() && s_[i_] == close) {
+      ++i_;
+      return args;
+    }
+    fail(fmt::format("'{}' or ',' expected", close));
+  }
+}
+
+NcValue ExpressionParser::primary() {
+  skip_space();
+  if (i_ >= s_.size()) fail("a value is missing");
+  char c = s_[i_];
+  std::size_t at = i_;
+  if (c == '(') {
+    ++i_;
+    NcValue v = parse();
+    if (!symbol(")")) fail("')' expected");
+    return v;
+  }
+  if (c == '"') {
+    std::size_t end = s_.find('"', i_ + 1);
+    if (end == std::string_view::npos) fail("the string has no closing '\"'");
+    NcValue v = NcValue::string(std::string(s_.substr(i_ + 1, end - i_ - 1)));
+    i_ = end + 1;
+    return v;
+  }
+  if (is_digit(c) || c == '.') return number();
+  if (!is_letter(c) && c != '$' && c != '_') fail(fmt::format("unexpected character '{}'", c));
+  std::string n = name();
+  skip_space();
+  bool call = i_ < s_.size() && s_[i_] == '(';
+  bool indexed = i_ < s_.size() && s_[i_] == '[';
+  if (call) {
+    ++i_;
+    std::vector<NcValue> args = arguments(')');
+    return function(n, args, at);
+  }
+  std::vector<NcValue> indices;
+  if (indexed) {
+    ++i_;
+    // An axis index ($AA_IW[X], $P_EP[Y]) is the axis' name.
+    std::size_t save = i_;
+    skip_space();
+    std::string axis;
+    if (i_ < s_.size() && is_letter(s_[i_])) {
+      std::size_t k = i_;
+      std::string a = name();
+      skip_space();
+      if (a.size() == 1 && (a == "X" || a == "Y" || a == "Z") && i_ < s_.size() && s_[i_] == ']' &&
+          !lookup_.is_variable(a)) {
+        ++i_;
+        indices.push_back(NcValue::string(a));
+        axis = a;
+      } else {
+        i_ = k;
+      }
+    }
+    if (axis.empty()) {
+      i_ = save;
+      indices = arguments(']');
+    }
+  }
+  if (n == "TRUE") return NcValue::boolean(true);
+  if (n == "FALSE") return NcValue::boolean(false);
+  return lookup_.read(n, indices, at);
+}
+
+// Numbers: digits with a decimal point, an exponent written EX (10EX-5).
+NcValue ExpressionParser::number() {
+  std::size_t start = i_;
+  bool point = false;
+  while (i_ < s_.size() && (is_digit(s_[i_]) || (s_[i_] == '.' && !point))) point |= s_[i_++] == '.';
+  std::string digits(s_.substr(start, i_ - start));
+  if (digits == ".") fail("a number is expected");
+  int exponent = 0;
+  if (i_ + 1 < s_.size() && upper(s_[i_]) == 'E' && upper(s_[i_ + 1]) == 'X') {
+    i_ += 2;
+    bool negative = false;
+    if (i_ < s_.size() && (s_[i_] == '-' || s_[i_] == '+')) negative = s_[i_++] == '-';
+    std::size_t e = i_;
+    while (i_ < s_.size() && is_digit(s_[i_])) ++i_;
+    if (e == i_ || i_ - e > 3) fail("an exponent of one to three digits is expected after EX");
+    exponent = std::stoi(std::string(s_.substr(e, i_ - e))) * (negative ? -1 : 1);
+  }
+  double v = std::strtod((digits + "e" + std::to_string(exponent)).c_str(), nullptr);
+  return point || exponent < 0 ? NcValue::real(v) : NcValue::integer(v);
+}
+
+NcValue ExpressionParser::function(const std::string& n, const std::vector<NcValue>& a, std::size_t at) {
+  auto need = [&](std::size_t k) {
+    if (a.size() != k)
+      throw InputError(line_, static_cast<int>(at) + 1, fmt::format("{} takes {} argument{}", n, k, k == 1 ? "" : "s"));
+  };
+  auto x = [&](std::size_t k) { return as_number(a[k], line_, at); };
+  auto domain = [&](bool ok) {
+    if (!ok) throw InputError(line_, static_cast<int>(at) + 1, fmt::format("{}: argument outside its domain", n));
+  };
+  if (n == "SIN") return need(1), NcValue::real(std::sin(x(0) * kDegree));
+  if (n == "COS") return need(1), NcValue::real(std::cos(x(0) * kDegree));
+  if (n == "TAN") return need(1), NcValue::real(std::tan(x(0) * kDegree));
+  if (n == "ASIN") return need(1), domain(std::fabs(x(0)) <= 1), NcValue::real(std::asin(x(0)) / kDegree);
+  if (n == "ACOS") return need(1), domain(std::fabs(x(0)) <= 1), NcValue::real(std::acos(x(0)) / kDegree);
+  if (n == "ATAN2") return need(2), NcValue::real(std::atan2(x(0), x(1)) / kDegree);
+  if (n == "SQRT") return need(1), domain(x(0) >= 0), NcValue::real(std::sqrt(x(0)));
+  if (n == "ABS") {
+    need(1);
+    NcValue v = a[0];
+    v.number = std::fabs(x(0));
+    return v;
+  }
+  if (n == "POT") return need(1), arithmetic(a[0], a[0], x(0) * x(0));
+  if (n == "TRUNC") return need(1), NcValue::real(std::trunc(x(0)));
+  if (n == "ROUND") return need(1), NcValue::real(std::round(x(0)));
+  if (n == "ROUNDUP") return need(1), NcValue::real(x(0) > 0 ? std::ceil(x(0)) : std::floor(x(0)));
+  if (n == "LN") return need(1), domain(x(0) > 0), NcValue::real(std::log(x(0)));
+  if (n == "EXP") return need(1), NcValue::real(std::exp(x(0)));
+  if (n == "MINVAL") return need(2), NcValue::real(std::min(x(0), x(1)));
+  if (n == "MAXVAL") return need(2), NcValue::real(std::max(x(0), x(1)));
+  if (n == "BOUND") {
+    need(3);  // BOUND(minimum, maximum, value)
+    return NcValue::real(std::min(std::max(x(2), x(0)), x(1)));
+  }
+  throw InputError(line_, static_cast<int>(at) + 1,
+                   fmt::format("'{}(' is not a function cutcom evaluates (NC-PARAM-EXPR-2 lists them)", n));
+}
+
+}  // namespace cutcom

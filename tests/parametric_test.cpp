@@ -1,0 +1,205 @@
+// Parametric programs (spec nc-parametric.md): expressions evaluated by hand in the comments, and
+// parametric programs that must give exactly the path of the plain program written out by hand.
+#include <sstream>
+
+#include "cutcom/interpreter.hpp"
+#include "support.hpp"
+
+namespace cutcom::test {
+namespace {
+
+double value(const std::string& expression) {
+  std::istringstream none;
+  Interpreter in(none);
+  return in.evaluate(expression).number;
+}
+
+// covers: NC-PARAM-EXPR-1 NC-PARAM-EXPR-2 NC-PARAM-EXPR-3 NC-PARAM-VAR-1
+TEST(Parametric, ExpressionsFollowTheManualsPriorities) {
+  EXPECT_EQ(value("2+3*4"), 14);
+  EXPECT_EQ(value("(2+3)*4"), 20);
+  EXPECT_EQ(value("-2*3+1"), -5);
+  EXPECT_EQ(value("7 DIV 2"), 3);
+  EXPECT_EQ(value("7 MOD 4"), 3);
+  EXPECT_EQ(value("7/2"), 3.5);
+  // Comparisons have the lowest priority: 1 == (1 AND 0) is FALSE; (1==1) AND 0 too.
+  EXPECT_EQ(value("1 == 1 AND 0"), 0);
+  EXPECT_EQ(value("(1 == 1) AND (2 > 1)"), 1);
+  EXPECT_EQ(value("NOT 0 OR 0"), 1);
+  EXPECT_EQ(value("5 B_AND 3"), 1);
+  EXPECT_EQ(value("5 B_OR 3"), 7);
+  EXPECT_EQ(value("5 B_XOR 3"), 6);
+  EXPECT_NEAR(value("SIN(30)"), 0.5, 1e-15);
+  EXPECT_NEAR(value("COS(60)+TAN(45)"), 1.5, 1e-15);
+  EXPECT_NEAR(value("ATAN2(1,1)"), 45, 1e-13);
+  EXPECT_NEAR(value("ACOS(0)+ASIN(1)"), 180, 1e-13);
+  EXPECT_EQ(value("SQRT(16)+ABS(-2)+POT(3)"), 15);
+  EXPECT_EQ(value("TRUNC(-2.7)+ROUND(2.5)+ROUNDUP(1.2)"), -2 + 3 + 2);
+  EXPECT_EQ(value("MINVAL(3,4)+MAXVAL(3,4)+BOUND(0,10,12)"), 17);
+  EXPECT_NEAR(value("LN(EXP(2))"), 2, 1e-15);
+  EXPECT_EQ(value("10EX-1*2"), 2);  // 10 * 10^-1 * 2
+  // Relative equality: 0.1 + 0.2 is 0.30000000000000004 in binary64.
+  EXPECT_EQ(value("0.1+0.2 == 0.3"), 1);
+  EXPECT_EQ(value("0.1+0.2 > 0.3"), 0);
+  EXPECT_EQ(value("R7 + R[3+4]"), 0);  // unset R parameters are 0
+  std::istringstream none;
+  Interpreter in(none);
+  EXPECT_EQ(in.evaluate("\"AB\" << 12").text, "AB12");
+  EXPECT_EQ(in.evaluate("\"AB\" == \"AB\"").number, 1);
+}
+
+// covers: NC-PARAM-ERR-1 NC-PARAM-EXPR-2
+TEST(Parametric, ExpressionErrorsNameTheirColumn) {
+  auto column = [](const std::string& e) {
+    std::istringstream none;
+    Interpreter in(none);
+    try {
+      in.evaluate(e, 7);
+    } catch (const InputError& x) {
+      EXPECT_EQ(x.line(), 7);
+      return x.column();
+    }
+    ADD_FAILURE() << e << " was evaluated";
+    return 0;
+  };
+  EXPECT_EQ(column("1/0"), 2);
+  EXPECT_EQ(column("2+SQRT(-1)"), 3);
+  EXPECT_EQ(column("3*XYZ"), 3);          // undefined variable
+  EXPECT_EQ(column("FOO(1)"), 1);         // unknown function
+  EXPECT_EQ(column("$P_WHATEVER+1"), 1);  // unknown system variable
+  EXPECT_EQ(column("1+\"A\""), 2);        // a string where a number is needed
+  EXPECT_EQ(column("(1+2"), 5);
+}
+
+// The end point of the last block moving, read as written by the interpreter.
+std::string end_x(const std::string& text) {
+  std::istringstream in(text);
+  ProgramReader reader(in);
+  Block b, last;
+  while (reader.next(b)) last = b;
+  return last.end.x.to_string();
+}
+
+// covers: NC-PARAM-GRID-1 NC-PARAM-VAR-2 NC-PARAM-TYPE-1
+TEST(Parametric, ComputedValuesBecomeNinePlaceDecimals) {
+  EXPECT_EQ(end_x("R1=1/3\nG1 X=R1 F100\n"), "0.333333333");
+  EXPECT_EQ(end_x("R1=2/3\nG1 X=R1 F100\n"), "0.666666667");
+  EXPECT_EQ(end_x("G1 X=10.123456789 F100\n"), "10.123456789");  // a literal stays as written
+  EXPECT_EQ(end_x("DEF INT KK=2.5\nG1 X=KK F100\n"), "3");       // INT rounds halves away from 0
+  EXPECT_EQ(end_x("DEF INT KK=-2.5\nG1 X=KK F100\n"), "-3");
+  EXPECT_EQ(end_x("DEF REAL AA[3]=SET(1,2,3)\nG1 X=AA[2]*AA[1] F100\n"), "6");
+  EXPECT_EQ(end_x("DEF REAL BB[2,2]\nBB[1,0]=7\nG1 X=AC(BB[1,0]-0.5) F100\n"), "6.5");
+  EXPECT_EQ(end_x("G91 G1 X5 F100\nR2=1.25\nX=IC(R2*2)\n"), "7.5");
+}
+
+// The path without origins' lines (the plain text has other line numbers).
+void expect_same_path(const RunResult& a, const RunResult& b) {
+  ASSERT_EQ(a.path.size(), b.path.size());
+  ASSERT_EQ(a.alarms.size(), b.alarms.size());
+  for (std::size_t i = 0; i < a.path.size(); ++i) {
+    const PathElement &x = a.path[i], &y = b.path[i];
+    EXPECT_EQ(x.type, y.type) << i;
+    EXPECT_EQ(x.origin.kind, y.origin.kind) << i;
+    EXPECT_EQ(x.ccw, y.ccw) << i;
+    for (auto [p, q] : {std::pair{x.start, y.start}, {x.end, y.end}, {x.center, y.center}}) {
+      EXPECT_EQ(p.x, q.x) << i;
+      EXPECT_EQ(p.y, q.y) << i;
+      EXPECT_EQ(p.z, q.z) << i;
+    }
+  }
+}
+
+// covers: NC-PARAM-FLOW-1 NC-PARAM-FLOW-2 NC-PARAM-FLOW-3 NC-PARAM-FLOW-4 NC-PARAM-SYS-1 NC-PARAM-VAR-1 NC-PARAM-VAR-2
+TEST(Parametric, ParametricProgramGivesThePlainProgramsPath) {
+  // A staircase of three steps (FOR), two bumps (WHILE), a branch on the tool radius (IF/ELSE),
+  // a counted GOTOB loop and a forward jump over a block; each step written out below.
+  const std::string parametric =
+      "DEF REAL STEP=2.5, WIDTH\n"
+      "DEF INT KK, PASS\n"
+      "$TC_DP1[1,1]=120\n"
+      "R5=4\n"
+      "$TC_DP6[1,1]=R5/2\n"
+      "N10 G0 X-10 Y0 T1 D1\n"
+      "WIDTH=$P_TOOLR*5\n"           // 2 * 5 = 10
+      "N20 G1 G41 X0 Y0 F=R5*100\n"  // F400
+      "FOR KK=1 TO 3\n"
+      "  X=KK*WIDTH-5\n"  // 5, 15, 25
+      "  Y=KK*STEP\n"     // 2.5, 5, 7.5
+      "ENDFOR\n"
+      "WHILE PASS<2\n"
+      "  PASS=PASS+1\n"
+      "  G3 X=AC(25+PASS*10) Y=7.5 CR=5\n"  // 35, 45
+      "ENDWHILE\n"
+      "IF $TC_DP6[1,1] > 3\n"
+      "  G1 Y=100\n"
+      "ELSE\n"
+      "  G1 Y=20\n"
+      "ENDIF\n"
+      "R10=0\n"
+      "AGAIN: R10=R10+1\n"
+      "G1 X=45+R10*5\n"  // 50, 55
+      "IF R10<2 GOTOB AGAIN\n"
+      "GOTOF N90\n"
+      "G1 X999\n"
+      "N90 G1 G40 X80 Y40\n"
+      "M30\n";
+  const std::string plain =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F400\n"
+      "X5\nY2.5\nX15\nY5\nX25\nY7.5\n"
+      "G3 X35 Y7.5 CR=5\nG3 X45 Y7.5 CR=5\n"
+      "G1 Y20\nG1 X50\nG1 X55\nN90 G1 G40 X80 Y40\nM30\n";
+  Runs p = run_both(parametric), q = run_both(plain);
+  ASSERT_TRUE(p.fast_ok && p.ref_ok && q.fast_ok && q.ref_ok);
+  EXPECT_GT(q.fast.path.size(), 10u);
+  expect_same_path(p.fast, q.fast);
+  expect_same_path(p.ref, q.ref);
+}
+
+// covers: NC-PARAM-FLOW-3 NC-PARAM-FLOW-1
+TEST(Parametric, LoopRepeatAndLabelsAfterTheEnd) {
+  // LOOP left by a jump; REPEAT … UNTIL; M30 ends the run although an error handler follows.
+  const std::string parametric =
+      "R1=0\nLOOP\n  R1=R1+1\n  G1 X=R1 F100\n  IF R1>=3 GOTOF OUT\nENDLOOP\n"
+      "OUT: R2=0\nREPEAT\n  R2=R2+2\n  G1 Y=R2\nUNTIL R2>=4\nM30\nERR: G1 X999\nM30\n";
+  const std::string plain = "G1 X1 F100\nX2\nX3\nY2\nY4\nM30\n";
+  Runs p = run_both(parametric), q = run_both(plain);
+  ASSERT_TRUE(p.fast_ok && q.fast_ok);
+  expect_same_path(p.fast, q.fast);
+  expect_same_path(p.ref, q.ref);
+}
+
+int error_line(const std::string& text, const std::string& words, InterpreterLimits limits = {}) {
+  std::istringstream in(text);
+  ProgramReader reader(in);
+  reader.set_limits(limits);
+  Block b;
+  try {
+    while (reader.next(b)) {
+    }
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    return e.line();
+  }
+  ADD_FAILURE() << "no error in:\n" << text;
+  return 0;
+}
+
+// covers: NC-PARAM-ERR-1 NC-PARAM-FLOW-6 NC-PARAM-FLOW-1 NC-PARAM-FLOW-3 NC-PARAM-VAR-2
+TEST(Parametric, LanguageErrorsNameTheirLine) {
+  EXPECT_EQ(error_line("G1 X0 F100\nG1 X=UNKNOWN\n", "undefined variable 'UNKNOWN'"), 2);
+  EXPECT_EQ(error_line("G1 X0 F100\nGOTOF NOWHERE\n", "jump target 'NOWHERE' not found"), 2);
+  EXPECT_EQ(error_line("LAB1: G1 X0 F100\nGOTOF LAB1\n", "not found after this block"), 2);
+  EXPECT_EQ(error_line("DEF REAL AA[2]\nAA[2]=1\n", "outside 0 to 1"), 2);
+  EXPECT_EQ(error_line("R1=0\nENDWHILE\n", "ENDWHILE without"), 2);
+  EXPECT_EQ(error_line("WHILE 1\nG1 X1 F100\n", "ends inside a loop"), 2);
+  EXPECT_EQ(error_line("R1=1\nIF R1>0\nG1 X1 F100\n", "IF without its ENDIF"), 2);
+  EXPECT_EQ(error_line("DEF STRING[8] SS\nSS=5\n", "STRING variable is assigned a number"), 2);
+  EXPECT_EQ(error_line("DEF REAL X\n", "cannot be a variable name"), 1);
+  EXPECT_EQ(error_line("R1=1\nG1 X=R1/(R1-1) F100\n", "division by zero"), 2);
+  // An endless loop stops at the limit, naming where it was reached.
+  EXPECT_EQ(error_line("LOOP\nR1=R1+1\nENDLOOP\n", "runs away", {1000}), 3);
+  EXPECT_EQ(error_line("START: R1=R1+1\nGOTOB START\n", "runs away", {1000}), 2);
+}
+
+}  // namespace
+}  // namespace cutcom::test
