@@ -1,8 +1,10 @@
 #include "contour_case.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
 
 namespace cutcom::props {
 
@@ -37,6 +39,77 @@ std::string sar_words(int side, int seg, std::int64_t disr, bool discl, bool ac,
 }
 }  // namespace
 
+namespace {
+bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The end of a number [-]digits[.digits] at i, or i if there is none.
+std::size_t number_end(const std::string& s, std::size_t i) {
+  std::size_t j = i;
+  if (j < s.size() && s[j] == '-') ++j;
+  std::size_t d = j;
+  while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.')) ++j;
+  return j == d ? i : j;
+}
+
+// becomes X=(-1.616+R7*SHIFT[1])-R7*SHIFT[1] (R7 * SHIFT[1] = 3.75), CR=2.5 becomes
+// CR=(2.5*SHIFT[0])/SHIFT[0]: the value comes back through binary64 a few ulps off.
+std::string parametric_line(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    if (s[i] == ';') {
+      out += s.substr(i);
+      break;
+    }
+    bool start = i == 0 || !name_char(s[i - 1]);
+    if (start && std::string("XYZIJK").find(s[i]) != std::string::npos) {
+      std::size_t e = number_end(s, i + 1);
+      if (e > i + 1 && (e == s.size() || !name_char(s[e]))) {
+        out += fmt::format("{}=({}+R7*SHIFT[1])-R7*SHIFT[1]", s[i], s.substr(i + 1, e - i - 1));
+        i = e;
+        continue;
+      }
+    }
+    bool done = false;
+    for (const char* w : {"CR=", "DISR=", "DISCL=", "RND=", "CHF="}) {
+      std::string k(w);
+      if (start && s.compare(i, k.size(), k) == 0) {
+        std::size_t e = number_end(s, i + k.size());
+        if (e > i + k.size()) {
+          out += fmt::format("{}({}*SHIFT[0])/SHIFT[0]", k, s.substr(i + k.size(), e - i - k.size()));
+          i = e;
+          done = true;
+          break;
+        }
+      }
+    }
+    if (!done) out += s[i++];
+  }
+  return out;
+}
+}  // namespace
+
+std::string to_parametric_program(const std::string& plain) {
+  std::istringstream in(plain);
+  std::string out = "DEF REAL SHIFT[2]=SET(0.5, 1.25)\nDEF INT ONCE\nR7=3\n";
+  std::string line;
+  bool opened = false;
+  while (std::getline(in, line)) {
+    bool end = line.find("M30") != std::string::npos || line.find("M2 ") != std::string::npos;
+    bool code = !line.empty() && line[0] != ';' && line[0] != '$';
+    if (code && !opened && !end) {
+      out += "IF R7*SHIFT[1] == 3.75\nFOR ONCE=1 TO 1\n";
+      opened = true;
+    }
+    if (end && opened) {
+      out += "ENDFOR\nELSE\nG1 X999\nENDIF\n";
+      opened = false;
+    }
+    out += (code ? parametric_line(line) : line) + "\n";
+  }
+  if (opened) out += "ENDFOR\nELSE\nG1 X999\nENDIF\n";
+  return out;
+}
+
 std::string to_program(const ContourCase& c) {
   // Plane axes: abscissa / ordinate / applicate letters for G17, G18, G19.
   const char* a = c.plane == 17 ? "X" : c.plane == 18 ? "Z" : "Y";
@@ -67,7 +140,7 @@ std::string to_program(const ContourCase& c) {
                                   sar.fad_in, c.decimals);
     if (v == 12 || v == 13) words += v == 12 ? " DISRP=5" : " DISRP=-5";  // SAR-DISRP-1/2
     // SAR-STOP-1 / SAR-AGAIN-1: a STOPRE or a second SAR block before the direction block.
-    std::string between = v == 14 ? fmt::format("N{} STOPRE\n", n + 2)
+    std::string between = v == 14   ? fmt::format("N{} STOPRE\n", n + 2)
                           : v == 15 ? fmt::format("N{} G1 G147 DISR=1 F500\n", n + 2)
                                     : "";
     // SAR-P4-1: P4 in the SAR block, or (the manual's E1 variants) from the next block.
@@ -77,8 +150,8 @@ std::string to_program(const ContourCase& c) {
       p += fmt::format("N{} G1 G{} {} {} {}0 F500\n{}N{} {}\n", n, sar.contour_in, words, modes, h, between, n + 1,
                        first);
     } else {
-      p += fmt::format("N{} G1 G{} {} {} F500\n{}N{} {} {}0\n", n, sar.contour_in, words, modes, between, n + 1,
-                       first, h);
+      p += fmt::format("N{} G1 G{} {} {} F500\n{}N{} {} {}0\n", n, sar.contour_in, words, modes, between, n + 1, first,
+                       h);
     }
   }
   std::int64_t x = c.first_x, y = c.first_y;
@@ -123,7 +196,10 @@ std::string to_program(const ContourCase& c) {
     }
     if (s.corner != 0) {  // NC-CONTOUR-1: appended to the block just written
       p.pop_back();
-      p += fmt::format(" {}={}\n", s.corner == 1 ? "RND" : s.corner == 2 ? "CHR" : "CHF",
+      p += fmt::format(" {}={}\n",
+                       s.corner == 1   ? "RND"
+                       : s.corner == 2 ? "CHR"
+                                       : "CHF",
                        fixed(s.corner_value, c.decimals));
     }
   }

@@ -77,6 +77,10 @@ inline constexpr int kVariants = 16;
 inline constexpr int kSarVariants = 12;  // variants from here on change a SAR approach
 
 std::string to_program(const ContourCase& c);
+// PROP-PARAM-1: the same program written parametrically: every coordinate and every CR=, DISR=,
+// DISCL=, RND=, CHF= value an expression that returns it through binary64, the contour inside
+// an IF that holds and a FOR loop that runs once.
+std::string to_parametric_program(const std::string& plain);
 std::string fixed(std::int64_t units, int decimals);  // fixed(12345, 3) = "12.345"
 
 // The same contour run backwards (PROP-META-6, PROP-SAR-3): side swapped, start and end

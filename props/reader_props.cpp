@@ -28,6 +28,7 @@ Outcome run_text(const std::string& text, bool use_ref) {
   CollectingSink sink;
   try {
     ProgramReader reader(in, md.initial_state());
+    reader.set_limits({10'000});  // random loops: stop early (NC-PARAM-FLOW-6)
     if (use_ref)
       ref::run(reader, md, sink);
     else
@@ -59,6 +60,7 @@ void check_robust(const std::string& text) {
   // Accepted by both: they agree as PROP-DIFF-1 defines it.
   std::istringstream in(text);
   ProgramReader reader(in);
+  reader.set_limits({10'000});
   std::vector<Block> blocks;
   Block b;
   try {
@@ -75,66 +77,15 @@ void check_robust(const std::string& text) {
 }
 
 rc::Gen<std::string> nc_like_text() {
-  static const std::vector<std::string> tokens = {"N10 ",
-                                                  "G0 ",
-                                                  "G1 ",
-                                                  "G2 ",
-                                                  "G3 ",
-                                                  "G17 ",
-                                                  "G18 ",
-                                                  "G41 ",
-                                                  "G42 ",
-                                                  "G40 ",
-                                                  "G450 ",
-                                                  "G451 ",
-                                                  "G91 ",
-                                                  "X",
-                                                  "Y",
-                                                  "Z",
-                                                  "I",
-                                                  "J",
-                                                  "CR=",
-                                                  "=",
-                                                  "AC(",
-                                                  "IC(",
-                                                  ")",
-                                                  "-",
-                                                  ".",
-                                                  "0",
-                                                  "1",
-                                                  "5",
-                                                  "9",
-                                                  "12.5",
-                                                  "0.001",
-                                                  " ",
-                                                  "\n",
-                                                  "\n",
-                                                  "; c",
-                                                  "$TC_DP6[1,1]=",
-                                                  "$TC_DP15[1,1]=",
-                                                  "T1 ",
-                                                  "D1 ",
-                                                  "D0 ",
-                                                  "M30",
-                                                  "M8 ",
-                                                  "H2 ",
-                                                  "OFFN=",
-                                                  "NORM ",
-                                                  "KONT ",
-                                                  "F100 ",
-                                                  "DISR=",
-                                                  "DISCL=AC(",
-                                                  "FAD=PM(",
-                                                  "Q",
-                                                  "/",
-                                                  "\t",
-                                                  "(",
-                                                  "[",
-                                                  "]",
-                                                  ",",
-                                                  "G54",
-                                                  "999999999999999",
-                                                  "%"};
+  static const std::vector<std::string> tokens = {
+      "N10 ", "G0 ", "G1 ", "G2 ", "G3 ", "G17 ", "G18 ", "G41 ", "G42 ", "G40 ", "G450 ", "G451 ", "G91 ", "X", "Y",
+      "Z", "I", "J", "CR=", "=", "AC(", "IC(", ")", "-", ".", "0", "1", "5", "9", "12.5", "0.001", " ", "\n", "\n",
+      "; c", "$TC_DP6[1,1]=", "$TC_DP15[1,1]=", "T1 ", "D1 ", "D0 ", "M30", "M8 ", "H2 ", "OFFN=", "NORM ", "KONT ",
+      "F100 ", "DISR=", "DISCL=AC(", "FAD=PM(", "Q", "/", "\t", "(", "[", "]", ",", "G54", "999999999999999", "%",
+      // the language of parametric programs (NC-PARAM-*)
+      "R1=", "R1", "R[", "DEF REAL AA=", "DEF INT BB[3]", "AA", "BB[", "+", "*", "/", "SIN(", "SQRT(", " AND ", "<",
+      "==", "\nIF ", "\nELSE\n", "\nENDIF\n", "\nWHILE ", "\nENDWHILE\n", "\nFOR R2=1 TO 3\n", "\nENDFOR\n", "\nLOOP\n",
+      "\nENDLOOP\n", "\nREPEAT\n", "\nUNTIL ", " GOTOF LL", " GOTOB LL", "\nLL: ", "$P_TOOLR", "\""};
   return rc::gen::map(rc::gen::container<std::vector<std::string>>(rc::gen::elementOf(tokens)),
                       [](const std::vector<std::string>& parts) {
                         std::string s;
@@ -146,10 +97,11 @@ rc::Gen<std::string> nc_like_text() {
 rc::Gen<std::string> mutated_program() {
   return rc::gen::exec([] {
     std::string text = to_program(*any_contour());
+    if (*rc::gen::inRange(0, 3) == 0) text = to_parametric_program(text);  // NC-PARAM-*: mutated too
     int edits = *rc::gen::inRange(1, 6);
     for (int k = 0; k < edits && !text.empty(); ++k) {
       std::size_t at = static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, text.size()));
-      char c = *rc::gen::elementOf(std::string("XYZGN0123456789.-=;() \n$[],ACQ"));
+      char c = *rc::gen::elementOf(std::string("XYZGN0123456789.-=;() \n$[],ACQR*+/<:"));
       switch (*rc::gen::inRange(0, 3)) {
         case 0:
           text.erase(at, 1);

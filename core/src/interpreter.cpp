@@ -134,6 +134,12 @@ bool is_r_parameter(const std::string& n) {
 
 constexpr int kRParameters = 1000;  // R0 … R999 (NC-PARAM-VAR-1)
 
+// The number of "Rn" (is_r_parameter), or kRParameters when it is too large to exist.
+int r_number(const std::string& n) {
+  if (n.size() > 5) return kRParameters;
+  return std::stoi(n.substr(1));
+}
+
 }  // namespace
 
 // Names in expressions: R parameters, user variables, system variables.
@@ -143,7 +149,7 @@ class InterpreterLookup : public ExpressionParser::Lookup {
   NcValue read(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) override {
     if (n == "R" && idx.size() == 1) return NcValue::real(r_value(idx[0], at));
     if (is_r_parameter(n) && idx.empty()) {
-      int k = std::stoi(n.substr(1));
+      int k = r_number(n);
       if (k >= kRParameters) fail(at, fmt::format("R parameter {} does not exist (R0 to R{})", n, kRParameters - 1));
       auto it = in_.r_.find(k);
       return NcValue::real(it == in_.r_.end() ? 0.0 : it->second);
@@ -387,7 +393,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
         if (value.type == NcValue::Type::kString)
           throw InputError(line_, static_cast<int>(v) + 1, "an R parameter holds a number, not a string");
       } else if (is_r_parameter(n)) {
-        int r = std::stoi(n.substr(1));
+        int r = r_number(n);
         if (r >= kRParameters)
           throw InputError(line_, static_cast<int>(start) + 1, fmt::format("R parameter {} does not exist", n));
         if (value.type == NcValue::Type::kString)
@@ -606,7 +612,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
 }
 
 double Interpreter::counter(const std::string& name) {
-  if (is_r_parameter(name)) return r_[std::stoi(name.substr(1))];
+  if (is_r_parameter(name) && r_number(name) < kRParameters) return r_[r_number(name)];
   Variable* v = find_variable(name);
   if (!v || !v->dims.empty() || v->type == NcValue::Type::kString)
     throw InputError(line_, 1,
@@ -616,7 +622,7 @@ double Interpreter::counter(const std::string& name) {
 
 void Interpreter::assign_counter(const std::string& name, double value, std::size_t at) {
   if (is_r_parameter(name)) {
-    int r = std::stoi(name.substr(1));
+    int r = r_number(name);
     if (r >= kRParameters)
       throw InputError(line_, static_cast<int>(at) + 1, fmt::format("R parameter {} does not exist", name));
     r_[r] = value;
@@ -697,6 +703,12 @@ void Interpreter::define(std::string_view s, std::size_t i) {
     }
     std::size_t count = 1;
     for (int d : var.dims) count *= static_cast<std::size_t>(d);
+    if (count > 1'000'000 || var.dims.size() > 3)
+      throw InputError(line_, static_cast<int>(n0) + 1,
+                       fmt::format("'{}' is too large: at most three indices and 1000000 elements", name));
+    total_elements_ += count;
+    if (total_elements_ > 4'000'000)
+      throw InputError(line_, static_cast<int>(n0) + 1, "the program's variables hold more than 4000000 values");
     NcValue zero = t == NcValue::Type::kString ? NcValue::string("") : NcValue{t, 0, {}};
     var.values.assign(count, zero);
     variables_[name] = var;  // a second DEF of a name starts it again

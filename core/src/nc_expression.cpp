@@ -65,7 +65,13 @@ bool ExpressionParser::symbol(std::string_view k) {
   return true;
 }
 
-NcValue ExpressionParser::parse() { return comparison(); }
+NcValue ExpressionParser::parse() {
+  // Nesting (parentheses, arguments, indices) is bounded: no program exhausts the stack.
+  if (++depth_ > kMaxDepth) fail(fmt::format("the expression is nested more than {} levels deep", kMaxDepth));
+  NcValue v = comparison();
+  --depth_;
+  return v;
+}
 
 // Level 11: == <> > < >= <= (lowest priority).
 NcValue ExpressionParser::comparison() {
@@ -225,6 +231,11 @@ NcValue ExpressionParser::product() {
 
 NcValue ExpressionParser::unary() {
   std::size_t at = i_;
+  if (++unary_depth_ > kMaxDepth * 4) fail("too many signs or NOTs in a row");
+  struct Leave {
+    int& d;
+    ~Leave() { --d; }
+  } leave{unary_depth_};
   if (keyword("NOT")) return NcValue::boolean(!truth(unary(), line_, at));
   if (keyword("B_NOT")) return NcValue::integer(static_cast<double>(~as_int(unary(), line_, at)));
   if (symbol("-")) {

@@ -49,6 +49,8 @@ class ExpressionParser {
   NcValue function(const std::string& name, const std::vector<NcValue>& args, std::size_t at);
   static std::string text_of(const NcValue& v);
 
+  static constexpr int kMaxDepth = 64;
+  int depth_ = 0, unary_depth_ = 0;
   std::string_view s_;
   std::size_t i_;
   int line_;

@@ -107,6 +107,7 @@ class Interpreter {
   std::vector<int> open_ifs_;  // lines of the IF structures whose running branch has not ended
   std::map<std::string, std::vector<std::pair<std::streamoff, int>>> labels_seen_;  // label: (start, lines before)
   std::int64_t backward_jumps_ = 0;
+  std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded
   bool control_flow_ = false;
   friend class InterpreterLookup;
 };
