@@ -35,6 +35,7 @@ struct RunOptions {
   std::string offsets_file;
   bool trace = false;
   std::int64_t max_loops = cutcom::InterpreterLimits{}.max_backward_jumps;
+  std::vector<std::string> search_path;
 };
 
 // A data file given on the command line is wrong: names the file and line (exit 2).
@@ -48,10 +49,12 @@ struct ControlData {
   cutcom::ToolTable tools;
   cutcom::OffsetTable offsets;
   cutcom::InterpreterLimits limits;
+  std::vector<std::string> search_path;  // NC-PARAM-SUB-1: the program's folder, then --search-path
   void into(cutcom::ProgramReader& reader) const {
     reader.tools() = tools;
     reader.offsets() = offsets;
     reader.set_limits(limits);
+    reader.set_search_path(search_path);
   }
 };
 
@@ -72,6 +75,10 @@ ControlData control_data(const RunOptions& o) {
   for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
   if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
   c.limits.max_backward_jumps = o.max_loops;
+  std::filesystem::path folder =
+      o.program == "-" ? std::filesystem::path(".") : std::filesystem::path(o.program).parent_path();
+  c.search_path.push_back(folder.empty() ? "." : folder.string());
+  for (const auto& d : o.search_path) c.search_path.push_back(d);
   return c;
 }
 
@@ -351,6 +358,9 @@ int main(int argc, char** argv) {
   run->add_option("--max-loops", o.max_loops,
                   "loop passes and backward jumps before a program counts as running away (NC-PARAM-FLOW-6)")
       ->check(CLI::PositiveNumber);
+  run->add_option("--search-path", o.search_path,
+                  "folder where subprograms (NAME.SPF) are looked for after the program's own (repeatable)")
+      ->check(CLI::ExistingDirectory);
   std::vector<std::string> md_assignments;
   auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
   md->add_option("--md", md_assignments, "override NAME=VALUE before listing");

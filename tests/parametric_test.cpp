@@ -1,5 +1,7 @@
 // Parametric programs (spec nc-parametric.md): expressions evaluated by hand in the comments, and
 // parametric programs that must give exactly the path of the plain program written out by hand.
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "cutcom/interpreter.hpp"
@@ -199,6 +201,87 @@ TEST(Parametric, LanguageErrorsNameTheirLine) {
   // An endless loop stops at the limit, naming where it was reached.
   EXPECT_EQ(error_line("LOOP\nR1=R1+1\nENDLOOP\n", "runs away", {1000}), 3);
   EXPECT_EQ(error_line("START: R1=R1+1\nGOTOB START\n", "runs away", {1000}), 2);
+}
+
+// A folder of subprogram files for one test.
+std::string folder_with(const std::string& name, const std::vector<std::pair<std::string, std::string>>& files) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("cutcom-" + name);
+  std::filesystem::create_directories(dir);
+  for (const auto& [file, text] : files) std::ofstream(dir / file) << text;
+  return dir.string();
+}
+
+RunResult run_in(const std::string& engine, const std::string& text, const std::string& dir, bool* ok) {
+  std::istringstream in(text);
+  MachineData md;
+  ProgramReader reader(in, md.initial_state());
+  reader.set_search_path({dir});
+  CollectingSink sink;
+  *ok = engine == "ref" ? ref::run(reader, md, sink) : fast::run(reader, md, sink);
+  return sink.result;
+}
+
+// covers: NC-PARAM-SUB-1 NC-PARAM-SUB-2 NC-PARAM-SUB-3
+TEST(Parametric, SubprogramsGiveThePlainProgramsPath) {
+  // SQUARE(10, 20, AREA) mills a 10 x 20 rectangle with G41 and returns its area through a VAR
+  // parameter; L77 P2 moves 5 mm in Y twice (G91); the IF checks the returned area.
+  std::string dir = folder_with("subprograms", {{"SQUARE.SPF",
+                                                 "PROC SQUARE(REAL XS, REAL YS, VAR REAL RESULT) DISPLOF\n"
+                                                 "N10 G41 G1 X0 Y0 F300\nN20 X=XS\nN30 Y=YS\nN40 X0\nN50 Y0\n"
+                                                 "N60 G40 X-20 Y0\nRESULT=XS*YS\nRET\n"},
+                                                {"L77.SPF", "N10 G91 G1 Y5\nN20 G90\nM17\n"}});
+  const std::string main =
+      "DEF REAL AREA\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G0 X-20 Y0 Z5 T1 D1\nN20 G1 Z-1 F200\n"
+      "N30 SQUARE(10, 20, AREA)\nN40 L77 P2\nIF AREA <> 200 GOTOF BAD\nN50 G0 Z5\nM30\nBAD: G1 X999\nM30\n";
+  const std::string plain =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G0 X-20 Y0 Z5 T1 D1\nN20 G1 Z-1 F200\n"
+      "N10 G41 G1 X0 Y0 F300\nN20 X10\nN30 Y20\nN40 X0\nN50 Y0\nN60 G40 X-20 Y0\n"
+      "N10 G91 G1 Y5\nN20 G90\nN10 G91 G1 Y5\nN20 G90\nN50 G0 Z5\nM30\n";
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok_p = false, ok_q = false;
+    RunResult p = run_in(engine, main, dir, &ok_p), q = run_engine(engine, plain, {}, &ok_q);
+    ASSERT_TRUE(ok_p && ok_q) << engine;
+    EXPECT_EQ(p.path.size(), 11u);
+    expect_same_path(p, q);
+    // Everything a subprogram produces carries the main program's calling line.
+    for (const PathElement& e : p.path) {
+      if (e.origin.kind == OriginKind::kOffset) {
+        EXPECT_EQ(e.origin.line, 6) << engine;
+      }
+    }
+  }
+}
+
+int sub_error(const std::string& main, const std::string& dir, const std::string& words) {
+  std::istringstream in(main);
+  ProgramReader reader(in);
+  reader.set_search_path({dir});
+  Block b;
+  try {
+    while (reader.next(b)) {
+    }
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    return e.line();
+  }
+  ADD_FAILURE() << "no error in:\n" << main;
+  return 0;
+}
+
+// covers: NC-PARAM-SUB-3 NC-PARAM-SUB-2 NC-PARAM-SUB-1 NC-PARAM-ERR-1
+TEST(Parametric, SubprogramErrorsNameFileLineAndCall) {
+  std::string dir = folder_with("broken", {{"BROKEN.SPF", "PROC BROKEN(REAL AA)\nG1 X=AA+UNDEF F100\nRET\n"},
+                                           {"DEEP.SPF", "PROC DEEP\nDEEP\nRET\n"},
+                                           {"WORDS.SPF", "G1 X1 F100\nQQ5\n"},
+                                           {"KEEP.SPF", "PROC KEEP(REAL AA) SAVE\n"}});
+  EXPECT_EQ(sub_error("G0 X0\nN20 BROKEN(5)\n", dir,
+                      "in subprogram BROKEN.SPF line 2, column 9 (called from line 2): undefined variable 'UNDEF'"),
+            2);
+  EXPECT_EQ(sub_error("WORDS\n", dir, "in subprogram WORDS.SPF line 2, column 1"), 1);
+  EXPECT_EQ(sub_error("G0 X0\nDEEP\n", dir, "more than 16 program levels"), 2);
+  EXPECT_EQ(sub_error("G0 X0\nL99\n", dir, "subprogram L99 not found"), 2);
+  EXPECT_EQ(sub_error("BROKEN(1, 2)\n", dir, "2 arguments given, the PROC has 1 parameters"), 1);
+  EXPECT_EQ(sub_error("KEEP(1)\n", dir, "SAVE (restoring the caller's modal state) is not simulated yet"), 1);
 }
 
 }  // namespace

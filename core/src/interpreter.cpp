@@ -6,6 +6,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <tuple>
 
 #include "cutcom/reader.hpp"
 #include "nc_expression.hpp"
@@ -145,30 +148,30 @@ int r_number(const std::string& n) {
 // Names in expressions: R parameters, user variables, system variables.
 class InterpreterLookup : public ExpressionParser::Lookup {
  public:
-  InterpreterLookup(Interpreter& in, int line) : in_(in), line_(line) {}
+  InterpreterLookup(Interpreter& it, int line) : it_(it), line_(line) {}
   NcValue read(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) override {
     if (n == "R" && idx.size() == 1) return NcValue::real(r_value(idx[0], at));
     if (is_r_parameter(n) && idx.empty()) {
       int k = r_number(n);
       if (k >= kRParameters) fail(at, fmt::format("R parameter {} does not exist (R0 to R{})", n, kRParameters - 1));
-      auto it = in_.r_.find(k);
-      return NcValue::real(it == in_.r_.end() ? 0.0 : it->second);
+      auto it = it_.r_.find(k);
+      return NcValue::real(it == it_.r_.end() ? 0.0 : it->second);
     }
     if (!n.empty() && n[0] == '$') {
-      std::optional<double> v = in_.system_ ? in_.system_->system_value(n, idx) : std::nullopt;
+      std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
       if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));
       return NcValue::real(*v);
     }
-    Interpreter::Variable* v = in_.find_variable(n);
+    Interpreter::Variable* v = it_.find_variable(n);
     if (!v) fail(at, fmt::format("undefined variable '{}'", n));
     return v->values[offset(n, *v, idx, at)];
   }
-  bool is_variable(const std::string& n) const override { return in_.variables_.count(n) > 0; }
+  bool is_variable(const std::string& n) const override { return it_.cx().variables.count(n) > 0; }
 
   double r_value(const NcValue& index, std::size_t at) {
     int k = r_index(index, at);
-    auto it = in_.r_.find(k);
-    return it == in_.r_.end() ? 0.0 : it->second;
+    auto it = it_.r_.find(k);
+    return it == it_.r_.end() ? 0.0 : it->second;
   }
   int r_index(const NcValue& index, std::size_t at) {
     if (index.type == NcValue::Type::kString) fail(at, "an R parameter's index must be a number");
@@ -197,47 +200,53 @@ class InterpreterLookup : public ExpressionParser::Lookup {
   }
 
  private:
-  Interpreter& in_;
+  Interpreter& it_;
   int line_;
 };
 
 Interpreter::Interpreter(std::istream& in, SystemValues* system, InterpreterLimits limits)
-    : in_(in), system_(system), limits_(limits) {
-  std::streampos p = in_.tellg();
-  offset_ = start_offset_ = p == std::streampos(-1) ? 0 : static_cast<std::streamoff>(p);
+    : system_(system), limits_(limits) {
+  stack_.emplace_back();
+  cx().in = &in;
+  std::streampos p = in.tellg();
+  cx().offset = cx().start_offset = p == std::streampos(-1) ? 0 : static_cast<std::streamoff>(p);
 }
 
 bool Interpreter::getline(std::string& text) {
-  line_start_ = offset_;
-  if (!std::getline(in_, text)) return false;
-  offset_ += static_cast<std::streamoff>(text.size()) + 1;
-  ++line_;
+  cx().line_start = cx().offset;
+  if (!std::getline((*cx().in), text)) return false;
+  cx().offset += static_cast<std::streamoff>(text.size()) + 1;
+  ++cx().line;
   return true;
 }
 
 void Interpreter::seek(std::streamoff to, int line) {
-  in_.clear();
-  in_.seekg(to);
-  if (!in_) throw InputError(line_, 1, "a jump needs a program that can be read again (a file, not a pipe)");
-  offset_ = to;
-  line_ = line;
+  (*cx().in).clear();
+  (*cx().in).seekg(to);
+  if (!(*cx().in)) throw InputError(cx().line, 1, "a jump needs a program that can be read again (a file, not a pipe)");
+  cx().offset = to;
+  cx().line = line;
 }
 
 bool Interpreter::maybe_parametric(std::string_view s) {
   bool letter = false;
-  for (char c : s) {
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    char c = s[k];
     if (c == ';') return false;
     if (c == '=' || c == ':') return true;
     bool l = is_letter(c) || c == '_';
     if (l && letter) return true;
+    // Ln: a subprogram call (NC-PARAM-SUB-1)
+    if ((c == 'L' || c == 'l') && k + 1 < s.size() && is_digit(s[k + 1]) && (k == 0 || !is_name_char(s[k - 1])))
+      return true;
     letter = l;
   }
   return false;
 }
 
 Interpreter::Variable* Interpreter::find_variable(const std::string& name) {
-  auto it = variables_.find(name);
-  return it == variables_.end() ? nullptr : &it->second;
+  auto it = cx().variables.find(name);
+  return it == cx().variables.end() ? nullptr : &it->second;
 }
 
 NcValue Interpreter::evaluate(std::string_view expression, int line) {
@@ -250,22 +259,281 @@ NcValue Interpreter::evaluate(std::string_view expression, int line) {
 }
 
 bool Interpreter::next(std::string& text, int& line) {
-  while (getline(raw_)) {
-    if (!maybe_parametric(raw_)) {
-      text.swap(raw_);
-      line = line_;
-      return true;
+  while (true) {
+    try {
+      if (!getline(raw_)) {
+        if (!cx().frames.empty())
+          throw InputError(cx().line, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");
+        if (!cx().open_ifs.empty()) throw InputError(cx().open_ifs.back(), 1, "IF without its ENDIF");
+        if (stack_.size() == 1) return false;
+        leave_subprogram();  // NC-PARAM-SUB-2: the end of the file returns
+        continue;
+      }
+      if (stack_.size() == 1 && !maybe_parametric(raw_)) {
+        text.swap(raw_);
+        line = cx().line;
+        return true;
+      }
+      run_line(raw_, text);
+    } catch (const InputError& e) {
+      throw where(e);
     }
-    int at_line = line_;
-    run_line(raw_, text);
-    if (text.empty()) continue;  // a statement only
-    line = at_line;
+    if (text.empty()) continue;                                   // a statement only
+    line = stack_.size() == 1 ? cx().line : stack_.front().line;  // NC-PARAM-SUB-3
     return true;
   }
-  if (!frames_.empty())
-    throw InputError(line_, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");
-  if (!open_ifs_.empty()) throw InputError(open_ifs_.back(), 1, "IF without its ENDIF");
-  return false;
+}
+
+// NC-PARAM-SUB-3: an error in a subprogram names its file and line and the calls that led there;
+// the line it reports is the main program's calling line.
+InputError Interpreter::where(const InputError& e) const {
+  if (stack_.size() == 1 || e.detail().rfind("in subprogram ", 0) == 0) return e;
+  std::string chain = fmt::format("in subprogram {} line {}, column {}", cx().name, e.line(), e.column());
+  for (std::size_t k = stack_.size() - 1; k-- > 1;)
+    chain += fmt::format(", called from {} line {}", stack_[k].name, stack_[k].line);
+  return InputError(stack_.front().line, 1,
+                    fmt::format("{} (called from line {}): {}", chain, stack_.front().line, e.detail()));
+}
+
+// The file of a subprogram: NAME.SPF (or .MPF, any case) in the program's folder or the search
+// path (NC-PARAM-SUB-1).
+std::optional<std::string> Interpreter::find_subprogram(const std::string& name) const {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const std::string& dir : search_path_.empty() ? std::vector<std::string>{"."} : search_path_)
+    for (const std::string& f : {name + ".SPF", name + ".spf", lower + ".spf", lower + ".SPF", name + ".MPF",
+                                 name + ".mpf", lower + ".mpf", "_N_" + name + "_SPF", name}) {
+      std::string path = dir.empty() ? f : dir + "/" + f;
+      std::ifstream probe(path);
+      if (probe) return path;
+    }
+  return std::nullopt;
+}
+
+// NC-PARAM-SUB-1: a call: NAME, NAME(arguments), Ln, CALL/PCALL/EXTCALL "NAME", each with P
+// repetitions; the subprogram runs before the caller's next block.
+bool Interpreter::call(std::string_view s, std::size_t word) {
+  std::size_t w = name_end(s, word);
+  std::string n = upper_text(s.substr(word, w - word));
+  std::size_t i = skip_space(s, w);
+  bool explicit_call = n == "CALL" || n == "PCALL" || n == "EXTCALL";
+  if (explicit_call) {
+    std::size_t e;
+    if (i < s.size() && s[i] == '"') {
+      e = s.find('"', i + 1);
+      if (e == std::string_view::npos)
+        throw InputError(cx().line, static_cast<int>(i) + 1, "the name has no closing '\"'");
+      n = upper_text(s.substr(i + 1, e - i - 1));
+      ++e;
+    } else {
+      e = name_end(s, i);
+      n = upper_text(s.substr(i, e - i));
+    }
+    if (n.empty()) throw InputError(cx().line, static_cast<int>(i) + 1, "a subprogram name is expected");
+    std::size_t slash = n.find_last_of("/\\");
+    if (slash != std::string::npos) n = n.substr(slash + 1);  // EXTCALL "PATH/NAME": the name
+    for (const char* ext : {".SPF", ".MPF"})
+      if (n.size() > 4 && n.compare(n.size() - 4, 4, ext) == 0) n.resize(n.size() - 4);
+    i = skip_space(s, e);
+  } else {
+    bool l_number = n.size() > 1 && n[0] == 'L';
+    for (std::size_t k = 1; l_number && k < n.size(); ++k) l_number = is_digit(n[k]);
+    if (!l_number && (n.size() < 2 || cx().variables.count(n) || is_r_parameter(n))) return false;
+    bool next_ok = i >= s.size() || s[i] == ';' || s[i] == '(' ||
+                   (upper(s[i]) == 'P' && i + 1 < s.size() && (is_digit(s[i + 1]) || s[i + 1] == '='));
+    if (!next_ok) return false;
+    if (!find_subprogram(n)) {
+      if (l_number)
+        throw InputError(
+            cx().line, static_cast<int>(word) + 1,
+            fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
+      return false;  // not a call: the lexer names the word
+    }
+  }
+  std::optional<std::string> file = find_subprogram(n);
+  if (!file)
+    throw InputError(cx().line, static_cast<int>(word) + 1,
+                     fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
+  // Arguments: values now; a VAR parameter's argument is also remembered by name.
+  InterpreterLookup lookup(*this, cx().line);
+  std::vector<std::optional<NcValue>> args;
+  std::vector<std::string> names;
+  if (i < s.size() && s[i] == '(') {
+    ++i;
+    i = skip_space(s, i);
+    if (i < s.size() && s[i] == ')') {
+      ++i;
+    } else {
+      while (true) {
+        i = skip_space(s, i);
+        if (i < s.size() && (s[i] == ',' || s[i] == ')')) {
+          args.emplace_back(), names.emplace_back();  // left out: the parameter's default
+        } else {
+          std::size_t ne = name_end(s, i);
+          std::size_t after = skip_space(s, ne);
+          names.push_back(after < s.size() && (s[after] == ',' || s[after] == ')') ? upper_text(s.substr(i, ne - i))
+                                                                                   : "");
+          ExpressionParser p(s, i, cx().line, lookup);
+          args.push_back(p.parse());
+          i = skip_space(s, p.position());
+        }
+        if (i < s.size() && s[i] == ',') {
+          ++i;
+          continue;
+        }
+        if (i < s.size() && s[i] == ')') {
+          ++i;
+          break;
+        }
+        throw InputError(cx().line, static_cast<int>(i) + 1, "')' or ',' expected in the call");
+      }
+    }
+    i = skip_space(s, i);
+  }
+  int passes = 1;
+  if (i < s.size() && upper(s[i]) == 'P') {
+    std::size_t v = i + 1;
+    if (v < s.size() && s[v] == '=') ++v;
+    ExpressionParser p(s, v, cx().line, lookup);
+    NcValue count = p.parse();
+    if (count.type == NcValue::Type::kString || count.number < 1 || count.number > 9999 ||
+        count.number != std::trunc(count.number))
+      throw InputError(cx().line, static_cast<int>(i) + 1,
+                       "P (the number of runs) must be a whole number from 1 to 9999");
+    passes = static_cast<int>(count.number);
+    i = skip_space(s, p.position());
+  }
+  if (i < s.size() && s[i] != ';')
+    throw InputError(cx().line, static_cast<int>(i) + 1, "a subprogram call takes its block alone");
+  if (stack_.size() >= kMaxLevels)
+    throw InputError(
+        cx().line, static_cast<int>(word) + 1,
+        fmt::format("more than {} program levels (subprograms calling subprograms: NC-PARAM-SUB-2)", kMaxLevels));
+  control_flow_ = true;
+  Context c;
+  c.owned = std::make_unique<std::ifstream>(*file);
+  c.in = c.owned.get();
+  c.name = std::filesystem::path(*file).filename().string();
+  c.passes_left = passes - 1;
+  c.args = std::move(args);
+  c.arg_names = std::move(names);
+  stack_.push_back(std::move(c));
+  return true;
+}
+
+// NC-PARAM-SUB-2: PROC name(type par, VAR type par, …): the parameters become local variables,
+// given the call's values (left out: 0); a VAR parameter is written back to the caller's variable
+// when the subprogram returns.
+void Interpreter::procedure(std::string_view s, std::size_t i) {
+  std::size_t e = name_end(s, skip_space(s, i));
+  i = skip_space(s, e);
+  std::vector<std::tuple<std::string, NcValue::Type, bool>> params;
+  if (i < s.size() && s[i] == '(') {
+    ++i;
+    while (true) {
+      i = skip_space(s, i);
+      if (i < s.size() && s[i] == ')') {
+        ++i;
+        break;
+      }
+      std::size_t t = name_end(s, i);
+      std::string type = upper_text(s.substr(i, t - i));
+      bool by_ref = type == "VAR";
+      if (by_ref) {
+        i = skip_space(s, t);
+        t = name_end(s, i);
+        type = upper_text(s.substr(i, t - i));
+      }
+      NcValue::Type vt;
+      if (type == "REAL")
+        vt = NcValue::Type::kReal;
+      else if (type == "INT" || type == "CHAR")
+        vt = NcValue::Type::kInt;
+      else if (type == "BOOL")
+        vt = NcValue::Type::kBool;
+      else if (type == "STRING" || type == "AXIS")
+        vt = NcValue::Type::kString;
+      else
+        throw InputError(cx().line, static_cast<int>(i) + 1,
+                         fmt::format("'{}' is not a parameter type (REAL INT BOOL CHAR STRING AXIS)", type));
+      i = skip_space(s, t);
+      if (type == "STRING" && i < s.size() && s[i] == '[') {
+        std::size_t c = s.find(']', i);
+        if (c == std::string_view::npos) throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
+        i = skip_space(s, c + 1);
+      }
+      std::size_t ne = name_end(s, i);
+      std::string name = upper_text(s.substr(i, ne - i));
+      if (name.size() < 2)
+        throw InputError(cx().line, static_cast<int>(i) + 1, "a parameter name of at least two characters is expected");
+      params.emplace_back(name, vt, by_ref);
+      i = skip_space(s, ne);
+      if (i < s.size() && s[i] == '[')
+        throw InputError(cx().line, static_cast<int>(i) + 1, "array parameters are not simulated yet");
+      if (i < s.size() && s[i] == ',') {
+        ++i;
+        continue;
+      }
+      if (i < s.size() && s[i] == ')') {
+        ++i;
+        break;
+      }
+      throw InputError(cx().line, static_cast<int>(i) + 1, "',' or ')' expected in the parameter list");
+    }
+  }
+  i = skip_space(s, i);
+  while (i < s.size() && s[i] != ';') {
+    std::size_t w = name_end(s, i);
+    std::string word = upper_text(s.substr(i, w - i));
+    if (word == "SAVE")
+      throw InputError(cx().line, static_cast<int>(i) + 1,
+                       "PROC … SAVE (restoring the caller's modal state) is not simulated yet");
+    if (word != "DISPLOF" && word != "DISPLON" && word != "SBLOF" && word != "SBLON" && word != "ACTBLOCNO")
+      throw InputError(
+          cx().line, static_cast<int>(i) + 1,
+          fmt::format("unexpected '{}' after the parameters of PROC", word.empty() ? std::string(1, s[i]) : word));
+    i = skip_space(s, w);
+  }
+  if (cx().args.size() > params.size())
+    throw InputError(cx().line, 1,
+                     fmt::format("{} arguments given, the PROC has {} parameters", cx().args.size(), params.size()));
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    auto& [name, type, by_ref] = params[k];
+    Variable v;
+    v.type = type;
+    v.values.assign(1, type == NcValue::Type::kString ? NcValue::string("") : NcValue{type, 0, {}});
+    cx().variables[name] = v;
+    if (k < cx().args.size() && cx().args[k]) store(cx().variables[name], 0, *cx().args[k], 0);
+    if (by_ref && stack_.size() > 1) {  // run on its own, the main program: nothing to write back
+      if (k >= cx().arg_names.size() || cx().arg_names[k].empty())
+        throw InputError(cx().line, 1, fmt::format("the VAR parameter {} needs a variable as its argument", name));
+      cx().by_reference.emplace_back(name, cx().arg_names[k]);
+    }
+  }
+}
+
+void Interpreter::leave_subprogram() {
+  Context& c = cx();
+  // VAR parameters: the caller's variables take the values.
+  std::vector<std::pair<std::string, NcValue>> results;
+  for (const auto& [local, caller] : c.by_reference) results.emplace_back(caller, c.variables[local].values[0]);
+  bool again = c.passes_left > 0;
+  if (again) {  // P: run it again from its start, with the same arguments
+    --c.passes_left;
+    if (++backward_jumps_ > limits_.max_backward_jumps) jump_back(Frame{Frame::Kind::kLoop, 0, 0, {}, 0});
+    seek(c.start_offset, 0);
+    c.frames.clear(), c.open_ifs.clear(), c.variables.clear(), c.by_reference.clear(), c.labels_seen.clear();
+  } else {
+    stack_.pop_back();
+  }
+  Context& caller = again ? stack_[stack_.size() - 2] : cx();
+  for (auto& [name, value] : results) {
+    if (is_r_parameter(name) && r_number(name) < kRParameters) {
+      r_[r_number(name)] = value.number;
+    } else if (auto it = caller.variables.find(name); it != caller.variables.end() && it->second.dims.empty()) {
+      store(it->second, 0, value, 0);
+    }
+  }
 }
 
 void Interpreter::run_line(const std::string& s, std::string& out) {
@@ -275,7 +543,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
   if (label.empty()) {
     out.append(s, 0, i);
   } else {  // the label is the interpreter's: the reader gets the block skip and number only
-    labels_seen_[label].push_back({line_start_, line_ - 1});
+    cx().labels_seen[label].push_back({cx().line_start, cx().line - 1});
     control_flow_ = true;
     std::size_t k = skip_space(s, 0);
     if (k < s.size() && s[k] == '/') {
@@ -287,11 +555,19 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
   }
   std::size_t rest;
   std::string first = first_word(s, rest);
+  if (first == "CASE" || first == "REPEATB") {  // not simulated yet: the lexer names it (NC-ERR-3)
+    out = s;
+    return;
+  }
   if (statement(first, s, rest)) {  // a statement line yields no block
     out.clear();
     return;
   }
-  InterpreterLookup lookup(*this, line_);
+  if (call(s, i)) {
+    out.clear();
+    return;
+  }
+  InterpreterLookup lookup(*this, cx().line);
   bool words = false;
   while (true) {
     std::size_t space = i;  // the text's own spacing is kept: the lexer's columns stay close
@@ -325,7 +601,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       std::size_t te = name_end(s, t);
       std::string target = upper_text(s.substr(t, te - t));
       if (target.empty())
-        throw InputError(line_, static_cast<int>(t) + 1, fmt::format("{} needs a label or block number", n));
+        throw InputError(cx().line, static_cast<int>(t) + 1, fmt::format("{} needs a label or block number", n));
       std::string keep = out;
       jump(target, n != "GOTOB", n != "GOTOF", n != "GOTOC", start);
       out = words ? keep : std::string();
@@ -335,13 +611,13 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     std::size_t k = after;
     bool indexed = k < s.size() && s[k] == '[';
     bool r_indexed = indexed && n == "R";
-    bool variable = is_r_parameter(n) || r_indexed || variables_.count(n) > 0;
+    bool variable = is_r_parameter(n) || r_indexed || cx().variables.count(n) > 0;
     bool tool_data = n.rfind("$TC_", 0) == 0;  // other system variables go to the lexer as written
     if (indexed && (variable || tool_data)) {
       // Indices as expressions: R[expr], A[i,j], $TC_DP6[t,d].
       std::size_t e = k + 1;
       while (true) {
-        ExpressionParser p(s, e, line_, lookup);
+        ExpressionParser p(s, e, cx().line, lookup);
         indices.push_back(p.parse());
         e = skip_space(s, p.position());
         if (e < s.size() && s[e] == ',') {
@@ -352,7 +628,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
           ++e;
           break;
         }
-        throw InputError(line_, static_cast<int>(e) + 1, "']' or ',' expected");
+        throw InputError(cx().line, static_cast<int>(e) + 1, "']' or ',' expected");
       }
       k = skip_space(s, e);
     }
@@ -360,7 +636,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     if (n[0] == '$' && !tool_data) assignment = false;
     if (!assignment) {
       if (variable && !indexed && !is_r_parameter(n))
-        throw InputError(line_, static_cast<int>(start) + 1,
+        throw InputError(cx().line, static_cast<int>(start) + 1,
                          fmt::format("'{}' is a variable: a value is assigned with '='", n));
       // A plain word: copied as written up to the next word.
       std::size_t e = j;
@@ -386,21 +662,21 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     }
     std::size_t v = skip_space(s, k + 1);
     if (variable) {  // NC-PARAM-VAR-*: an assignment, run now; the reader never sees it
-      ExpressionParser p(s, v, line_, lookup);
+      ExpressionParser p(s, v, cx().line, lookup);
       NcValue value = p.parse();
       if (r_indexed) {
         r_[lookup.r_index(indices[0], start)] = value.type == NcValue::Type::kString ? 0 : value.number;
         if (value.type == NcValue::Type::kString)
-          throw InputError(line_, static_cast<int>(v) + 1, "an R parameter holds a number, not a string");
+          throw InputError(cx().line, static_cast<int>(v) + 1, "an R parameter holds a number, not a string");
       } else if (is_r_parameter(n)) {
         int r = r_number(n);
         if (r >= kRParameters)
-          throw InputError(line_, static_cast<int>(start) + 1, fmt::format("R parameter {} does not exist", n));
+          throw InputError(cx().line, static_cast<int>(start) + 1, fmt::format("R parameter {} does not exist", n));
         if (value.type == NcValue::Type::kString)
-          throw InputError(line_, static_cast<int>(v) + 1, "an R parameter holds a number, not a string");
+          throw InputError(cx().line, static_cast<int>(v) + 1, "an R parameter holds a number, not a string");
         r_[r] = value.number;
       } else {
-        Variable& var = variables_[n];
+        Variable& var = cx().variables[n];
         store(var, lookup.offset(n, var, indices, start), value, start);
       }
       i = p.position();
@@ -412,7 +688,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     out.append(s, space, j - space);
     if (!indices.empty()) {
       out += '[';
-      for (std::size_t q = 0; q < indices.size(); ++q) out += (q ? "," : "") + grid_text(indices[q], line_, start);
+      for (std::size_t q = 0; q < indices.size(); ++q) out += (q ? "," : "") + grid_text(indices[q], cx().line, start);
       out += ']';
     }
     out += '=';
@@ -436,15 +712,15 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       out += wrapper.empty() ? value : wrapper + "(" + value + ")";
       end = wrapper.empty() ? *lit : skip_space(s, *lit) + 1;
     } else {
-      ExpressionParser p(s, v, line_, lookup);
+      ExpressionParser p(s, v, cx().line, lookup);
       NcValue value = p.parse();
       end = p.position();
       if (!wrapper.empty()) {
         end = skip_space(s, end);
-        if (end >= s.size() || s[end] != ')') throw InputError(line_, static_cast<int>(end) + 1, "')' expected");
+        if (end >= s.size() || s[end] != ')') throw InputError(cx().line, static_cast<int>(end) + 1, "')' expected");
         ++end;
       }
-      std::string t = grid_text(value, line_, v);
+      std::string t = grid_text(value, cx().line, v);
       out += wrapper.empty() ? t : wrapper + "(" + t + ")";
     }
     i = end;
@@ -457,7 +733,7 @@ void Interpreter::store(Variable& var, std::size_t at_offset, const NcValue& val
   using T = NcValue::Type;
   bool text = var.type == T::kString;
   if (text != (value.type == T::kString))
-    throw InputError(line_, static_cast<int>(at) + 1,
+    throw InputError(cx().line, static_cast<int>(at) + 1,
                      text ? "a STRING variable is assigned a number" : "a number variable is assigned a string");
   if (var.type == T::kInt) v = NcValue::integer(static_cast<double>(std::llround(value.number)));  // NC-PARAM-TYPE-1
   if (var.type == T::kBool) v = NcValue::boolean(value.number != 0);
@@ -466,19 +742,19 @@ void Interpreter::store(Variable& var, std::size_t at_offset, const NcValue& val
 }
 
 bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t rest) {
-  InterpreterLookup lookup(*this, line_);
+  InterpreterLookup lookup(*this, cx().line);
   auto condition = [&](std::size_t from, std::size_t& end) {
-    ExpressionParser p(s, from, line_, lookup);
+    ExpressionParser p(s, from, cx().line, lookup);
     NcValue v = p.parse();
     end = skip_space(s, p.position());
     if (v.type == NcValue::Type::kString)
-      throw InputError(line_, static_cast<int>(from) + 1, "a condition must be a number or BOOL, not a string");
+      throw InputError(cx().line, static_cast<int>(from) + 1, "a condition must be a number or BOOL, not a string");
     return v.number != 0;
   };
   auto nothing_after = [&](std::size_t e, std::string_view what) {
     e = skip_space(s, e);
     if (e < s.size() && s[e] != ';')
-      throw InputError(line_, static_cast<int>(e) + 1, fmt::format("unexpected text after {}", what));
+      throw InputError(cx().line, static_cast<int>(e) + 1, fmt::format("unexpected text after {}", what));
   };
   static constexpr std::string_view kStatements[] = {"IF",     "ELSE", "ENDIF",   "WHILE",  "ENDWHILE", "FOR",
                                                      "ENDFOR", "LOOP", "ENDLOOP", "REPEAT", "UNTIL"};
@@ -494,27 +770,28 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
       std::size_t te = name_end(s, t);
       std::string target = upper_text(s.substr(t, te - t));
       if (target.empty())
-        throw InputError(line_, static_cast<int>(t) + 1, fmt::format("{} needs a label or block number", jump_word));
+        throw InputError(cx().line, static_cast<int>(t) + 1,
+                         fmt::format("{} needs a label or block number", jump_word));
       nothing_after(te, "the jump target");
       if (c) jump(target, jump_word != "GOTOB", jump_word != "GOTOF", jump_word != "GOTOC", end);
       return true;
     }
     nothing_after(end, "the condition of IF");
     // NC-PARAM-FLOW-2: IF … ELSE … ENDIF; the branch that runs ends at its ENDIF.
-    if (c || skip_block("IF", "ENDIF", true) == "ELSE") open_ifs_.push_back(line_);
+    if (c || skip_block("IF", "ENDIF", true) == "ELSE") cx().open_ifs.push_back(cx().line);
     return true;
   }
   if (k == "ELSE") {  // reached while running the IF branch: skip the ELSE branch
     nothing_after(rest, "ELSE");
-    if (open_ifs_.empty()) throw InputError(line_, 1, "ELSE without its IF");
-    open_ifs_.pop_back();
+    if (cx().open_ifs.empty()) throw InputError(cx().line, 1, "ELSE without its IF");
+    cx().open_ifs.pop_back();
     skip_block("IF", "ENDIF", false);
     return true;
   }
   if (k == "ENDIF") {
     nothing_after(rest, "ENDIF");
-    if (open_ifs_.empty()) throw InputError(line_, 1, "ENDIF without its IF");
-    open_ifs_.pop_back();
+    if (cx().open_ifs.empty()) throw InputError(cx().line, 1, "ENDIF without its IF");
+    cx().open_ifs.pop_back();
     return true;
   }
   if (k == "WHILE") {  // NC-PARAM-FLOW-3
@@ -522,20 +799,20 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     bool c = condition(rest, end);
     nothing_after(end, "the condition of WHILE");
     if (c)
-      frames_.push_back({Frame::Kind::kWhile, line_start_, line_ - 1, {}, 0});
+      cx().frames.push_back({Frame::Kind::kWhile, cx().line_start, cx().line - 1, {}, 0});
     else
       skip_block("WHILE", "ENDWHILE", false);
     return true;
   }
   auto close = [&](Frame::Kind kind, std::string_view word) -> Frame& {
     nothing_after(rest, word);
-    if (frames_.empty() || frames_.back().kind != kind)
-      throw InputError(line_, 1, fmt::format("{} without its opening statement", word));
-    return frames_.back();
+    if (cx().frames.empty() || cx().frames.back().kind != kind)
+      throw InputError(cx().line, 1, fmt::format("{} without its opening statement", word));
+    return cx().frames.back();
   };
   if (k == "ENDWHILE") {
     Frame f = close(Frame::Kind::kWhile, "ENDWHILE");
-    frames_.pop_back();
+    cx().frames.pop_back();
     jump_back(f);  // the WHILE line decides again
     return true;
   }
@@ -545,13 +822,13 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     std::string var = upper_text(s.substr(v, ve - v));
     std::size_t eq = skip_space(s, ve);
     if (var.empty() || eq >= s.size() || s[eq] != '=')
-      throw InputError(line_, static_cast<int>(v) + 1, "FOR needs 'variable = start TO end'");
-    ExpressionParser p(s, eq + 1, line_, lookup);
+      throw InputError(cx().line, static_cast<int>(v) + 1, "FOR needs 'variable = start TO end'");
+    ExpressionParser p(s, eq + 1, cx().line, lookup);
     NcValue first = p.parse();
     std::size_t to = skip_space(s, p.position());
     if (upper_text(s.substr(to, 2)) != "TO" || (to + 2 < s.size() && is_name_char(s[to + 2])))
-      throw InputError(line_, static_cast<int>(to) + 1, "FOR needs 'TO end'");
-    ExpressionParser q(s, to + 2, line_, lookup);
+      throw InputError(cx().line, static_cast<int>(to) + 1, "FOR needs 'TO end'");
+    ExpressionParser q(s, to + 2, cx().line, lookup);
     NcValue last = q.parse();
     nothing_after(q.position(), "the end value of FOR");
     assign_counter(var, first.number, v);
@@ -559,7 +836,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
       skip_block("FOR", "ENDFOR", false);
       return true;
     }
-    frames_.push_back({Frame::Kind::kFor, offset_, line_, var, last.number});
+    cx().frames.push_back({Frame::Kind::kFor, cx().offset, cx().line, var, last.number});
     return true;
   }
   if (k == "ENDFOR") {
@@ -569,13 +846,13 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     if (next <= f.end) {
       jump_back(f);
     } else {
-      frames_.pop_back();
+      cx().frames.pop_back();
     }
     return true;
   }
   if (k == "LOOP") {  // NC-PARAM-FLOW-3
     nothing_after(rest, "LOOP");
-    frames_.push_back({Frame::Kind::kLoop, offset_, line_, {}, 0});
+    cx().frames.push_back({Frame::Kind::kLoop, cx().offset, cx().line, {}, 0});
     return true;
   }
   if (k == "ENDLOOP") {
@@ -586,26 +863,35 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
   if (k == "REPEAT") {
     std::size_t e = skip_space(s, rest);
     if (e < s.size() && s[e] != ';')
-      throw InputError(line_, static_cast<int>(e) + 1,
+      throw InputError(cx().line, static_cast<int>(e) + 1,
                        "REPEAT of a program section (REPEAT label P=n) is not simulated yet");
-    frames_.push_back({Frame::Kind::kRepeat, offset_, line_, {}, 0});
+    cx().frames.push_back({Frame::Kind::kRepeat, cx().offset, cx().line, {}, 0});
     return true;
   }
   if (k == "UNTIL") {
-    if (frames_.empty() || frames_.back().kind != Frame::Kind::kRepeat)
-      throw InputError(line_, 1, "UNTIL without its REPEAT");
+    if (cx().frames.empty() || cx().frames.back().kind != Frame::Kind::kRepeat)
+      throw InputError(cx().line, 1, "UNTIL without its REPEAT");
     std::size_t end;
     bool c = condition(rest, end);
     nothing_after(end, "the condition of UNTIL");
-    Frame f = frames_.back();
+    Frame f = cx().frames.back();
     if (c)
-      frames_.pop_back();
+      cx().frames.pop_back();
     else
       jump_back(f);
     return true;
   }
   if (k == "DEF") {
     define(s, rest);
+    return true;
+  }
+  if (k == "PROC") {
+    procedure(s, rest);
+    return true;
+  }
+  // NC-PARAM-SUB-2: RET, M17 (or M2/M30) end a subprogram; in the main program they stay words.
+  if (stack_.size() > 1 && (k == "RET" || k == "M17" || k == "M2" || k == "M30")) {
+    leave_subprogram();
     return true;
   }
   return false;
@@ -615,7 +901,7 @@ double Interpreter::counter(const std::string& name) {
   if (is_r_parameter(name) && r_number(name) < kRParameters) return r_[r_number(name)];
   Variable* v = find_variable(name);
   if (!v || !v->dims.empty() || v->type == NcValue::Type::kString)
-    throw InputError(line_, 1,
+    throw InputError(cx().line, 1,
                      fmt::format("the FOR counter '{}' must be an INT or REAL variable or an R parameter", name));
   return v->values[0].number;
 }
@@ -624,20 +910,20 @@ void Interpreter::assign_counter(const std::string& name, double value, std::siz
   if (is_r_parameter(name)) {
     int r = r_number(name);
     if (r >= kRParameters)
-      throw InputError(line_, static_cast<int>(at) + 1, fmt::format("R parameter {} does not exist", name));
+      throw InputError(cx().line, static_cast<int>(at) + 1, fmt::format("R parameter {} does not exist", name));
     r_[r] = value;
     return;
   }
   Variable* v = find_variable(name);
   if (!v || !v->dims.empty() || v->type == NcValue::Type::kString)
-    throw InputError(line_, static_cast<int>(at) + 1,
+    throw InputError(cx().line, static_cast<int>(at) + 1,
                      fmt::format("the FOR counter '{}' must be an INT or REAL variable or an R parameter", name));
   store(*v, 0, NcValue::real(value), at);
 }
 
 // NC-PARAM-VAR-2: DEF type name[dims][=value], …
 void Interpreter::define(std::string_view s, std::size_t i) {
-  InterpreterLookup lookup(*this, line_);
+  InterpreterLookup lookup(*this, cx().line);
   i = skip_space(s, i);
   std::size_t e = name_end(s, i);
   std::string type = upper_text(s.substr(i, e - i));
@@ -658,14 +944,14 @@ void Interpreter::define(std::string_view s, std::size_t i) {
   else if (type == "STRING" || type == "AXIS")
     t = NcValue::Type::kString;
   else if (type == "FRAME")
-    throw InputError(line_, static_cast<int>(i) + 1, "FRAME variables are not simulated yet");
+    throw InputError(cx().line, static_cast<int>(i) + 1, "FRAME variables are not simulated yet");
   else
-    throw InputError(line_, static_cast<int>(i) + 1,
+    throw InputError(cx().line, static_cast<int>(i) + 1,
                      fmt::format("'{}' is not a type (REAL INT BOOL CHAR STRING AXIS)", type));
   i = skip_space(s, e);
   if (type == "STRING" && i < s.size() && s[i] == '[') {  // STRING[length]
     std::size_t c = s.find(']', i);
-    if (c == std::string_view::npos) throw InputError(line_, static_cast<int>(i) + 1, "']' expected");
+    if (c == std::string_view::npos) throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
     i = skip_space(s, c + 1);
   }
   while (true) {
@@ -673,9 +959,9 @@ void Interpreter::define(std::string_view s, std::size_t i) {
     std::size_t n1 = name_end(s, i);
     std::string name = upper_text(s.substr(n0, n1 - n0));
     if (name.empty() || (!is_letter(name[0]) && name[0] != '_'))
-      throw InputError(line_, static_cast<int>(n0) + 1, "a variable name is expected");
+      throw InputError(cx().line, static_cast<int>(n0) + 1, "a variable name is expected");
     if (is_r_parameter(name) || name.size() < 2)
-      throw InputError(line_, static_cast<int>(n0) + 1,
+      throw InputError(cx().line, static_cast<int>(n0) + 1,
                        fmt::format("'{}' cannot be a variable name (an address or an R parameter)", name));
     Variable var;
     var.type = t;
@@ -683,10 +969,11 @@ void Interpreter::define(std::string_view s, std::size_t i) {
     if (i < s.size() && s[i] == '[') {
       ++i;
       while (true) {
-        ExpressionParser p(s, i, line_, lookup);
+        ExpressionParser p(s, i, cx().line, lookup);
         NcValue d = p.parse();
         if (d.type == NcValue::Type::kString || d.number < 1 || d.number > 1e6 || d.number != std::trunc(d.number))
-          throw InputError(line_, static_cast<int>(i) + 1, "an array size must be a whole number from 1 to 1000000");
+          throw InputError(cx().line, static_cast<int>(i) + 1,
+                           "an array size must be a whole number from 1 to 1000000");
         var.dims.push_back(static_cast<int>(d.number));
         i = skip_space(s, p.position());
         if (i < s.size() && s[i] == ',') {
@@ -697,35 +984,35 @@ void Interpreter::define(std::string_view s, std::size_t i) {
           ++i;
           break;
         }
-        throw InputError(line_, static_cast<int>(i) + 1, "']' or ',' expected");
+        throw InputError(cx().line, static_cast<int>(i) + 1, "']' or ',' expected");
       }
       i = skip_space(s, i);
     }
     std::size_t count = 1;
     for (int d : var.dims) count *= static_cast<std::size_t>(d);
     if (count > 1'000'000 || var.dims.size() > 3)
-      throw InputError(line_, static_cast<int>(n0) + 1,
+      throw InputError(cx().line, static_cast<int>(n0) + 1,
                        fmt::format("'{}' is too large: at most three indices and 1000000 elements", name));
     total_elements_ += count;
     if (total_elements_ > 4'000'000)
-      throw InputError(line_, static_cast<int>(n0) + 1, "the program's variables hold more than 4000000 values");
+      throw InputError(cx().line, static_cast<int>(n0) + 1, "the program's variables hold more than 4000000 values");
     NcValue zero = t == NcValue::Type::kString ? NcValue::string("") : NcValue{t, 0, {}};
     var.values.assign(count, zero);
-    variables_[name] = var;  // a second DEF of a name starts it again
-    Variable& v = variables_[name];
+    cx().variables[name] = var;  // a second DEF of a name starts it again
+    Variable& v = cx().variables[name];
     if (i < s.size() && s[i] == '=') {
       std::size_t at = skip_space(s, i + 1);
       std::size_t w = name_end(s, at);
       bool list = upper_text(s.substr(at, w - at)) == "SET" || (at < s.size() && s[at] == '(' && !v.dims.empty());
       if (!v.dims.empty() && list) {  // A[3]=SET(1,2,3) or =(1,2,3): from index 0 on
         std::size_t open = s[at] == '(' ? at : skip_space(s, w);
-        if (open >= s.size() || s[open] != '(') throw InputError(line_, static_cast<int>(open) + 1, "'(' expected");
+        if (open >= s.size() || s[open] != '(') throw InputError(cx().line, static_cast<int>(open) + 1, "'(' expected");
         std::size_t q = open + 1;
         for (std::size_t k = 0;; ++k) {
-          ExpressionParser p(s, q, line_, lookup);
+          ExpressionParser p(s, q, cx().line, lookup);
           NcValue x = p.parse();
           if (k >= v.values.size())
-            throw InputError(line_, static_cast<int>(q) + 1, fmt::format("more values than '{}' holds", name));
+            throw InputError(cx().line, static_cast<int>(q) + 1, fmt::format("more values than '{}' holds", name));
           store(v, k, x, q);
           q = skip_space(s, p.position());
           if (q < s.size() && s[q] == ',') {
@@ -736,7 +1023,7 @@ void Interpreter::define(std::string_view s, std::size_t i) {
             ++q;
             break;
           }
-          throw InputError(line_, static_cast<int>(q) + 1, "')' or ',' expected");
+          throw InputError(cx().line, static_cast<int>(q) + 1, "')' or ',' expected");
         }
         i = skip_space(s, q);
       } else if (type == "AXIS" && at < s.size() && is_letter(s[at])) {  // an axis name: X, Y, Z …
@@ -744,7 +1031,7 @@ void Interpreter::define(std::string_view s, std::size_t i) {
           v.values[k] = NcValue::string(upper_text(s.substr(at, w - at)));
         i = skip_space(s, w);
       } else {
-        ExpressionParser p(s, at, line_, lookup);
+        ExpressionParser p(s, at, cx().line, lookup);
         NcValue x = p.parse();
         for (std::size_t k = 0; k < v.values.size(); ++k) store(v, k, x, at);
         i = skip_space(s, p.position());
@@ -755,7 +1042,7 @@ void Interpreter::define(std::string_view s, std::size_t i) {
       continue;
     }
     if (i < s.size() && s[i] != ';')
-      throw InputError(line_, static_cast<int>(i) + 1, "',' or the end of the DEF line expected");
+      throw InputError(cx().line, static_cast<int>(i) + 1, "',' or the end of the DEF line expected");
     return;
   }
 }
@@ -763,7 +1050,7 @@ void Interpreter::define(std::string_view s, std::size_t i) {
 void Interpreter::jump_back(const Frame& f) {
   // NC-PARAM-FLOW-6: a program that keeps jumping back is stopped.
   if (++backward_jumps_ > limits_.max_backward_jumps)
-    throw InputError(line_, 1,
+    throw InputError(cx().line, 1,
                      fmt::format("the program runs away: more than {} loop passes or backward jumps "
                                  "(NC-PARAM-FLOW-6; raise the limit with --max-loops)",
                                  limits_.max_backward_jumps));
@@ -779,8 +1066,8 @@ bool Interpreter::defines(std::string_view text, std::string_view target) {
 
 void Interpreter::jump(std::string_view target, bool forward, bool backward, bool must_exist, std::size_t at) {
   control_flow_ = true;
-  int from_line = line_;
-  std::streamoff from = offset_;
+  int from_line = cx().line;
+  std::streamoff from = cx().offset;
   if (forward && find_forward(target)) return;
   if (backward) {
     if (forward) seek(from, from_line);
@@ -800,12 +1087,12 @@ void Interpreter::jump(std::string_view target, bool forward, bool backward, boo
 bool Interpreter::find_forward(std::string_view target) {
   std::string text;
   while (true) {
-    std::streamoff start = offset_;
-    int line = line_;
+    std::streamoff start = cx().offset;
+    int line = cx().line;
     if (!getline(text)) return false;
     std::string label;
     block_prefix(text, nullptr, &label);
-    if (!label.empty()) labels_seen_[label].push_back({start, line});
+    if (!label.empty()) cx().labels_seen[label].push_back({start, line});
     if (defines(text, target)) {
       seek(start, line);
       return true;
@@ -819,8 +1106,8 @@ bool Interpreter::find_backward(std::string_view target, int before_line) {
     Frame f{Frame::Kind::kLoop, 0, 0, {}, 0};
     jump_back(f);  // throws
   }
-  auto it = labels_seen_.find(std::string(target));
-  if (it != labels_seen_.end()) {
+  auto it = cx().labels_seen.find(std::string(target));
+  if (it != cx().labels_seen.end()) {
     const std::pair<std::streamoff, int>* best = nullptr;
     for (const auto& p : it->second)
       if (p.second < before_line && (!best || p.second > best->second)) best = &p;
@@ -830,14 +1117,14 @@ bool Interpreter::find_backward(std::string_view target, int before_line) {
     }
   }
   // A block number (or a label not seen): read the program again from its start.
-  seek(start_offset_, 0);
+  seek(cx().start_offset, 0);
   std::string text;
   std::optional<std::pair<std::streamoff, int>> found;
-  while (line_ < before_line) {
-    std::streamoff start = offset_;
-    int line = line_;
+  while (cx().line < before_line) {
+    std::streamoff start = cx().offset;
+    int line = cx().line;
     if (!getline(text)) break;
-    if (line_ < before_line && defines(text, target)) found = {start, line};
+    if (cx().line < before_line && defines(text, target)) found = {start, line};
   }
   if (!found) return false;
   seek(found->first, found->second);
@@ -846,16 +1133,16 @@ bool Interpreter::find_backward(std::string_view target, int before_line) {
 
 // Skips to the end of a structure: nested ones counted by their opening word.
 std::string Interpreter::skip_block(std::string_view open, std::string_view end, bool or_else) {
-  int start_line = line_;
+  int start_line = cx().line;
   int depth = 0;
   std::string text;
   while (true) {
-    std::streamoff start = offset_;
-    int line = line_;
+    std::streamoff start = cx().offset;
+    int line = cx().line;
     if (!getline(text)) break;
     std::string label;
     block_prefix(text, nullptr, &label);
-    if (!label.empty()) labels_seen_[label].push_back({start, line});
+    if (!label.empty()) cx().labels_seen[label].push_back({start, line});
     std::size_t rest;
     std::string w = first_word(text, rest);
     if (w == open && !(open == "IF" && has_jump(text))) {

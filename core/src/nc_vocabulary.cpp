@@ -12,12 +12,11 @@ namespace cutcom {
 
 namespace {
 
-constexpr std::string_view kActionKeywords[] = {
-    "SOFT",   "BRISK",   "DRIVE", "FFWON", "FFWOF",   "CFC",   "CFTCP", "CFIN", "COMPON",
-    "COMPCAD", "COMPCURV", "COMPOF", "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA"};
+constexpr std::string_view kActionKeywords[] = {"SOFT",    "BRISK", "DRIVE",  "FFWON",   "FFWOF",    "CFC",
+                                                "CFTCP",   "CFIN",  "COMPON", "COMPCAD", "COMPCURV", "COMPOF",
+                                                "TRAFOOF", "UPATH", "SPATH",  "CUT2D",   "SOFTA",    "BRISKA"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA"};
-constexpr std::string_view kActionCalls[] = {"MSG",       "WORKPIECE", "GROUP_BEGIN",
-                                                          "GROUP_END", "CYCLE832",  "SETMS"};
+constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS"};
 
 // Known SINUMERIK words cutcom does not simulate, and why (the message names the family).
 struct Unsupported {
@@ -87,8 +86,8 @@ NamedWord classify_named_word(std::string_view n) {
   if (n == "RET") return NamedWord::kSubprogramEnd;
   // NC-CYCLE-1: CYCLEnn, POCKETn, SLOTn, LONGHOLE, HOLESn, ShopMill/ShopTurn E_…/F_… and SUPA.
   if (n == "SUPA" || n == "LONGHOLE") return NamedWord::kCycle;
-  for (std::string_view p : {std::string_view("CYCLE"), std::string_view("POCKET"), std::string_view("SLOT"),
-                             std::string_view("HOLES")})
+  for (std::string_view p :
+       {std::string_view("CYCLE"), std::string_view("POCKET"), std::string_view("SLOT"), std::string_view("HOLES")})
     if (n.substr(0, p.size()) == p && all_digits(n.substr(p.size()))) return NamedWord::kCycle;
   if ((n.substr(0, 2) == "E_" || n.substr(0, 2) == "F_") && n.size() > 2) return NamedWord::kCycle;
   for (const Unsupported& u : kUnsupported)
@@ -111,8 +110,8 @@ std::string unsupported_message(std::string_view word, std::string_view what) {
 
 std::string unknown_message(std::string_view word) {
   return fmt::format(
-      "'{}' is not a SINUMERIK word cutcom knows (a user variable or subprogram name? those are not supported "
-      "yet)",
+      "'{}' is not a SINUMERIK word cutcom knows (a variable must be defined with DEF first; a subprogram "
+      "is looked for as NAME.SPF in the program's folder and --search-path)",
       word);
 }
 

@@ -41,23 +41,42 @@ bool ProgramReader::next(Block& out) {
 }
 
 bool ProgramReader::read_block(Block& out) {
-  while (interpreter_.next(text_, line_)) {
-    parse_block_words(text_, line_, out.words);
-    const BlockWords& w = out.words;
-    bool empty = w.word_count == 0;
-    if (empty) continue;  // blank, comment-only, header or label-only line
-    if (end_line_ != 0 && interpreter_.uses_control_flow()) return false;  // M30 ends the run (NC-PARAM-FLOW-1)
-    if (end_line_ != 0)                                                    // NC-END-1: nothing may follow M2/M30
-      throw InputError(line_, 1, fmt::format("block after the end of the program (M2/M30 in line {})", end_line_));
-    out.notice.clear();
-    out.notice_clause = {};
-    out.insert = {};
-    resolve(out);
-    if (w.program_end) end_line_ = line_;
-    return true;
+  while (!ended_ && interpreter_.next(text_, line_)) {
+    if (!interpreter_.in_subprogram()) {
+      if (take_block(out, line_)) return true;
+      continue;
+    }
+    // NC-PARAM-SUB-3: a subprogram's block is read and checked at its own line, so that an error
+    // names it; it then carries the main program's calling line, as everything it produces.
+    try {
+      bool taken = take_block(out, interpreter_.current_line());
+      out.words.line = line_;
+      if (taken) return true;
+      if (ended_) return false;
+    } catch (const InputError& e) {
+      throw interpreter_.where(e);
+    }
   }
   if (in_.bad()) throw std::runtime_error("read error");
   return false;
+}
+
+bool ProgramReader::take_block(Block& out, int line) {
+  parse_block_words(text_, line, out.words);
+  const BlockWords& w = out.words;
+  if (w.word_count == 0) return false;  // blank, comment-only, header or label-only line
+  if (end_line_ != 0 && interpreter_.uses_control_flow()) {
+    ended_ = true;  // M30 ends the run (NC-PARAM-FLOW-1)
+    return false;
+  }
+  if (end_line_ != 0)  // NC-END-1: nothing may follow M2/M30
+    throw InputError(line, 1, fmt::format("block after the end of the program (M2/M30 in line {})", end_line_));
+  out.notice.clear();
+  out.notice_clause = {};
+  out.insert = {};
+  resolve(out);
+  if (w.program_end) end_line_ = line_;
+  return true;
 }
 
 // NC-PARAM-SYS-1: what a program may read of the machine's state, as of the blocks read so far.

@@ -112,8 +112,8 @@ class WordLexer {
     if (!r.value) {
       if (text.empty() || text == "+" || text == "-") {
         if (is_letter(peek()) || peek() == '$' || peek() == '(')
-          fail(fmt::format("{} needs a number: expressions and variables ('{}') are not supported yet", what,
-                           rest_of_word()),
+          fail(fmt::format("{} needs a number: a variable or an expression ('{}') is written with '=' ({}=…)", what,
+                           rest_of_word(), what),
                start);
         fail(fmt::format("{} needs a number", what), start);
       }
@@ -129,7 +129,7 @@ class WordLexer {
     if (!at_end() && (is_digit(peek()) || peek() == '.' || peek() == '_'))
       fail(fmt::format("{}: malformed number", what));
     if (!at_end() && (peek() == '+' || peek() == '-' || peek() == '*' || peek() == '/'))
-      fail(fmt::format("{}: expressions are not supported yet", what));
+      fail(fmt::format("{}: an expression is written with '=' ({}=…)", what, what));
     return *r.value;
   }
   std::string rest_of_word() const {
@@ -261,7 +261,7 @@ class WordLexer {
       std::size_t at = i_;
       std::string fn = letters();
       if (!is_action_value_wrapper(fn))
-        fail(fmt::format("{} needs a number: expressions and variables ('{}') are not supported yet", what, fn), at);
+        fail(fmt::format("{} needs a number: a variable or an expression ('{}') is written with '=' ({}=…)", what, fn, what), at);
       skip_space();
       if (peek() != '(') fail(fmt::format("{}: '(' expected after {}", what, fn));
       ++i_;

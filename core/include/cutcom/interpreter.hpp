@@ -8,10 +8,13 @@
 #include <cstdint>
 #include <istream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "cutcom/input_error.hpp"
 
 namespace cutcom {
 
@@ -51,6 +54,12 @@ class Interpreter {
   bool next(std::string& text, int& line);
 
   void set_limits(InterpreterLimits limits) { limits_ = limits; }
+  // NC-PARAM-SUB-1: where subprograms are looked for (the program's folder first).
+  void set_search_path(std::vector<std::string> dirs) { search_path_ = std::move(dirs); }
+  bool in_subprogram() const { return stack_.size() > 1; }
+  int current_line() const { return cx().line; }  // in the file being read
+  // An error found in a subprogram's block, named with its file, line and calls (NC-PARAM-SUB-3).
+  InputError where(const InputError& e) const;
   // A label, a jump or a structure was met: blocks after M2/M30 are then jump targets, not an error.
   bool uses_control_flow() const { return control_flow_; }
 
@@ -94,18 +103,38 @@ class Interpreter {
 
   Variable* find_variable(const std::string& name);
 
-  std::istream& in_;
+  // One program level: the main program or a subprogram being run (NC-PARAM-SUB-*).
+  struct Context {
+    std::unique_ptr<std::istream> owned;  // a subprogram's file
+    std::istream* in = nullptr;
+    std::string name;                             // the file, for messages ("" for the main program)
+    std::streamoff offset = 0, start_offset = 0;  // of the next line, of the text's start
+    std::streamoff line_start = 0;                // of the line just read
+    int line = 0;
+    std::vector<Frame> frames;
+    std::vector<int> open_ifs;  // lines of the IF structures whose running branch has not ended
+    std::map<std::string, std::vector<std::pair<std::streamoff, int>>> labels_seen;  // label: (start, lines before)
+    std::map<std::string, Variable> variables;                                       // local to this level
+    int passes_left = 0;  // P: runs of the subprogram still to come after this one
+    std::vector<std::pair<std::string, std::string>> by_reference;  // VAR parameter: (local, caller's)
+    std::vector<std::optional<NcValue>> args;                       // the call's arguments (empty: left out)
+    std::vector<std::string> arg_names;                             // an argument that is a variable, by name
+  };
+  static constexpr std::size_t kMaxLevels = 16;  // the main program and 15 subprogram levels
+  bool call(std::string_view line, std::size_t word);
+  void procedure(std::string_view line, std::size_t at);
+  void leave_subprogram();
+  std::optional<std::string> find_subprogram(const std::string& name) const;
+
+  Context& cx() { return stack_.back(); }
+  const Context& cx() const { return stack_.back(); }
+
   SystemValues* system_;
   InterpreterLimits limits_;
   std::string raw_;
-  int line_ = 0;
-  std::streamoff offset_ = 0, start_offset_ = 0;  // of the next line, of the text's start
-  std::streamoff line_start_ = 0;                 // of the line just read
-  std::map<std::string, Variable> variables_;
-  std::map<int, double> r_;  // R parameters
-  std::vector<Frame> frames_;
-  std::vector<int> open_ifs_;  // lines of the IF structures whose running branch has not ended
-  std::map<std::string, std::vector<std::pair<std::streamoff, int>>> labels_seen_;  // label: (start, lines before)
+  std::vector<Context> stack_;
+  std::map<int, double> r_;  // R parameters: global
+  std::vector<std::string> search_path_;
   std::int64_t backward_jumps_ = 0;
   std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded
   bool control_flow_ = false;

@@ -15,22 +15,10 @@
 #include <utility>
 
 #include "cutcom/block.hpp"
+#include "cutcom/input_error.hpp"
 #include "cutcom/interpreter.hpp"
 
 namespace cutcom {
-
-// Bad input: names the 1-based line and column and what is wrong. Exit status 2 in the CLI.
-class InputError : public std::runtime_error {
- public:
-  InputError(int line, int column, const std::string& what);
-  int line() const { return line_; }
-  int column() const { return column_; }
-  const std::string& detail() const { return detail_; }
-
- private:
-  int line_, column_;
-  std::string detail_;
-};
 
 // Parses the words of one line (NC-LEX-*). Throws InputError.
 void parse_block_words(std::string_view text, int line, BlockWords& out);
@@ -96,10 +84,13 @@ class ProgramReader : private SystemValues {
   const std::string& source_name() const { return source_; }
   // NC-PARAM-FLOW-6: the runaway limit of the interpreter layer.
   void set_limits(InterpreterLimits limits) { interpreter_.set_limits(limits); }
+  // NC-PARAM-SUB-1: the folders subprograms are looked for in, the program's own first.
+  void set_search_path(std::vector<std::string> dirs) { interpreter_.set_search_path(std::move(dirs)); }
   void set_source_name(std::string name) { source_ = std::move(name); }
 
  private:
   bool read_block(Block& out);
+  bool take_block(Block& out, int line);  // the interpreter's line as a block; false: none
   // NC-PARAM-SYS-1: the system variables a program may read.
   std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) override;
   void resolve(Block& b);
@@ -132,6 +123,7 @@ class ProgramReader : private SystemValues {
   int line_ = 0;
   int index_ = 0;
   int end_line_ = 0;  // line of M2/M30, 0 before it
+  bool ended_ = false;  // M2/M30 ended a program with control flow: nothing more is read
   ModalState state_;
   ModalState effective_;  // the last block's state as the engines see it (NC-FRAME-3)
   Point3 position_;
