@@ -170,10 +170,14 @@ TEST(Parametric, LoopRepeatAndLabelsAfterTheEnd) {
   expect_same_path(p.ref, q.ref);
 }
 
-int error_line(const std::string& text, const std::string& words, InterpreterLimits limits = {}) {
+// The line of the error reading `text` gives (its message must hold `words`); subprograms are
+// looked for in `dir`.
+int error_line(const std::string& text, const std::string& words, InterpreterLimits limits = {},
+               const std::string& dir = {}) {
   std::istringstream in(text);
   ProgramReader reader(in);
   reader.set_limits(limits);
+  if (!dir.empty()) reader.set_search_path({dir});
   Block b;
   try {
     while (reader.next(b)) {
@@ -253,19 +257,7 @@ TEST(Parametric, SubprogramsGiveThePlainProgramsPath) {
 }
 
 int sub_error(const std::string& main, const std::string& dir, const std::string& words) {
-  std::istringstream in(main);
-  ProgramReader reader(in);
-  reader.set_search_path({dir});
-  Block b;
-  try {
-    while (reader.next(b)) {
-    }
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    return e.line();
-  }
-  ADD_FAILURE() << "no error in:\n" << main;
-  return 0;
+  return error_line(main, words, {}, dir);
 }
 
 // covers: NC-PARAM-SUB-3 NC-PARAM-SUB-2 NC-PARAM-SUB-1 NC-PARAM-ERR-1

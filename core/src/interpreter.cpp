@@ -616,20 +616,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     if (indexed && (variable || tool_data)) {
       // Indices as expressions: R[expr], A[i,j], $TC_DP6[t,d].
       std::size_t e = k + 1;
-      while (true) {
-        ExpressionParser p(s, e, cx().line, lookup);
-        indices.push_back(p.parse());
-        e = skip_space(s, p.position());
-        if (e < s.size() && s[e] == ',') {
-          ++e;
-          continue;
-        }
-        if (e < s.size() && s[e] == ']') {
-          ++e;
-          break;
-        }
-        throw InputError(cx().line, static_cast<int>(e) + 1, "']' or ',' expected");
-      }
+      indices = values(s, e, ']', lookup);
       k = skip_space(s, e);
     }
     bool assignment = k < s.size() && s[k] == '=' && !(k + 1 < s.size() && s[k + 1] == '=');
@@ -726,6 +713,25 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     i = end;
   }
   if (!words) out.clear();
+}
+
+// expr, expr, … up to `close`, from i (just after the opening bracket); i ends after `close`.
+std::vector<NcValue> Interpreter::values(std::string_view s, std::size_t& i, char close, InterpreterLookup& lookup) {
+  std::vector<NcValue> out;
+  while (true) {
+    ExpressionParser p(s, i, cx().line, lookup);
+    out.push_back(p.parse());
+    i = skip_space(s, p.position());
+    if (i < s.size() && s[i] == ',') {
+      ++i;
+      continue;
+    }
+    if (i < s.size() && s[i] == close) {
+      ++i;
+      return out;
+    }
+    throw InputError(cx().line, static_cast<int>(i) + 1, fmt::format("'{}' or ',' expected", close));
+  }
 }
 
 void Interpreter::store(Variable& var, std::size_t at_offset, const NcValue& value, std::size_t at) {
@@ -967,24 +973,12 @@ void Interpreter::define(std::string_view s, std::size_t i) {
     var.type = t;
     i = skip_space(s, n1);
     if (i < s.size() && s[i] == '[') {
-      ++i;
-      while (true) {
-        ExpressionParser p(s, i, cx().line, lookup);
-        NcValue d = p.parse();
+      std::size_t at = ++i;
+      for (const NcValue& d : values(s, i, ']', lookup)) {
         if (d.type == NcValue::Type::kString || d.number < 1 || d.number > 1e6 || d.number != std::trunc(d.number))
-          throw InputError(cx().line, static_cast<int>(i) + 1,
+          throw InputError(cx().line, static_cast<int>(at) + 1,
                            "an array size must be a whole number from 1 to 1000000");
         var.dims.push_back(static_cast<int>(d.number));
-        i = skip_space(s, p.position());
-        if (i < s.size() && s[i] == ',') {
-          ++i;
-          continue;
-        }
-        if (i < s.size() && s[i] == ']') {
-          ++i;
-          break;
-        }
-        throw InputError(cx().line, static_cast<int>(i) + 1, "']' or ',' expected");
       }
       i = skip_space(s, i);
     }
@@ -1008,23 +1002,10 @@ void Interpreter::define(std::string_view s, std::size_t i) {
         std::size_t open = s[at] == '(' ? at : skip_space(s, w);
         if (open >= s.size() || s[open] != '(') throw InputError(cx().line, static_cast<int>(open) + 1, "'(' expected");
         std::size_t q = open + 1;
-        for (std::size_t k = 0;; ++k) {
-          ExpressionParser p(s, q, cx().line, lookup);
-          NcValue x = p.parse();
-          if (k >= v.values.size())
-            throw InputError(cx().line, static_cast<int>(q) + 1, fmt::format("more values than '{}' holds", name));
-          store(v, k, x, q);
-          q = skip_space(s, p.position());
-          if (q < s.size() && s[q] == ',') {
-            ++q;
-            continue;
-          }
-          if (q < s.size() && s[q] == ')') {
-            ++q;
-            break;
-          }
-          throw InputError(cx().line, static_cast<int>(q) + 1, "')' or ',' expected");
-        }
+        std::vector<NcValue> list_values = values(s, q, ')', lookup);
+        if (list_values.size() > v.values.size())
+          throw InputError(cx().line, static_cast<int>(open) + 1, fmt::format("more values than '{}' holds", name));
+        for (std::size_t k = 0; k < list_values.size(); ++k) store(v, k, list_values[k], open);
         i = skip_space(s, q);
       } else if (type == "AXIS" && at < s.size() && is_letter(s[at])) {  // an axis name: X, Y, Z …
         for (std::size_t k = 0; k < v.values.size(); ++k)

@@ -16,11 +16,11 @@
 #include "block_copy.hpp"
 #include "bottleneck.hpp"
 #include "collision_window.hpp"
+#include "cutcom/decision_trace.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/programmed_decisions.hpp"
 #include "edge_strategy.hpp"
 #include "plane_geometry.hpp"
-#include "trace.hpp"
 
 namespace cutcom::fast {
 

@@ -6,15 +6,15 @@
 
 #include "collision_window.hpp"
 #include "compensation.hpp"
+#include "cutcom/decision_trace.hpp"
 #include "sar.hpp"
-#include "trace.hpp"
 
 namespace cutcom::fast {
 
 struct Engine::State {
   State(const MachineData& md, PathSink& out)
       : sink(out),
-        trace(out),
+        trace(out, Trace::Margins::kDouble),
         window(out, md),
         compensation(md, out, trace, window),
         sar(md, out, trace, compensation) {

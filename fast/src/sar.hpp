@@ -10,11 +10,11 @@
 
 #include "block_copy.hpp"
 #include "compensation.hpp"
+#include "cutcom/decision_trace.hpp"
 #include "cutcom/programmed_decisions.hpp"
 #include "cutcom/sar_layout.hpp"
 #include "cutcom/sar_sequence.hpp"
 #include "sar_shape.hpp"
-#include "trace.hpp"
 
 namespace cutcom::fast {
 

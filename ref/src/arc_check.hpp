@@ -4,8 +4,8 @@
 // Used by the SAR expansion (the block that defines the direction at P4) and the compensation.
 #pragma once
 
+#include "cutcom/decision_trace.hpp"
 #include "cutcom/programmed_decisions.hpp"
-#include "trace.hpp"
 
 namespace cutcom::ref::detail {
 

@@ -17,13 +17,13 @@
 #include "collision_window.hpp"
 #include "contour_angle.hpp"
 #include "contour_element.hpp"
+#include "cutcom/decision_trace.hpp"
 #include "cutcom/programmed_decisions.hpp"
 #include "cutcom/ref/engine.hpp"
 #include "edge_strategy.hpp"
 #include "equidistant.hpp"
 #include "exact_path.hpp"
 #include "plane_override.hpp"
-#include "trace.hpp"
 
 namespace cutcom::ref::detail {
 

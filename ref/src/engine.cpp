@@ -6,8 +6,8 @@
 
 #include "collision_window.hpp"
 #include "compensation.hpp"
+#include "cutcom/decision_trace.hpp"
 #include "sar.hpp"
-#include "trace.hpp"
 
 namespace cutcom::ref {
 
@@ -17,7 +17,7 @@ class Pipeline {
  public:
   Pipeline(const MachineData& md, PathSink& sink, ExactPath& path)
       : sink_(sink),
-        trace_(sink),
+        trace_(sink, Trace::Margins::kExact),
         window_(sink, path, md),
         compensation_(md, sink, trace_, window_, path),
         sar_(md, sink, trace_, path, compensation_) {
@@ -47,7 +47,7 @@ class Pipeline {
 
  private:
   PathSink& sink_;
-  detail::Trace trace_;
+  Trace trace_;
   CollisionWindow window_;
   detail::Compensation compensation_;
   detail::SarExpansion sar_;

@@ -9,11 +9,11 @@
 #include <span>
 
 #include "compensation.hpp"
+#include "cutcom/decision_trace.hpp"
 #include "cutcom/programmed_decisions.hpp"
 #include "cutcom/sar_layout.hpp"
 #include "cutcom/sar_sequence.hpp"
 #include "plane_override.hpp"
-#include "trace.hpp"
 
 namespace cutcom::ref::detail {
 

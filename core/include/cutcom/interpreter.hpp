@@ -18,6 +18,8 @@
 
 namespace cutcom {
 
+class InterpreterLookup;
+
 // A value of the NC language: REAL (binary64, as the control computes), INT, BOOL or STRING.
 struct NcValue {
   enum class Type { kReal, kInt, kBool, kString } type = Type::kReal;
@@ -89,6 +91,7 @@ class Interpreter {
   bool statement(std::string_view keyword, std::string_view line, std::size_t rest);
   void define(std::string_view line, std::size_t at);
   void store(Variable& var, std::size_t offset, const NcValue& value, std::size_t at);
+  std::vector<NcValue> values(std::string_view line, std::size_t& i, char close, InterpreterLookup& lookup);
   double counter(const std::string& name);
   void assign_counter(const std::string& name, double value, std::size_t at);
   // Jumps (NC-PARAM-FLOW-1): to a label or block number, forward, backward or both.
