@@ -298,6 +298,10 @@ InputError Interpreter::where(const InputError& e) const {
 // The file of a subprogram: NAME.SPF (or .MPF, any case) in the program's folder or the search
 // path (NC-PARAM-SUB-1).
 std::optional<std::string> Interpreter::find_subprogram(const std::string& name) const {
+  // Looked up once per name: a word met in every pass of a loop does not probe the files again.
+  auto known = found_.find(name);
+  if (known != found_.end()) return known->second;
+  std::optional<std::string>& found = found_[name];
   std::string lower = name;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const std::string& dir : search_path_.empty() ? std::vector<std::string>{"."} : search_path_)
@@ -305,9 +309,9 @@ std::optional<std::string> Interpreter::find_subprogram(const std::string& name)
                                  name + ".mpf", lower + ".mpf", "_N_" + name + "_SPF", name}) {
       std::string path = dir.empty() ? f : dir + "/" + f;
       std::ifstream probe(path);
-      if (probe) return path;
+      if (probe) return found = path;
     }
-  return std::nullopt;
+  return found;
 }
 
 // NC-PARAM-SUB-1: a call: NAME, NAME(arguments), Ln, CALL/PCALL/EXTCALL "NAME", each with P
@@ -351,7 +355,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     }
   }
   std::optional<std::string> file = find_subprogram(n);
-  if (!file)
+  if (!file)  // CALL "NAME" of a missing file (a name or Ln without a file was handled above)
     throw InputError(cx().line, static_cast<int>(word) + 1,
                      fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
   // Arguments: values now; a VAR parameter's argument is also remembered by name.
@@ -520,7 +524,7 @@ void Interpreter::leave_subprogram() {
   bool again = c.passes_left > 0;
   if (again) {  // P: run it again from its start, with the same arguments
     --c.passes_left;
-    if (++backward_jumps_ > limits_.max_backward_jumps) jump_back(Frame{Frame::Kind::kLoop, 0, 0, {}, 0});
+    count_backward_jump();
     seek(c.start_offset, 0);
     c.frames.clear(), c.open_ifs.clear(), c.variables.clear(), c.by_reference.clear(), c.labels_seen.clear();
   } else {
@@ -1028,13 +1032,17 @@ void Interpreter::define(std::string_view s, std::size_t i) {
   }
 }
 
-void Interpreter::jump_back(const Frame& f) {
-  // NC-PARAM-FLOW-6: a program that keeps jumping back is stopped.
+// NC-PARAM-FLOW-6: a program that keeps jumping back (loop passes, backward jumps, P runs) stops.
+void Interpreter::count_backward_jump() {
   if (++backward_jumps_ > limits_.max_backward_jumps)
     throw InputError(cx().line, 1,
                      fmt::format("the program runs away: more than {} loop passes or backward jumps "
                                  "(NC-PARAM-FLOW-6; raise the limit with --max-loops)",
                                  limits_.max_backward_jumps));
+}
+
+void Interpreter::jump_back(const Frame& f) {
+  count_backward_jump();
   seek(f.body, f.body_line);
 }
 
@@ -1082,11 +1090,7 @@ bool Interpreter::find_forward(std::string_view target) {
 }
 
 bool Interpreter::find_backward(std::string_view target, int before_line) {
-  ++backward_jumps_;
-  if (backward_jumps_ > limits_.max_backward_jumps) {
-    Frame f{Frame::Kind::kLoop, 0, 0, {}, 0};
-    jump_back(f);  // throws
-  }
+  count_backward_jump();
   auto it = cx().labels_seen.find(std::string(target));
   if (it != cx().labels_seen.end()) {
     const std::pair<std::streamoff, int>* best = nullptr;

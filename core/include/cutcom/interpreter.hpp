@@ -57,7 +57,10 @@ class Interpreter {
 
   void set_limits(InterpreterLimits limits) { limits_ = limits; }
   // NC-PARAM-SUB-1: where subprograms are looked for (the program's folder first).
-  void set_search_path(std::vector<std::string> dirs) { search_path_ = std::move(dirs); }
+  void set_search_path(std::vector<std::string> dirs) {
+    search_path_ = std::move(dirs);
+    found_.clear();
+  }
   bool in_subprogram() const { return stack_.size() > 1; }
   int current_line() const { return cx().line; }  // in the file being read
   // An error found in a subprogram's block, named with its file, line and calls (NC-PARAM-SUB-3).
@@ -103,6 +106,7 @@ class Interpreter {
   // at an ELSE of the same level. Returns the word found.
   std::string skip_block(std::string_view open, std::string_view end, bool or_else);
   void jump_back(const Frame& f);
+  void count_backward_jump();
 
   Variable* find_variable(const std::string& name);
 
@@ -138,6 +142,7 @@ class Interpreter {
   std::vector<Context> stack_;
   std::map<int, double> r_;  // R parameters: global
   std::vector<std::string> search_path_;
+  mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
   std::int64_t backward_jumps_ = 0;
   std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded
   bool control_flow_ = false;
