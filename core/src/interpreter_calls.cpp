@@ -1,0 +1,274 @@
+// Subprograms (NC-PARAM-SUB-*): calls, PROC parameters, returns and where an error in a
+// subprogram happened.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <tuple>
+
+#include "cutcom/interpreter.hpp"
+#include "interpreter_lookup.hpp"
+#include "interpreter_text.hpp"
+#include "nc_expression.hpp"
+
+namespace cutcom {
+
+using namespace interpreter_text;
+
+// NC-PARAM-SUB-3: an error in a subprogram names its file and line and the calls that led there;
+// the line it reports is the main program's calling line.
+InputError Interpreter::where(const InputError& e) const {
+  if (stack_.size() == 1 || e.detail().rfind("in subprogram ", 0) == 0) return e;
+  std::string chain = fmt::format("in subprogram {} line {}, column {}", cx().name, e.line(), e.column());
+  for (std::size_t k = stack_.size() - 1; k-- > 1;)
+    chain += fmt::format(", called from {} line {}", stack_[k].name, stack_[k].line);
+  return InputError(stack_.front().line, 1,
+                    fmt::format("{} (called from line {}): {}", chain, stack_.front().line, e.detail()));
+}
+
+// The file of a subprogram: NAME.SPF (or .MPF, any case) in the program's folder or the search
+// path (NC-PARAM-SUB-1).
+std::optional<std::string> Interpreter::find_subprogram(const std::string& name) const {
+  // Looked up once per name: a word met in every pass of a loop does not probe the files again.
+  auto known = found_.find(name);
+  if (known != found_.end()) return known->second;
+  std::optional<std::string>& found = found_[name];
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const std::string& dir : search_path_.empty() ? std::vector<std::string>{"."} : search_path_)
+    for (const std::string& f : {name + ".SPF", name + ".spf", lower + ".spf", lower + ".SPF", name + ".MPF",
+                                 name + ".mpf", lower + ".mpf", "_N_" + name + "_SPF", name}) {
+      std::string path = dir.empty() ? f : dir + "/" + f;
+      std::ifstream probe(path);
+      if (probe) return found = path;
+    }
+  return found;
+}
+
+// NC-PARAM-SUB-1: a call: NAME, NAME(arguments), Ln, CALL/PCALL/EXTCALL "NAME", each with P
+// repetitions; the subprogram runs before the caller's next block.
+bool Interpreter::call(std::string_view s, std::size_t word) {
+  std::size_t w = name_end(s, word);
+  std::string n = upper_text(s.substr(word, w - word));
+  std::size_t i = skip_space(s, w);
+  bool explicit_call = n == "CALL" || n == "PCALL" || n == "EXTCALL";
+  if (explicit_call) {
+    std::size_t e;
+    if (i < s.size() && s[i] == '"') {
+      e = s.find('"', i + 1);
+      if (e == std::string_view::npos)
+        throw InputError(cx().line, static_cast<int>(i) + 1, "the name has no closing '\"'");
+      n = upper_text(s.substr(i + 1, e - i - 1));
+      ++e;
+    } else {
+      e = name_end(s, i);
+      n = upper_text(s.substr(i, e - i));
+    }
+    if (n.empty()) throw InputError(cx().line, static_cast<int>(i) + 1, "a subprogram name is expected");
+    std::size_t slash = n.find_last_of("/\\");
+    if (slash != std::string::npos) n = n.substr(slash + 1);  // EXTCALL "PATH/NAME": the name
+    for (const char* ext : {".SPF", ".MPF"})
+      if (n.size() > 4 && n.compare(n.size() - 4, 4, ext) == 0) n.resize(n.size() - 4);
+    i = skip_space(s, e);
+  } else {
+    bool l_number = n.size() > 1 && n[0] == 'L';
+    for (std::size_t k = 1; l_number && k < n.size(); ++k) l_number = is_digit(n[k]);
+    if (!l_number && (n.size() < 2 || cx().variables.count(n) || is_r_parameter(n))) return false;
+    bool next_ok = i >= s.size() || s[i] == ';' || s[i] == '(' ||
+                   (upper(s[i]) == 'P' && i + 1 < s.size() && (is_digit(s[i + 1]) || s[i + 1] == '='));
+    if (!next_ok) return false;
+    if (!find_subprogram(n)) {
+      if (l_number)
+        throw InputError(
+            cx().line, static_cast<int>(word) + 1,
+            fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
+      return false;  // not a call: the lexer names the word
+    }
+  }
+  std::optional<std::string> file = find_subprogram(n);
+  if (!file)  // CALL "NAME" of a missing file (a name or Ln without a file was handled above)
+    throw InputError(cx().line, static_cast<int>(word) + 1,
+                     fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
+  // Arguments: values now; a VAR parameter's argument is also remembered by name.
+  InterpreterLookup lookup(*this, cx().line);
+  std::vector<std::optional<NcValue>> args;
+  std::vector<std::string> names;
+  if (i < s.size() && s[i] == '(') {
+    ++i;
+    i = skip_space(s, i);
+    if (i < s.size() && s[i] == ')') {
+      ++i;
+    } else {
+      while (true) {
+        i = skip_space(s, i);
+        if (i < s.size() && (s[i] == ',' || s[i] == ')')) {
+          args.emplace_back(), names.emplace_back();  // left out: the parameter's default
+        } else {
+          std::size_t ne = name_end(s, i);
+          std::size_t after = skip_space(s, ne);
+          names.push_back(after < s.size() && (s[after] == ',' || s[after] == ')') ? upper_text(s.substr(i, ne - i))
+                                                                                   : "");
+          ExpressionParser p(s, i, cx().line, lookup);
+          args.push_back(p.parse());
+          i = skip_space(s, p.position());
+        }
+        if (i < s.size() && s[i] == ',') {
+          ++i;
+          continue;
+        }
+        if (i < s.size() && s[i] == ')') {
+          ++i;
+          break;
+        }
+        throw InputError(cx().line, static_cast<int>(i) + 1, "')' or ',' expected in the call");
+      }
+    }
+    i = skip_space(s, i);
+  }
+  int passes = 1;
+  if (i < s.size() && upper(s[i]) == 'P') {
+    std::size_t v = i + 1;
+    if (v < s.size() && s[v] == '=') ++v;
+    ExpressionParser p(s, v, cx().line, lookup);
+    NcValue count = p.parse();
+    if (count.type == NcValue::Type::kString || count.number < 1 || count.number > 9999 ||
+        count.number != std::trunc(count.number))
+      throw InputError(cx().line, static_cast<int>(i) + 1,
+                       "P (the number of runs) must be a whole number from 1 to 9999");
+    passes = static_cast<int>(count.number);
+    i = skip_space(s, p.position());
+  }
+  if (i < s.size() && s[i] != ';')
+    throw InputError(cx().line, static_cast<int>(i) + 1, "a subprogram call takes its block alone");
+  if (stack_.size() >= kMaxLevels)
+    throw InputError(
+        cx().line, static_cast<int>(word) + 1,
+        fmt::format("more than {} program levels (subprograms calling subprograms: NC-PARAM-SUB-2)", kMaxLevels));
+  control_flow_ = true;
+  Context c;
+  c.owned = std::make_unique<std::ifstream>(*file);
+  c.in = c.owned.get();
+  c.name = std::filesystem::path(*file).filename().string();
+  c.passes_left = passes - 1;
+  c.args = std::move(args);
+  c.arg_names = std::move(names);
+  stack_.push_back(std::move(c));
+  return true;
+}
+
+// NC-PARAM-SUB-2: PROC name(type par, VAR type par, …): the parameters become local variables,
+// given the call's values (left out: 0); a VAR parameter is written back to the caller's variable
+// when the subprogram returns.
+void Interpreter::procedure(std::string_view s, std::size_t i) {
+  std::size_t e = name_end(s, skip_space(s, i));
+  i = skip_space(s, e);
+  std::vector<std::tuple<std::string, NcValue::Type, bool>> params;
+  if (i < s.size() && s[i] == '(') {
+    ++i;
+    while (true) {
+      i = skip_space(s, i);
+      if (i < s.size() && s[i] == ')') {
+        ++i;
+        break;
+      }
+      std::size_t t = name_end(s, i);
+      std::string type = upper_text(s.substr(i, t - i));
+      bool by_ref = type == "VAR";
+      if (by_ref) {
+        i = skip_space(s, t);
+        t = name_end(s, i);
+        type = upper_text(s.substr(i, t - i));
+      }
+      NcValue::Type vt;
+      if (type == "REAL")
+        vt = NcValue::Type::kReal;
+      else if (type == "INT" || type == "CHAR")
+        vt = NcValue::Type::kInt;
+      else if (type == "BOOL")
+        vt = NcValue::Type::kBool;
+      else if (type == "STRING" || type == "AXIS")
+        vt = NcValue::Type::kString;
+      else
+        throw InputError(cx().line, static_cast<int>(i) + 1,
+                         fmt::format("'{}' is not a parameter type (REAL INT BOOL CHAR STRING AXIS)", type));
+      i = skip_space(s, t);
+      if (type == "STRING" && i < s.size() && s[i] == '[') {
+        std::size_t c = s.find(']', i);
+        if (c == std::string_view::npos) throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
+        i = skip_space(s, c + 1);
+      }
+      std::size_t ne = name_end(s, i);
+      std::string name = upper_text(s.substr(i, ne - i));
+      if (name.size() < 2)
+        throw InputError(cx().line, static_cast<int>(i) + 1, "a parameter name of at least two characters is expected");
+      params.emplace_back(name, vt, by_ref);
+      i = skip_space(s, ne);
+      if (i < s.size() && s[i] == '[')
+        throw InputError(cx().line, static_cast<int>(i) + 1, "array parameters are not simulated yet");
+      if (i < s.size() && s[i] == ',') {
+        ++i;
+        continue;
+      }
+      if (i < s.size() && s[i] == ')') {
+        ++i;
+        break;
+      }
+      throw InputError(cx().line, static_cast<int>(i) + 1, "',' or ')' expected in the parameter list");
+    }
+  }
+  i = skip_space(s, i);
+  while (i < s.size() && s[i] != ';') {
+    std::size_t w = name_end(s, i);
+    std::string word = upper_text(s.substr(i, w - i));
+    if (word == "SAVE")
+      throw InputError(cx().line, static_cast<int>(i) + 1,
+                       "PROC … SAVE (restoring the caller's modal state) is not simulated yet");
+    if (word != "DISPLOF" && word != "DISPLON" && word != "SBLOF" && word != "SBLON" && word != "ACTBLOCNO")
+      throw InputError(
+          cx().line, static_cast<int>(i) + 1,
+          fmt::format("unexpected '{}' after the parameters of PROC", word.empty() ? std::string(1, s[i]) : word));
+    i = skip_space(s, w);
+  }
+  if (cx().args.size() > params.size())
+    throw InputError(cx().line, 1,
+                     fmt::format("{} arguments given, the PROC has {} parameters", cx().args.size(), params.size()));
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    auto& [name, type, by_ref] = params[k];
+    Variable v;
+    v.type = type;
+    v.values.assign(1, type == NcValue::Type::kString ? NcValue::string("") : NcValue{type, 0, {}});
+    cx().variables[name] = v;
+    if (k < cx().args.size() && cx().args[k]) store(cx().variables[name], 0, *cx().args[k], 0);
+    if (by_ref && stack_.size() > 1) {  // run on its own, the main program: nothing to write back
+      if (k >= cx().arg_names.size() || cx().arg_names[k].empty())
+        throw InputError(cx().line, 1, fmt::format("the VAR parameter {} needs a variable as its argument", name));
+      cx().by_reference.emplace_back(name, cx().arg_names[k]);
+    }
+  }
+}
+
+void Interpreter::leave_subprogram() {
+  Context& c = cx();
+  // VAR parameters: the caller's variables take the values.
+  std::vector<std::pair<std::string, NcValue>> results;
+  for (const auto& [local, caller] : c.by_reference) results.emplace_back(caller, c.variables[local].values[0]);
+  bool again = c.passes_left > 0;
+  if (again) {  // P: run it again from its start, with the same arguments
+    --c.passes_left;
+    count_backward_jump();
+    seek(c.start_offset, 0);
+    c.frames.clear(), c.open_ifs.clear(), c.variables.clear(), c.by_reference.clear(), c.labels_seen.clear();
+  } else {
+    stack_.pop_back();
+  }
+  Context& caller = again ? stack_[stack_.size() - 2] : cx();
+  for (auto& [name, value] : results) {
+    if (is_r_parameter(name) && r_number(name) < kRParameters) {
+      r_[r_number(name)] = value.number;
+    } else if (auto it = caller.variables.find(name); it != caller.variables.end() && it->second.dims.empty()) {
+      store(it->second, 0, value, 0);
+    }
+  }
+}
+}  // namespace cutcom

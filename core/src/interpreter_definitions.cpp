@@ -1,0 +1,115 @@
+// Definitions of user variables (NC-PARAM-VAR-2): DEF type name[dims][=value], ….
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "cutcom/interpreter.hpp"
+#include "interpreter_lookup.hpp"
+#include "interpreter_text.hpp"
+#include "nc_expression.hpp"
+
+namespace cutcom {
+
+using namespace interpreter_text;
+
+// NC-PARAM-VAR-2: DEF type name[dims][=value], …
+void Interpreter::define(std::string_view s, std::size_t i) {
+  InterpreterLookup lookup(*this, cx().line);
+  i = skip_space(s, i);
+  std::size_t e = name_end(s, i);
+  std::string type = upper_text(s.substr(i, e - i));
+  if (type == "NCK" || type == "CHAN") {  // GUD scope words
+    i = skip_space(s, e);
+    e = name_end(s, i);
+    type = upper_text(s.substr(i, e - i));
+  }
+  NcValue::Type t;
+  if (type == "REAL")
+    t = NcValue::Type::kReal;
+  else if (type == "INT")
+    t = NcValue::Type::kInt;
+  else if (type == "BOOL")
+    t = NcValue::Type::kBool;
+  else if (type == "CHAR")
+    t = NcValue::Type::kInt;
+  else if (type == "STRING" || type == "AXIS")
+    t = NcValue::Type::kString;
+  else if (type == "FRAME")
+    throw InputError(cx().line, static_cast<int>(i) + 1, "FRAME variables are not simulated yet");
+  else
+    throw InputError(cx().line, static_cast<int>(i) + 1,
+                     fmt::format("'{}' is not a type (REAL INT BOOL CHAR STRING AXIS)", type));
+  i = skip_space(s, e);
+  if (type == "STRING" && i < s.size() && s[i] == '[') {  // STRING[length]
+    std::size_t c = s.find(']', i);
+    if (c == std::string_view::npos) throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
+    i = skip_space(s, c + 1);
+  }
+  while (true) {
+    std::size_t n0 = i;
+    std::size_t n1 = name_end(s, i);
+    std::string name = upper_text(s.substr(n0, n1 - n0));
+    if (name.empty() || (!is_letter(name[0]) && name[0] != '_'))
+      throw InputError(cx().line, static_cast<int>(n0) + 1, "a variable name is expected");
+    if (is_r_parameter(name) || name.size() < 2)
+      throw InputError(cx().line, static_cast<int>(n0) + 1,
+                       fmt::format("'{}' cannot be a variable name (an address or an R parameter)", name));
+    Variable var;
+    var.type = t;
+    i = skip_space(s, n1);
+    if (i < s.size() && s[i] == '[') {
+      std::size_t at = ++i;
+      for (const NcValue& d : values(s, i, ']', lookup)) {
+        if (d.type == NcValue::Type::kString || d.number < 1 || d.number > 1e6 || d.number != std::trunc(d.number))
+          throw InputError(cx().line, static_cast<int>(at) + 1,
+                           "an array size must be a whole number from 1 to 1000000");
+        var.dims.push_back(static_cast<int>(d.number));
+      }
+      i = skip_space(s, i);
+    }
+    std::size_t count = 1;
+    for (int d : var.dims) count *= static_cast<std::size_t>(d);
+    if (count > 1'000'000 || var.dims.size() > 3)
+      throw InputError(cx().line, static_cast<int>(n0) + 1,
+                       fmt::format("'{}' is too large: at most three indices and 1000000 elements", name));
+    total_elements_ += count;
+    if (total_elements_ > 4'000'000)
+      throw InputError(cx().line, static_cast<int>(n0) + 1, "the program's variables hold more than 4000000 values");
+    NcValue zero = t == NcValue::Type::kString ? NcValue::string("") : NcValue{t, 0, {}};
+    var.values.assign(count, zero);
+    cx().variables[name] = var;  // a second DEF of a name starts it again
+    Variable& v = cx().variables[name];
+    if (i < s.size() && s[i] == '=') {
+      std::size_t at = skip_space(s, i + 1);
+      std::size_t w = name_end(s, at);
+      bool list = upper_text(s.substr(at, w - at)) == "SET" || (at < s.size() && s[at] == '(' && !v.dims.empty());
+      if (!v.dims.empty() && list) {  // A[3]=SET(1,2,3) or =(1,2,3): from index 0 on
+        std::size_t open = s[at] == '(' ? at : skip_space(s, w);
+        if (open >= s.size() || s[open] != '(') throw InputError(cx().line, static_cast<int>(open) + 1, "'(' expected");
+        std::size_t q = open + 1;
+        std::vector<NcValue> list_values = values(s, q, ')', lookup);
+        if (list_values.size() > v.values.size())
+          throw InputError(cx().line, static_cast<int>(open) + 1, fmt::format("more values than '{}' holds", name));
+        for (std::size_t k = 0; k < list_values.size(); ++k) store(v, k, list_values[k], open);
+        i = skip_space(s, q);
+      } else if (type == "AXIS" && at < s.size() && is_letter(s[at])) {  // an axis name: X, Y, Z …
+        for (std::size_t k = 0; k < v.values.size(); ++k)
+          v.values[k] = NcValue::string(upper_text(s.substr(at, w - at)));
+        i = skip_space(s, w);
+      } else {
+        ExpressionParser p(s, at, cx().line, lookup);
+        NcValue x = p.parse();
+        for (std::size_t k = 0; k < v.values.size(); ++k) store(v, k, x, at);
+        i = skip_space(s, p.position());
+      }
+    }
+    if (i < s.size() && s[i] == ',') {
+      i = skip_space(s, i + 1);
+      continue;
+    }
+    if (i < s.size() && s[i] != ';')
+      throw InputError(cx().line, static_cast<int>(i) + 1, "',' or the end of the DEF line expected");
+    return;
+  }
+}
+}  // namespace cutcom

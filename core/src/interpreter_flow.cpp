@@ -1,0 +1,305 @@
+// Control flow of the interpreter (NC-PARAM-FLOW-*): IF/ELSE, loops, jumps to labels and block
+// numbers, and the runaway limit.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "cutcom/interpreter.hpp"
+#include "interpreter_lookup.hpp"
+#include "interpreter_text.hpp"
+#include "nc_expression.hpp"
+
+namespace cutcom {
+
+using namespace interpreter_text;
+
+bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t rest) {
+  InterpreterLookup lookup(*this, cx().line);
+  auto condition = [&](std::size_t from, std::size_t& end) {
+    ExpressionParser p(s, from, cx().line, lookup);
+    NcValue v = p.parse();
+    end = skip_space(s, p.position());
+    if (v.type == NcValue::Type::kString)
+      throw InputError(cx().line, static_cast<int>(from) + 1, "a condition must be a number or BOOL, not a string");
+    return v.number != 0;
+  };
+  auto nothing_after = [&](std::size_t e, std::string_view what) {
+    e = skip_space(s, e);
+    if (e < s.size() && s[e] != ';')
+      throw InputError(cx().line, static_cast<int>(e) + 1, fmt::format("unexpected text after {}", what));
+  };
+  static constexpr std::string_view kStatements[] = {"IF",     "ELSE", "ENDIF",   "WHILE",  "ENDWHILE", "FOR",
+                                                     "ENDFOR", "LOOP", "ENDLOOP", "REPEAT", "UNTIL"};
+  for (std::string_view w : kStatements) control_flow_ = control_flow_ || k == w;
+  if (k == "IF") {
+    std::size_t end;
+    bool c = condition(rest, end);
+    std::size_t j = name_end(s, end);
+    std::string jump_word = upper_text(s.substr(end, j - end));
+    if (jump_word == "GOTOF" || jump_word == "GOTOB" || jump_word == "GOTO" || jump_word == "GOTOC") {
+      // NC-PARAM-FLOW-1: a conditional jump.
+      std::size_t t = skip_space(s, j);
+      std::size_t te = name_end(s, t);
+      std::string target = upper_text(s.substr(t, te - t));
+      if (target.empty())
+        throw InputError(cx().line, static_cast<int>(t) + 1,
+                         fmt::format("{} needs a label or block number", jump_word));
+      nothing_after(te, "the jump target");
+      if (c) jump(target, jump_word != "GOTOB", jump_word != "GOTOF", jump_word != "GOTOC", end);
+      return true;
+    }
+    nothing_after(end, "the condition of IF");
+    // NC-PARAM-FLOW-2: IF … ELSE … ENDIF; the branch that runs ends at its ENDIF.
+    if (c || skip_block("IF", "ENDIF", true) == "ELSE") cx().open_ifs.push_back(cx().line);
+    return true;
+  }
+  if (k == "ELSE") {  // reached while running the IF branch: skip the ELSE branch
+    nothing_after(rest, "ELSE");
+    if (cx().open_ifs.empty()) throw InputError(cx().line, 1, "ELSE without its IF");
+    cx().open_ifs.pop_back();
+    skip_block("IF", "ENDIF", false);
+    return true;
+  }
+  if (k == "ENDIF") {
+    nothing_after(rest, "ENDIF");
+    if (cx().open_ifs.empty()) throw InputError(cx().line, 1, "ENDIF without its IF");
+    cx().open_ifs.pop_back();
+    return true;
+  }
+  if (k == "WHILE") {  // NC-PARAM-FLOW-3
+    std::size_t end;
+    bool c = condition(rest, end);
+    nothing_after(end, "the condition of WHILE");
+    if (c)
+      cx().frames.push_back({Frame::Kind::kWhile, cx().line_start, cx().line - 1, {}, 0});
+    else
+      skip_block("WHILE", "ENDWHILE", false);
+    return true;
+  }
+  auto close = [&](Frame::Kind kind, std::string_view word) -> Frame& {
+    nothing_after(rest, word);
+    if (cx().frames.empty() || cx().frames.back().kind != kind)
+      throw InputError(cx().line, 1, fmt::format("{} without its opening statement", word));
+    return cx().frames.back();
+  };
+  if (k == "ENDWHILE") {
+    Frame f = close(Frame::Kind::kWhile, "ENDWHILE");
+    cx().frames.pop_back();
+    jump_back(f);  // the WHILE line decides again
+    return true;
+  }
+  if (k == "FOR") {  // NC-PARAM-FLOW-4: FOR variable = start TO end
+    std::size_t v = skip_space(s, rest);
+    std::size_t ve = name_end(s, v);
+    std::string var = upper_text(s.substr(v, ve - v));
+    std::size_t eq = skip_space(s, ve);
+    if (var.empty() || eq >= s.size() || s[eq] != '=')
+      throw InputError(cx().line, static_cast<int>(v) + 1, "FOR needs 'variable = start TO end'");
+    ExpressionParser p(s, eq + 1, cx().line, lookup);
+    NcValue first = p.parse();
+    std::size_t to = skip_space(s, p.position());
+    if (upper_text(s.substr(to, 2)) != "TO" || (to + 2 < s.size() && is_name_char(s[to + 2])))
+      throw InputError(cx().line, static_cast<int>(to) + 1, "FOR needs 'TO end'");
+    ExpressionParser q(s, to + 2, cx().line, lookup);
+    NcValue last = q.parse();
+    nothing_after(q.position(), "the end value of FOR");
+    assign_counter(var, first.number, v);
+    if (first.number > last.number) {
+      skip_block("FOR", "ENDFOR", false);
+      return true;
+    }
+    cx().frames.push_back({Frame::Kind::kFor, cx().offset, cx().line, var, last.number});
+    return true;
+  }
+  if (k == "ENDFOR") {
+    Frame& f = close(Frame::Kind::kFor, "ENDFOR");
+    double next = counter(f.variable) + 1;
+    assign_counter(f.variable, next, 0);
+    if (next <= f.end) {
+      jump_back(f);
+    } else {
+      cx().frames.pop_back();
+    }
+    return true;
+  }
+  if (k == "LOOP") {  // NC-PARAM-FLOW-3
+    nothing_after(rest, "LOOP");
+    cx().frames.push_back({Frame::Kind::kLoop, cx().offset, cx().line, {}, 0});
+    return true;
+  }
+  if (k == "ENDLOOP") {
+    Frame f = close(Frame::Kind::kLoop, "ENDLOOP");
+    jump_back(f);
+    return true;
+  }
+  if (k == "REPEAT") {
+    std::size_t e = skip_space(s, rest);
+    if (e < s.size() && s[e] != ';')
+      throw InputError(cx().line, static_cast<int>(e) + 1,
+                       "REPEAT of a program section (REPEAT label P=n) is not simulated yet");
+    cx().frames.push_back({Frame::Kind::kRepeat, cx().offset, cx().line, {}, 0});
+    return true;
+  }
+  if (k == "UNTIL") {
+    if (cx().frames.empty() || cx().frames.back().kind != Frame::Kind::kRepeat)
+      throw InputError(cx().line, 1, "UNTIL without its REPEAT");
+    std::size_t end;
+    bool c = condition(rest, end);
+    nothing_after(end, "the condition of UNTIL");
+    Frame f = cx().frames.back();
+    if (c)
+      cx().frames.pop_back();
+    else
+      jump_back(f);
+    return true;
+  }
+  if (k == "DEF") {
+    define(s, rest);
+    return true;
+  }
+  if (k == "PROC") {
+    procedure(s, rest);
+    return true;
+  }
+  // NC-PARAM-SUB-2: RET, M17 (or M2/M30) end a subprogram; in the main program they stay words.
+  if (stack_.size() > 1 && (k == "RET" || k == "M17" || k == "M2" || k == "M30")) {
+    leave_subprogram();
+    return true;
+  }
+  return false;
+}
+
+double Interpreter::counter(const std::string& name) {
+  if (is_r_parameter(name) && r_number(name) < kRParameters) return r_[r_number(name)];
+  Variable* v = find_variable(name);
+  if (!v || !v->dims.empty() || v->type == NcValue::Type::kString)
+    throw InputError(cx().line, 1,
+                     fmt::format("the FOR counter '{}' must be an INT or REAL variable or an R parameter", name));
+  return v->values[0].number;
+}
+
+void Interpreter::assign_counter(const std::string& name, double value, std::size_t at) {
+  if (is_r_parameter(name)) {
+    int r = r_number(name);
+    if (r >= kRParameters)
+      throw InputError(cx().line, static_cast<int>(at) + 1, fmt::format("R parameter {} does not exist", name));
+    r_[r] = value;
+    return;
+  }
+  Variable* v = find_variable(name);
+  if (!v || !v->dims.empty() || v->type == NcValue::Type::kString)
+    throw InputError(cx().line, static_cast<int>(at) + 1,
+                     fmt::format("the FOR counter '{}' must be an INT or REAL variable or an R parameter", name));
+  store(*v, 0, NcValue::real(value), at);
+}
+
+// NC-PARAM-FLOW-6: a program that keeps jumping back (loop passes, backward jumps, P runs) stops.
+void Interpreter::count_backward_jump() {
+  if (++backward_jumps_ > limits_.max_backward_jumps)
+    throw InputError(cx().line, 1,
+                     fmt::format("the program runs away: more than {} loop passes or backward jumps "
+                                 "(NC-PARAM-FLOW-6; raise the limit with --max-loops)",
+                                 limits_.max_backward_jumps));
+}
+
+void Interpreter::jump_back(const Frame& f) {
+  count_backward_jump();
+  seek(f.body, f.body_line);
+}
+
+bool Interpreter::defines(std::string_view text, std::string_view target) {
+  std::string number, label;
+  block_prefix(text, &number, &label);
+  if (target.size() > 1 && target[0] == 'N' && is_digit(target[1])) return "N" + number == target;
+  return label == target;
+}
+
+void Interpreter::jump(std::string_view target, bool forward, bool backward, bool must_exist, std::size_t at) {
+  control_flow_ = true;
+  int from_line = cx().line;
+  std::streamoff from = cx().offset;
+  if (forward && find_forward(target)) return;
+  if (backward) {
+    if (forward) seek(from, from_line);
+    if (find_backward(target, from_line)) return;
+  }
+  if (!must_exist) {  // GOTOC: no target, no jump
+    seek(from, from_line);
+    return;
+  }
+  throw InputError(from_line, static_cast<int>(at) + 1,
+                   fmt::format("jump target '{}' not found {}", target,
+                               forward && backward ? "in the program"
+                               : forward           ? "after this block"
+                                                   : "before this block"));
+}
+
+bool Interpreter::find_forward(std::string_view target) {
+  std::string text;
+  while (true) {
+    std::streamoff start = cx().offset;
+    int line = cx().line;
+    if (!getline(text)) return false;
+    std::string label;
+    block_prefix(text, nullptr, &label);
+    if (!label.empty()) cx().labels_seen[label].push_back({start, line});
+    if (defines(text, target)) {
+      seek(start, line);
+      return true;
+    }
+  }
+}
+
+bool Interpreter::find_backward(std::string_view target, int before_line) {
+  count_backward_jump();
+  auto it = cx().labels_seen.find(std::string(target));
+  if (it != cx().labels_seen.end()) {
+    const std::pair<std::streamoff, int>* best = nullptr;
+    for (const auto& p : it->second)
+      if (p.second < before_line && (!best || p.second > best->second)) best = &p;
+    if (best) {
+      seek(best->first, best->second);
+      return true;
+    }
+  }
+  // A block number (or a label not seen): read the program again from its start.
+  seek(cx().start_offset, 0);
+  std::string text;
+  std::optional<std::pair<std::streamoff, int>> found;
+  while (cx().line < before_line) {
+    std::streamoff start = cx().offset;
+    int line = cx().line;
+    if (!getline(text)) break;
+    if (cx().line < before_line && defines(text, target)) found = {start, line};
+  }
+  if (!found) return false;
+  seek(found->first, found->second);
+  return true;
+}
+
+// Skips to the end of a structure: nested ones counted by their opening word.
+std::string Interpreter::skip_block(std::string_view open, std::string_view end, bool or_else) {
+  int start_line = cx().line;
+  int depth = 0;
+  std::string text;
+  while (true) {
+    std::streamoff start = cx().offset;
+    int line = cx().line;
+    if (!getline(text)) break;
+    std::string label;
+    block_prefix(text, nullptr, &label);
+    if (!label.empty()) cx().labels_seen[label].push_back({start, line});
+    std::size_t rest;
+    std::string w = first_word(text, rest);
+    if (w == open && !(open == "IF" && has_jump(text))) {
+      ++depth;
+    } else if (w == end) {
+      if (depth == 0) return w;
+      --depth;
+    } else if (or_else && depth == 0 && w == "ELSE") {
+      return w;
+    }
+  }
+  throw InputError(start_line, 1, fmt::format("{} without its {}", open, end));
+}
+}  // namespace cutcom

@@ -1,0 +1,76 @@
+// How expressions read names (ExpressionParser::Lookup) in the interpreter's variables: R
+// parameters (global), user variables of the running level, system variables (NC-PARAM-SYS-1).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cutcom/interpreter.hpp"
+#include "interpreter_text.hpp"
+#include "nc_expression.hpp"
+
+namespace cutcom {
+
+class InterpreterLookup : public ExpressionParser::Lookup {
+ public:
+  InterpreterLookup(Interpreter& it, int line) : it_(it), line_(line) {}
+  NcValue read(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) override {
+    if (n == "R" && idx.size() == 1) return NcValue::real(r_value(idx[0], at));
+    if (interpreter_text::is_r_parameter(n) && idx.empty()) {
+      int k = interpreter_text::r_number(n);
+      if (k >= interpreter_text::kRParameters)
+        fail(at, fmt::format("R parameter {} does not exist (R0 to R{})", n, interpreter_text::kRParameters - 1));
+      auto it = it_.r_.find(k);
+      return NcValue::real(it == it_.r_.end() ? 0.0 : it->second);
+    }
+    if (!n.empty() && n[0] == '$') {
+      std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
+      if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));
+      return NcValue::real(*v);
+    }
+    Interpreter::Variable* v = it_.find_variable(n);
+    if (!v) fail(at, fmt::format("undefined variable '{}'", n));
+    return v->values[offset(n, *v, idx, at)];
+  }
+  bool is_variable(const std::string& n) const override { return it_.cx().variables.count(n) > 0; }
+
+  double r_value(const NcValue& index, std::size_t at) {
+    int k = r_index(index, at);
+    auto it = it_.r_.find(k);
+    return it == it_.r_.end() ? 0.0 : it->second;
+  }
+  int r_index(const NcValue& index, std::size_t at) {
+    if (index.type == NcValue::Type::kString) fail(at, "an R parameter's index must be a number");
+    double k = std::round(index.number);
+    if (k < 0 || k >= interpreter_text::kRParameters)
+      fail(at, fmt::format("R parameter R[{}] does not exist (R0 to R{})", k, interpreter_text::kRParameters - 1));
+    return static_cast<int>(k);
+  }
+  // NC-PARAM-ERR-1: an index outside the array's bounds is an error.
+  std::size_t offset(const std::string& n, const Interpreter::Variable& v, const std::vector<NcValue>& idx,
+                     std::size_t at) {
+    if (idx.size() != v.dims.size())
+      fail(at,
+           fmt::format("'{}' has {} index{}, {} given", n, v.dims.size(), v.dims.size() == 1 ? "" : "es", idx.size()));
+    std::size_t o = 0;
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      if (idx[k].type == NcValue::Type::kString) fail(at, fmt::format("an index of '{}' must be a number", n));
+      double i = std::round(idx[k].number);
+      if (i < 0 || i >= v.dims[k]) fail(at, fmt::format("index {} of '{}' is outside 0 to {}", i, n, v.dims[k] - 1));
+      o = o * static_cast<std::size_t>(v.dims[k]) + static_cast<std::size_t>(i);
+    }
+    return o;
+  }
+  [[noreturn]] void fail(std::size_t at, const std::string& what) const {
+    throw InputError(line_, static_cast<int>(at) + 1, what);
+  }
+
+ private:
+  Interpreter& it_;
+  int line_;
+};
+
+}  // namespace cutcom
