@@ -170,6 +170,46 @@ TEST(Parametric, LoopRepeatAndLabelsAfterTheEnd) {
   expect_same_path(p.ref, q.ref);
 }
 
+// covers: NC-PARAM-FLOW-5
+TEST(Parametric, SectionRepetitionsAndCase) {
+  // REPEAT START P=2 runs START…N30 twice more; REPEATB N30 P=2 runs N30 twice; CASE picks by
+  // value (CNT is 3 here), then DEFAULT on a value not listed; REPEAT FROM ENDLABEL runs the
+  // section between the two labels once more.
+  const std::string parametric =
+      "DEF INT CNT=0\n"
+      "N10 G0 X0 Y0\n"
+      "START: G1 X10 F100\n"
+      "CNT=CNT+1\n"
+      "N20 G1 Y=10*CNT\n"
+      "N30 X=-CNT\n"
+      "N40 REPEAT START P=2\n"
+      "N50 REPEATB N30 P=2\n"
+      "CASE (CNT) OF 1 GOTOF ONE 3 GOTOF THREE DEFAULT GOTOF OTHER\n"
+      "ONE: G1 X1\n"
+      "THREE: G1 X3\n"
+      "CASE (CNT+4) OF 1 GOTOF ONE DEFAULT GOTOF OTHER\n"
+      "G1 X98\n"
+      "OTHER: G1 X7\n"
+      "GOTOF AFTER\n"
+      "FROM: G1 Y1\n"
+      "G1 Y2\n"
+      "ENDLABEL: G1 Y3\n"
+      "AFTER: REPEAT FROM ENDLABEL P=1\n"
+      "G1 X0\n"
+      "M30\n";
+  const std::string plain =
+      "N10 G0 X0 Y0\nG1 X10 F100\nY10\nX-1\n"
+      "X10\nY20\nX-2\nX10\nY30\nX-3\n"
+      "X-3\nX-3\n"
+      "X3\nX7\n"
+      "Y1\nY2\nY3\nX0\nM30\n";
+  Runs p = run_both(parametric), q = run_both(plain);
+  ASSERT_TRUE(p.fast_ok && p.ref_ok && q.fast_ok && q.ref_ok);
+  EXPECT_GT(q.fast.path.size(), 14u);
+  expect_same_path(p.fast, q.fast);
+  expect_same_path(p.ref, q.ref);
+}
+
 // The line of the error reading `text` gives (its message must hold `words`); subprograms are
 // looked for in `dir`.
 int error_line(const std::string& text, const std::string& words, InterpreterLimits limits = {},
@@ -205,6 +245,12 @@ TEST(Parametric, LanguageErrorsNameTheirLine) {
   // An endless loop stops at the limit, naming where it was reached.
   EXPECT_EQ(error_line("LOOP\nR1=R1+1\nENDLOOP\n", "runs away", {1000}), 3);
   EXPECT_EQ(error_line("START: R1=R1+1\nGOTOB START\n", "runs away", {1000}), 2);
+  // NC-PARAM-FLOW-5: a section's start must exist (before the block for REPEAT label).
+  EXPECT_EQ(error_line("G1 X0 F100\nREPEAT LATER P=2\nLATER: G1 X1\n", "not found before this block"), 2);
+  EXPECT_EQ(error_line("AA: G1 X0 F100\nREPEAT AA BB\n", "end 'BB' is not found"), 2);
+  EXPECT_EQ(error_line("CASE (1) OF 1 G1 X0\n", "GOTOF or GOTOB"), 1);
+  EXPECT_EQ(error_line("CASE (1) OF 2 GOTOF AA\nG1 X1 F1\nCASE (2) OF 2 GOTOF MISSING\n", "'MISSING' not found"), 3);
+  EXPECT_EQ(error_line("AA: R1=R1+1\nREPEAT AA P=0\n", "whole number from 1"), 2);
 }
 
 // A folder of subprogram files for one test.

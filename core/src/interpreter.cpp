@@ -72,6 +72,11 @@ NcValue Interpreter::evaluate(std::string_view expression, int line) {
 bool Interpreter::next(std::string& text, int& line) {
   while (true) {
     try {
+      // NC-PARAM-FLOW-5: the last block of a repeated section has run.
+      if (!cx().sections.empty() && cx().line == cx().sections.back().last_line) {
+        end_section_pass();
+        continue;
+      }
       if (!getline(raw_)) {
         if (!cx().frames.empty())
           throw InputError(cx().line, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");
@@ -114,10 +119,6 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
   }
   std::size_t rest;
   std::string first = first_word(s, rest);
-  if (first == "CASE" || first == "REPEATB") {  // not simulated yet: the lexer names it (NC-ERR-3)
-    out = s;
-    return;
-  }
   if (statement(first, s, rest)) {  // a statement line yields no block
     out.clear();
     return;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "cutcom/interpreter.hpp"
 #include "interpreter_lookup.hpp"
@@ -28,8 +29,8 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     if (e < s.size() && s[e] != ';')
       throw InputError(cx().line, static_cast<int>(e) + 1, fmt::format("unexpected text after {}", what));
   };
-  static constexpr std::string_view kStatements[] = {"IF",     "ELSE", "ENDIF",   "WHILE",  "ENDWHILE", "FOR",
-                                                     "ENDFOR", "LOOP", "ENDLOOP", "REPEAT", "UNTIL"};
+  static constexpr std::string_view kStatements[] = {"IF",   "ELSE",    "ENDIF",  "WHILE", "ENDWHILE", "FOR", "ENDFOR",
+                                                     "LOOP", "ENDLOOP", "REPEAT", "UNTIL", "REPEATB",  "CASE"};
   for (std::string_view w : kStatements) control_flow_ = control_flow_ || k == w;
   if (k == "IF") {
     std::size_t end;
@@ -132,11 +133,12 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     jump_back(f);
     return true;
   }
-  if (k == "REPEAT") {
+  if (k == "REPEAT" || k == "REPEATB") {
     std::size_t e = skip_space(s, rest);
-    if (e < s.size() && s[e] != ';')
-      throw InputError(cx().line, static_cast<int>(e) + 1,
-                       "REPEAT of a program section (REPEAT label P=n) is not simulated yet");
+    if (k == "REPEATB" || (e < s.size() && s[e] != ';')) {
+      repeat_section(s, rest, k == "REPEATB");
+      return true;
+    }
     cx().frames.push_back({Frame::Kind::kRepeat, cx().offset, cx().line, {}, 0});
     return true;
   }
@@ -151,6 +153,10 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
       cx().frames.pop_back();
     else
       jump_back(f);
+    return true;
+  }
+  if (k == "CASE") {
+    case_jump(s, rest);
     return true;
   }
   if (k == "DEF") {
@@ -275,6 +281,152 @@ bool Interpreter::find_backward(std::string_view target, int before_line) {
   if (!found) return false;
   seek(found->first, found->second);
   return true;
+}
+
+std::optional<std::pair<std::streamoff, int>> Interpreter::locate(std::string_view target, bool backward,
+                                                                  bool forward) {
+  std::streamoff from = cx().offset;
+  int from_line = cx().line;
+  std::optional<std::pair<std::streamoff, int>> found;
+  if (backward && find_backward(target, from_line)) found = std::make_pair(cx().offset, cx().line);
+  if (!found && forward) {
+    seek(from, from_line);
+    if (find_forward(target)) found = std::make_pair(cx().offset, cx().line);
+  }
+  seek(from, from_line);
+  return found;
+}
+
+// NC-PARAM-FLOW-5: REPEAT start P=n repeats the blocks from the label `start` up to the block
+// before the REPEAT; REPEAT start end P=n from `start` to the block of `end` (ENDLABEL: the
+// block labelled so); REPEATB label P=n the one block. P left out: once. Afterwards the program
+// goes on after the REPEAT block.
+void Interpreter::repeat_section(std::string_view s, std::size_t rest, bool one_block) {
+  InterpreterLookup lookup(*this, cx().line);
+  const char* word = one_block ? "REPEATB" : "REPEAT";
+  auto target_at = [&](std::size_t& i) {
+    i = skip_space(s, i);
+    std::size_t e = name_end(s, i);
+    std::string t = upper_text(s.substr(i, e - i));
+    std::size_t at = i;
+    i = skip_space(s, e);
+    return std::make_pair(t, at);
+  };
+  std::size_t i = rest;
+  auto [start, start_at] = target_at(i);
+  if (start.empty() || (start == "P" && i < s.size() && s[i] == '='))
+    throw InputError(cx().line, static_cast<int>(start_at) + 1,
+                     fmt::format("{} needs the label or block number where the section starts", word));
+  std::string end;
+  std::size_t end_at = 0;
+  if (!one_block && i < s.size() && s[i] != ';' &&
+      !(upper(s[i]) == 'P' && skip_space(s, i + 1) < s.size() && s[skip_space(s, i + 1)] == '=')) {
+    std::tie(end, end_at) = target_at(i);
+    if (end.empty())
+      throw InputError(cx().line, static_cast<int>(end_at) + 1, "the label where the section ends is expected");
+  }
+  int passes = 1;
+  if (i < s.size() && upper(s[i]) == 'P') {
+    std::size_t v = skip_space(s, i + 1);
+    if (v >= s.size() || s[v] != '=') throw InputError(cx().line, static_cast<int>(i) + 1, "P=n expected");
+    ExpressionParser p(s, v + 1, cx().line, lookup);
+    NcValue count = p.parse();
+    if (count.type == NcValue::Type::kString || count.number < 1 || count.number > 1e6 ||
+        count.number != std::trunc(count.number))
+      throw InputError(cx().line, static_cast<int>(i) + 1,
+                       "P (the number of repetitions) must be a whole number from 1");
+    passes = static_cast<int>(count.number);
+    i = skip_space(s, p.position());
+  }
+  if (i < s.size() && s[i] != ';')
+    throw InputError(cx().line, static_cast<int>(i) + 1, fmt::format("unexpected text after {}", word));
+  control_flow_ = true;
+  // REPEAT label P=n: the section lies before; otherwise searched towards the start first.
+  bool only_back = !one_block && end.empty();
+  auto first = locate(start, true, !only_back);
+  if (!first)
+    throw InputError(cx().line, static_cast<int>(start_at) + 1,
+                     fmt::format("the section's start '{}' is not found {}", start,
+                                 only_back ? "before this block" : "in the program"));
+  Context::Section section{first->first, first->second, 0, passes, cx().offset, cx().line};
+  if (end.empty()) {
+    section.last_line = one_block ? first->second + 1 : cx().line - 1;
+  } else {  // the end label: from the start on
+    seek(first->first, first->second);
+    std::string text;
+    getline(text);
+    if (!defines(text, end)) {
+      if (!find_forward(end))
+        throw InputError(section.resume_line, static_cast<int>(end_at) + 1,
+                         fmt::format("the section's end '{}' is not found after its start", end));
+    }
+    section.last_line = defines(text, end) ? first->second + 1 : cx().line + 1;
+  }
+  if (section.last_line <= section.start_line) {  // REPEAT label in the block right after the label's? none to run
+    seek(section.resume, section.resume_line);
+    return;
+  }
+  count_backward_jump();
+  seek(section.start, section.start_line);
+  cx().sections.push_back(section);
+}
+
+void Interpreter::end_section_pass() {
+  Context::Section& sec = cx().sections.back();
+  if (--sec.passes_left > 0) {
+    count_backward_jump();
+    seek(sec.start, sec.start_line);
+    return;
+  }
+  Context::Section done = sec;
+  cx().sections.pop_back();
+  seek(done.resume, done.resume_line);
+}
+
+// NC-PARAM-FLOW-5: CASE (expression) OF value GOTOF target … DEFAULT GOTOF target: the first
+// value equal to the expression's jumps; none equal: DEFAULT's jump, or on with the next block.
+void Interpreter::case_jump(std::string_view s, std::size_t rest) {
+  InterpreterLookup lookup(*this, cx().line);
+  ExpressionParser p(s, rest, cx().line, lookup);
+  NcValue v = p.parse();
+  std::size_t i = skip_space(s, p.position());
+  std::size_t e = name_end(s, i);
+  if (upper_text(s.substr(i, e - i)) != "OF") throw InputError(cx().line, static_cast<int>(i) + 1, "CASE needs OF");
+  i = skip_space(s, e);
+  std::optional<std::pair<std::string, std::size_t>> chosen;
+  std::string chosen_jump;
+  while (i < s.size() && s[i] != ';') {
+    std::size_t at = i;
+    std::size_t we = name_end(s, i);
+    bool is_default = upper_text(s.substr(i, we - i)) == "DEFAULT";
+    bool equal = false;
+    if (is_default) {
+      i = skip_space(s, we);
+    } else {
+      ExpressionParser c(s, i, cx().line, lookup);
+      NcValue constant = c.parse();
+      if ((constant.type == NcValue::Type::kString) != (v.type == NcValue::Type::kString))
+        throw InputError(cx().line, static_cast<int>(at) + 1, "a CASE value must be of the expression's type");
+      equal = v.type == NcValue::Type::kString ? constant.text == v.text : constant.number == v.number;
+      i = skip_space(s, c.position());
+    }
+    std::size_t je = name_end(s, i);
+    std::string jump_word = upper_text(s.substr(i, je - i));
+    if (jump_word != "GOTOF" && jump_word != "GOTOB" && jump_word != "GOTO" && jump_word != "GOTOC")
+      throw InputError(cx().line, static_cast<int>(i) + 1, "GOTOF or GOTOB and a target expected after a CASE value");
+    std::size_t t = skip_space(s, je);
+    std::size_t te = name_end(s, t);
+    std::string target = upper_text(s.substr(t, te - t));
+    if (target.empty())
+      throw InputError(cx().line, static_cast<int>(t) + 1, fmt::format("{} needs a label or block number", jump_word));
+    if (!chosen && (equal || is_default)) chosen = std::make_pair(target, t), chosen_jump = jump_word;
+    i = skip_space(s, te);
+    if (is_default && i < s.size() && s[i] != ';')
+      throw InputError(cx().line, static_cast<int>(i) + 1, "DEFAULT is the last choice of CASE");
+  }
+  control_flow_ = true;
+  if (chosen)
+    jump(chosen->first, chosen_jump != "GOTOB", chosen_jump != "GOTOF", chosen_jump != "GOTOC", chosen->second);
 }
 
 // Skips to the end of a structure: nested ones counted by their opening word.

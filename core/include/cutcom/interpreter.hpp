@@ -107,6 +107,12 @@ class Interpreter {
   std::string skip_block(std::string_view open, std::string_view end, bool or_else);
   void jump_back(const Frame& f);
   void count_backward_jump();
+  // NC-PARAM-FLOW-5: REPEAT label [label|ENDLABEL] P=n, REPEATB label P=n; CASE … OF.
+  void repeat_section(std::string_view line, std::size_t rest, bool one_block);
+  void end_section_pass();
+  void case_jump(std::string_view line, std::size_t rest);
+  // Where `target` starts (its offset and the lines before it); the reading position is kept.
+  std::optional<std::pair<std::streamoff, int>> locate(std::string_view target, bool backward, bool forward);
 
   Variable* find_variable(const std::string& name);
 
@@ -120,6 +126,15 @@ class Interpreter {
     int line = 0;
     std::vector<Frame> frames;
     std::vector<int> open_ifs;  // lines of the IF structures whose running branch has not ended
+    struct Section {            // a program section being repeated (NC-PARAM-FLOW-5)
+      std::streamoff start;
+      int start_line;  // lines before its first block
+      int last_line;   // its last block's line
+      int passes_left;
+      std::streamoff resume;  // after the REPEAT block
+      int resume_line;
+    };
+    std::vector<Section> sections;
     std::map<std::string, std::vector<std::pair<std::streamoff, int>>> labels_seen;  // label: (start, lines before)
     std::map<std::string, Variable> variables;                                       // local to this level
     int passes_left = 0;  // P: runs of the subprogram still to come after this one
