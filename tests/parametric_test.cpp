@@ -302,6 +302,28 @@ TEST(Parametric, SubprogramsGiveThePlainProgramsPath) {
   }
 }
 
+// covers: NC-PARAM-SUB-4
+TEST(Parametric, SaveRestoresTheCallersModalState) {
+  // KEEP switches to G91, G3 and a TRANS; after its return the caller's G90, G1 and frame hold
+  // again; DRIFT has no SAVE, so its G91 stays.
+  std::string dir = folder_with("save", {{"KEEP.SPF",
+                                          "PROC KEEP(REAL DX) SAVE DISPLOF\nN10 G91 G1 X=DX\nN20 TRANS X100\n"
+                                          "N30 G3 X10 Y0 CR=5\nRET\n"},
+                                         {"DRIFT.SPF", "PROC DRIFT\nN10 G91 G1 X2\nRET\n"}});
+  const std::string main = "N10 G0 X0 Y0 Z0\nN20 G1 X5 F100\nN30 KEEP(5)\nN40 X20 Y5\nN50 DRIFT\nN60 X1\nM30\n";
+  const std::string plain =
+      "N10 G0 X0 Y0 Z0\nN20 G1 X5 F100\nN10 G91 G1 X5\nN30 G3 X10 Y0 CR=5\nN40 G90 G1 X20 Y5\n"
+      "N10 G91 G1 X2\nN60 X1\nM30\n";
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok_p = false, ok_q = false;
+    RunResult p = run_in(engine, main, dir, &ok_p), q = run_engine(engine, plain, {}, &ok_q);
+    ASSERT_TRUE(ok_p && ok_q) << engine;
+    expect_same_path(p, q);
+    ASSERT_EQ(p.path.size(), 6u) << engine;  // N10 does not move
+    EXPECT_EQ(p.path.back().end.x, 23) << engine;  // DRIFT's G91 stays: 22 + 1
+  }
+}
+
 int sub_error(const std::string& main, const std::string& dir, const std::string& words) {
   return error_line(main, words, {}, dir);
 }
@@ -311,7 +333,7 @@ TEST(Parametric, SubprogramErrorsNameFileLineAndCall) {
   std::string dir = folder_with("broken", {{"BROKEN.SPF", "PROC BROKEN(REAL AA)\nG1 X=AA+UNDEF F100\nRET\n"},
                                            {"DEEP.SPF", "PROC DEEP\nDEEP\nRET\n"},
                                            {"WORDS.SPF", "G1 X1 F100\nQQ5\n"},
-                                           {"KEEP.SPF", "PROC KEEP(REAL AA) SAVE\n"}});
+                                           {"SHIFT.SPF", "PROC SHIFT SAVE\nTRANS X5\nG41 G1 X10 Y0 F100 T1 D1\nRET\n"}});
   EXPECT_EQ(sub_error("G0 X0\nN20 BROKEN(5)\n", dir,
                       "in subprogram BROKEN.SPF line 2, column 9 (called from line 2): undefined variable 'UNDEF'"),
             2);
@@ -319,7 +341,7 @@ TEST(Parametric, SubprogramErrorsNameFileLineAndCall) {
   EXPECT_EQ(sub_error("G0 X0\nDEEP\n", dir, "more than 16 program levels"), 2);
   EXPECT_EQ(sub_error("G0 X0\nL99\n", dir, "subprogram L99 not found"), 2);
   EXPECT_EQ(sub_error("BROKEN(1, 2)\n", dir, "2 arguments given, the PROC has 1 parameters"), 1);
-  EXPECT_EQ(sub_error("KEEP(1)\n", dir, "SAVE (restoring the caller's modal state) is not simulated yet"), 1);
+  EXPECT_EQ(sub_error("G0 X0 Y0\nSHIFT\n", dir, "puts back another frame"), 2);
 }
 
 }  // namespace

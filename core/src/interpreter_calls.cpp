@@ -221,10 +221,10 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
   while (i < s.size() && s[i] != ';') {
     std::size_t w = name_end(s, i);
     std::string word = upper_text(s.substr(i, w - i));
-    if (word == "SAVE")
-      throw InputError(cx().line, static_cast<int>(i) + 1,
-                       "PROC … SAVE (restoring the caller's modal state) is not simulated yet");
-    if (word != "DISPLOF" && word != "DISPLON" && word != "SBLOF" && word != "SBLON" && word != "ACTBLOCNO")
+    if (word == "SAVE") {  // NC-PARAM-SUB-4 (run on its own: nothing to restore)
+      if (stack_.size() > 1 && !cx().saved && system_) system_->save_modal_state();
+      cx().saved = stack_.size() > 1;
+    } else if (word != "DISPLOF" && word != "DISPLON" && word != "SBLOF" && word != "SBLON" && word != "ACTBLOCNO")
       throw InputError(
           cx().line, static_cast<int>(i) + 1,
           fmt::format("unexpected '{}' after the parameters of PROC", word.empty() ? std::string(1, s[i]) : word));
@@ -253,6 +253,8 @@ void Interpreter::leave_subprogram() {
   // VAR parameters: the caller's variables take the values.
   std::vector<std::pair<std::string, NcValue>> results;
   for (const auto& [local, caller] : c.by_reference) results.emplace_back(caller, c.variables[local].values[0]);
+  if (c.saved && system_) system_->restore_modal_state();
+  c.saved = false;
   bool again = c.passes_left > 0;
   if (again) {  // P: run it again from its start, with the same arguments
     --c.passes_left;

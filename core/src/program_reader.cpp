@@ -110,6 +110,43 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   return std::nullopt;
 }
 
+void ProgramReader::save_modal_state() {
+  saved_.push_back({state_, units_, diameter_, offset_index_, frame_, circle_definition_});
+}
+
+// NC-PARAM-SUB-4: the modal G functions in force at the call come back, and with them the
+// programmable frame and (if another one was selected) the settable offset. Not the tool
+// radius compensation (group 7, decision 38), nor T, D, F or DISC, which are no G functions.
+void ProgramReader::restore_modal_state() {
+  if (saved_.empty()) return;
+  SavedState s = std::move(saved_.back());
+  saved_.pop_back();
+  state_.motion = s.state.motion;
+  state_.plane = s.state.plane;
+  state_.absolute = s.state.absolute;
+  state_.approach = s.state.approach;
+  state_.corner = s.state.corner;
+  state_.collision = s.state.collision;
+  state_.edge_strategy = s.state.edge_strategy;
+  state_.sar_side = s.state.sar_side;
+  state_.sar_segmentation = s.state.sar_segmentation;
+  state_.feed_type = s.state.feed_type;
+  state_.path_mode = s.state.path_mode;
+  units_ = s.units;
+  diameter_ = s.diameter;
+  circle_definition_ = s.circle_definition;
+  bool frame_changed = s.frame.factor != frame_.factor || s.frame.shift != frame_.shift ||
+                       s.frame.rotation != frame_.rotation || s.frame.rotation_axis != frame_.rotation_axis;
+  if (frame_changed && state_.side != Side::kOff)  // as a programmed frame change (NC-FRAME-1)
+    throw InputError(line_, 1,
+                     "the return from a PROC … SAVE puts back another frame with tool radius compensation G41/G42 "
+                     "in force: deselect with G40 first (not simulated)");
+  bool offset_changed = offset_index_ != s.offset_index;
+  if (offset_changed) select_offset(s.offset_index);
+  frame_ = s.frame;
+  if (frame_changed || offset_changed) refresh_programmed();
+}
+
 void ProgramReader::note(Block& b, std::string_view clause, std::string text) {
   if (!b.notice.empty()) {
     b.notice += "; ";

@@ -39,6 +39,10 @@ class SystemValues {
   // The value of `name` (upper case, with its '$') with the given indices (an axis index is
   // given as 0 X, 1 Y, 2 Z); empty if the variable is not known to cutcom.
   virtual std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) = 0;
+  // NC-PARAM-SUB-4, PROC … SAVE: the modal state when the subprogram starts is kept, and put back
+  // when it returns (every block before has been read by then).
+  virtual void save_modal_state() {}
+  virtual void restore_modal_state() {}
 };
 
 struct InterpreterLimits {
@@ -141,6 +145,7 @@ class Interpreter {
     std::vector<std::pair<std::string, std::string>> by_reference;  // VAR parameter: (local, caller's)
     std::vector<std::optional<NcValue>> args;                       // the call's arguments (empty: left out)
     std::vector<std::string> arg_names;                             // an argument that is a variable, by name
+    bool saved = false;                                             // PROC … SAVE: the state is put back
   };
   static constexpr std::size_t kMaxLevels = 16;  // the main program and 15 subprogram levels
   bool call(std::string_view line, std::size_t word);

@@ -93,6 +93,18 @@ class ProgramReader : private SystemValues {
   bool take_block(Block& out, int line);  // the interpreter's line as a block; false: none
   // NC-PARAM-SYS-1: the system variables a program may read.
   std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) override;
+  // NC-PARAM-SUB-4: PROC … SAVE.
+  void save_modal_state() override;
+  void restore_modal_state() override;
+  struct SavedState {
+    ModalState state;
+    Units units;
+    DiameterMode diameter;
+    int offset_index;
+    ProgrammableFrame frame;
+    std::optional<CircleDefinition> circle_definition;
+  };
+  std::vector<SavedState> saved_;  // one per open PROC … SAVE
   void resolve(Block& b);
   void change_tool(Block& b, ModalState& s);
   void apply_frame(const BlockWords& w, Plane plane);
