@@ -230,6 +230,16 @@ int error_line(const std::string& text, const std::string& words, InterpreterLim
   return 0;
 }
 
+// covers: NC-PARAM-SYS-1
+TEST(Parametric, GGroupsReadTheModalState) {
+  EXPECT_EQ(end_x("G18\nR1=$P_GG[6]\nG17 G1 X=R1 F100\n"), "2");
+  EXPECT_EQ(end_x("G91 G451 CDON\nG90 G1 X=$P_GG[18]*10+$P_GG[40] F100\n"), "22");
+  EXPECT_EQ(end_x("G55 G2 X0 Y0 I1\nG1 X=$P_GG[8]*10+$P_GG[1] F100\n"), "33");
+  EXPECT_EQ(end_x("KONT\nG1 X=$P_GG[17]+$P_GG[14]/10 F100\n"), "2.1");
+  EXPECT_EQ(end_x("G1 KONT X=$P_GG[17] F100\n"), "1");  // read before the block's own words
+  EXPECT_EQ(error_line("R1=$P_GG[99]\n", "system variable $P_GG is not one cutcom knows"), 1);
+}
+
 // covers: NC-PARAM-ERR-1 NC-PARAM-FLOW-6 NC-PARAM-FLOW-1 NC-PARAM-FLOW-3 NC-PARAM-VAR-2
 TEST(Parametric, LanguageErrorsNameTheirLine) {
   EXPECT_EQ(error_line("G1 X0 F100\nG1 X=UNKNOWN\n", "undefined variable 'UNKNOWN'"), 2);

@@ -93,6 +93,7 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
     if (!programmed_known_) refresh_programmed(), programmed_known_ = true;
     return in_units(coord(programmed_, axis));
   }
+  if (n == "$P_GG" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) return g_group_value(idx[0].number);
   if (n.substr(0, 6) == "$TC_DP" && idx.size() == 2) {
     int k = 0;
     for (char c : n.substr(6)) {
@@ -108,6 +109,48 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
                      : 0.0;
   }
   return std::nullopt;
+}
+
+// NC-PARAM-SYS-1: $P_GG[group], the G function in force as its number within the group (the
+// manual's list of G function groups; the first of a group is 1). Only groups cutcom models.
+std::optional<double> ProgramReader::g_group_value(double group) const {
+  auto number = [](auto e) { return static_cast<double>(static_cast<int>(e) + 1); };
+  switch (static_cast<int>(group) == group ? static_cast<int>(group) : -1) {
+    case 1:  // G0 G1 G2 G3 CIP … CT
+      if (circle_definition_) return *circle_definition_ == CircleDefinition::kCip ? 5.0 : 15.0;
+      return number(state_.motion);
+    case 6:  // G17 G18 G19
+      return number(state_.plane);
+    case 7:  // G40 G41 G42
+      return number(state_.side);
+    case 8:  // G500 G54 … G57 G505 … G599
+      return static_cast<double>(offset_index_ + 1);
+    case 13:  // G70 G71 G700 G710
+      return units_ == Units::kG70 ? 1.0 : units_ == Units::kG71 ? 2.0 : units_ == Units::kG700 ? 3.0 : 4.0;
+    case 14:  // G90 G91
+      return state_.absolute ? 1.0 : 2.0;
+    case 15:  // G93 G94 G95
+      return state_.feed_type == FeedType::kG93 ? 1.0 : state_.feed_type == FeedType::kG94 ? 2.0 : 3.0;
+    case 17:  // NORM KONT KONTT KONTC
+      return state_.approach == ApproachMode::kNorm   ? 1.0
+             : state_.approach == ApproachMode::kKont ? 2.0
+             : state_.approach == ApproachMode::kKontT ? 3.0
+                                                       : 4.0;
+    case 18:  // G450 G451
+      return number(state_.corner);
+    case 29:  // DIAMOF DIAMON DIAM90
+      return number(diameter_);
+    case 40:  // CDOF CDON CDOF2
+      return number(state_.collision);
+    case 43:  // G140 G141 G142 G143
+      return number(state_.sar_side);
+    case 44:  // G340 G341
+      return number(state_.sar_segmentation);
+    case 48:  // G460 G461 G462
+      return number(state_.edge_strategy);
+    default:
+      return std::nullopt;
+  }
 }
 
 void ProgramReader::save_modal_state() {

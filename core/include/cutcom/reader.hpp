@@ -93,6 +93,7 @@ class ProgramReader : private SystemValues {
   bool take_block(Block& out, int line);  // the interpreter's line as a block; false: none
   // NC-PARAM-SYS-1: the system variables a program may read.
   std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) override;
+  std::optional<double> g_group_value(double group) const;  // $P_GG[group]
   // NC-PARAM-SUB-4: PROC … SAVE.
   void save_modal_state() override;
   void restore_modal_state() override;
