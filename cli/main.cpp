@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "campaign.hpp"
@@ -36,6 +37,8 @@ struct RunOptions {
   bool trace = false;
   std::int64_t max_loops = cutcom::InterpreterLimits{}.max_backward_jumps;
   std::vector<std::string> search_path;
+  std::vector<std::string> definition_files;
+  std::optional<std::string> arguments;
 };
 
 // A data file given on the command line is wrong: names the file and line (exit 2).
@@ -50,11 +53,28 @@ struct ControlData {
   cutcom::OffsetTable offsets;
   cutcom::InterpreterLimits limits;
   std::vector<std::string> search_path;  // NC-PARAM-SUB-1: the program's folder, then --search-path
+  std::vector<std::pair<std::string, std::string>> definitions;  // NC-PARAM-VAR-3: (file, text)
+  std::optional<std::string> arguments;                          // NC-PARAM-SUB-5
   void into(cutcom::ProgramReader& reader) const {
     reader.tools() = tools;
     reader.offsets() = offsets;
     reader.set_limits(limits);
     reader.set_search_path(search_path);
+    for (const auto& [file, text] : definitions) {
+      std::istringstream in(text);
+      try {
+        reader.load_definitions(in);
+      } catch (const cutcom::InputError& e) {
+        throw FileError(fmt::format("{}:{}:{}: {}", file, e.line(), e.column(), e.detail()));
+      }
+    }
+    if (arguments) {
+      try {
+        reader.set_arguments(*arguments);
+      } catch (const cutcom::InputError& e) {
+        throw FileError(fmt::format("--args, column {}: {}", e.column(), e.detail()));
+      }
+    }
   }
 };
 
@@ -75,6 +95,15 @@ ControlData control_data(const RunOptions& o) {
   for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
   if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
   c.limits.max_backward_jumps = o.max_loops;
+  for (const auto& f : o.definition_files) {
+    if (std::filesystem::is_directory(f)) throw FileError(fmt::format("definitions file '{}' is a directory", f));
+    std::ifstream in(f);
+    if (!in) throw FileError(fmt::format("cannot open definitions file '{}'", f));
+    std::ostringstream text;
+    text << in.rdbuf();
+    c.definitions.emplace_back(f, text.str());
+  }
+  c.arguments = o.arguments;
   std::filesystem::path folder =
       o.program == "-" ? std::filesystem::path(".") : std::filesystem::path(o.program).parent_path();
   c.search_path.push_back(folder.empty() ? "." : folder.string());
@@ -358,6 +387,10 @@ int main(int argc, char** argv) {
   run->add_option("--max-loops", o.max_loops,
                   "loop passes and backward jumps before a program counts as running away (NC-PARAM-FLOW-6)")
       ->check(CLI::PositiveNumber);
+  run->add_option("--definitions", o.definition_files,
+                  "global user data: a file of DEF lines (GUD, DEF.DIR/*.DEF) every program level sees (repeatable)");
+  run->add_option("--args", o.arguments,
+                  "run PROGRAM, a subprogram, on its own with these arguments, e.g. --args \"40, 2.5, , 1\"");
   run->add_option("--search-path", o.search_path,
                   "folder where subprograms (NAME.SPF) are looked for after the program's own (repeatable)")
       ->check(CLI::ExistingDirectory);

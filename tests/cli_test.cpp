@@ -344,4 +344,32 @@ TEST(Cli, ParametricExampleRunsAndARunawayLoopStops) {
   EXPECT_EQ(loop.status, 2);
   EXPECT_NE(loop.out.find("line 3, column 1: the program runs away: more than 500"), std::string::npos) << loop.out;
 }
+
+// covers: NC-PARAM-VAR-3 NC-PARAM-SUB-5 NC-PARAM-SUB-2
+TEST(Cli, DefinitionsFileAndASubprogramRunOnItsOwn) {
+  const std::string dir = CUTCOM_BINARY_DIR;
+  std::ofstream(dir + "/gud.def") << "%_N_GUD_DEF\n; global data\nDEF NCK SYNRW REAL PHU 1 LLI 0 ULI 99 APW 2 _DEPTH=2.5\n"
+                                      "DEF CHAN INT _LAPS\nM30\n";
+  std::ofstream(dir + "/WALL.SPF") << "PROC WALL(REAL LEN, INT LAPS)\nG1 Z=-_DEPTH F100\nG1 X=LEN*LAPS\n_LAPS=LAPS\n"
+                                      "G1 X=_LAPS\nM17\n";
+  Result ok = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/gud.def --args \"4, 3\" --format json");
+  ASSERT_EQ(ok.status, 0) << ok.out;
+  auto j = nlohmann::json::parse(ok.out);
+  ASSERT_EQ(j["path"].size(), 3u);
+  EXPECT_EQ(j["path"][0]["end"][2], -2.5);
+  EXPECT_EQ(j["path"][1]["end"][0], 12);
+  EXPECT_EQ(j["path"][2]["end"][0], 3);
+  // Without the definitions the variable is undefined; a wrong definitions line or argument list
+  // names where it is wrong.
+  Result missing = sh(kCli + " run " + dir + "/WALL.SPF --args \"4, 3\"", true);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.out.find("line 2, column 7: undefined variable '_DEPTH'"), std::string::npos) << missing.out;
+  std::ofstream(dir + "/bad.def") << "DEF REAL _OK\nG1 X1\n";
+  Result bad = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/bad.def", true);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("bad.def:2:1: a definitions file holds DEF lines only"), std::string::npos) << bad.out;
+  Result args = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/gud.def --args \"4, 3, 1\"", true);
+  EXPECT_EQ(args.status, 2);
+  EXPECT_NE(args.out.find("3 arguments given, the PROC has 2 parameters"), std::string::npos) << args.out;
+}
 }  // namespace

@@ -57,7 +57,9 @@ bool Interpreter::maybe_parametric(std::string_view s) {
 
 Interpreter::Variable* Interpreter::find_variable(const std::string& name) {
   auto it = cx().variables.find(name);
-  return it == cx().variables.end() ? nullptr : &it->second;
+  if (it != cx().variables.end()) return &it->second;
+  auto global = globals_.find(name);  // NC-PARAM-VAR-3: GUD, seen at every level
+  return global == globals_.end() ? nullptr : &global->second;
 }
 
 NcValue Interpreter::evaluate(std::string_view expression, int line) {
@@ -171,7 +173,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     std::size_t k = after;
     bool indexed = k < s.size() && s[k] == '[';
     bool r_indexed = indexed && n == "R";
-    bool variable = is_r_parameter(n) || r_indexed || cx().variables.count(n) > 0;
+    bool variable = is_r_parameter(n) || r_indexed || find_variable(n) != nullptr;
     bool tool_data = n.rfind("$TC_", 0) == 0;  // other system variables go to the lexer as written
     if (indexed && (variable || tool_data)) {
       // Indices as expressions: R[expr], A[i,j], $TC_DP6[t,d].
@@ -223,7 +225,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
           throw InputError(cx().line, static_cast<int>(v) + 1, "an R parameter holds a number, not a string");
         r_[r] = value.number;
       } else {
-        Variable& var = cx().variables[n];
+        Variable& var = *find_variable(n);
         store(var, lookup.offset(n, var, indices, start), value, start);
       }
       i = p.position();

@@ -74,7 +74,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
   } else {
     bool l_number = n.size() > 1 && n[0] == 'L';
     for (std::size_t k = 1; l_number && k < n.size(); ++k) l_number = is_digit(n[k]);
-    if (!l_number && (n.size() < 2 || cx().variables.count(n) || is_r_parameter(n))) return false;
+    if (!l_number && (n.size() < 2 || find_variable(n) || is_r_parameter(n))) return false;
     bool next_ok = i >= s.size() || s[i] == ';' || s[i] == '(' ||
                    (upper(s[i]) == 'P' && i + 1 < s.size() && (is_digit(s[i + 1]) || s[i + 1] == '='));
     if (!next_ok) return false;
@@ -95,35 +95,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
   std::vector<std::optional<NcValue>> args;
   std::vector<std::string> names;
   if (i < s.size() && s[i] == '(') {
-    ++i;
-    i = skip_space(s, i);
-    if (i < s.size() && s[i] == ')') {
-      ++i;
-    } else {
-      while (true) {
-        i = skip_space(s, i);
-        if (i < s.size() && (s[i] == ',' || s[i] == ')')) {
-          args.emplace_back(), names.emplace_back();  // left out: the parameter's default
-        } else {
-          std::size_t ne = name_end(s, i);
-          std::size_t after = skip_space(s, ne);
-          names.push_back(after < s.size() && (s[after] == ',' || s[after] == ')') ? upper_text(s.substr(i, ne - i))
-                                                                                   : "");
-          ExpressionParser p(s, i, cx().line, lookup);
-          args.push_back(p.parse());
-          i = skip_space(s, p.position());
-        }
-        if (i < s.size() && s[i] == ',') {
-          ++i;
-          continue;
-        }
-        if (i < s.size() && s[i] == ')') {
-          ++i;
-          break;
-        }
-        throw InputError(cx().line, static_cast<int>(i) + 1, "')' or ',' expected in the call");
-      }
-    }
+    arguments(s, ++i, args, names);
     i = skip_space(s, i);
   }
   int passes = 1;
@@ -155,6 +127,76 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
   c.arg_names = std::move(names);
   stack_.push_back(std::move(c));
   return true;
+}
+
+// The arguments of a call from just after its '(' to just after its ')': values, a left-out one
+// empty; an argument that is only a name is also kept by name (for a VAR parameter).
+void Interpreter::arguments(std::string_view s, std::size_t& i, std::vector<std::optional<NcValue>>& args,
+                            std::vector<std::string>& names) {
+  InterpreterLookup lookup(*this, cx().line);
+  i = skip_space(s, i);
+  if (i < s.size() && s[i] == ')') {
+    ++i;
+    return;
+  }
+  while (true) {
+    i = skip_space(s, i);
+    if (i < s.size() && (s[i] == ',' || s[i] == ')')) {
+      args.emplace_back(), names.emplace_back();  // left out: the parameter's default
+    } else {
+      std::size_t ne = name_end(s, i);
+      std::size_t after = skip_space(s, ne);
+      names.push_back(after < s.size() && (s[after] == ',' || s[after] == ')') ? upper_text(s.substr(i, ne - i)) : "");
+      ExpressionParser p(s, i, cx().line, lookup);
+      args.push_back(p.parse());
+      i = skip_space(s, p.position());
+    }
+    if (i < s.size() && s[i] == ',') {
+      ++i;
+      continue;
+    }
+    if (i < s.size() && s[i] == ')') {
+      ++i;
+      return;
+    }
+    throw InputError(cx().line, static_cast<int>(i) + 1, "')' or ',' expected in the call");
+  }
+}
+
+// NC-PARAM-SUB-5: a subprogram file run on its own takes these arguments as if called with them.
+void Interpreter::set_arguments(std::string_view list) {
+  std::string text = "(" + std::string(list) + ")";
+  std::size_t i = 1;
+  std::vector<std::string> names;
+  cx().args.clear();
+  try {
+    arguments(text, i, cx().args, names);
+    if (skip_space(text, i) != text.size())
+      throw InputError(0, static_cast<int>(i), "unexpected text after the arguments");
+  } catch (const InputError& e) {
+    throw InputError(0, std::max(1, e.column() - 1), "in the arguments given: " + e.detail());
+  }
+}
+
+// NC-PARAM-VAR-3: the DEF lines of a definitions file (GUD); comments, block numbers, a header
+// (%_N_…_DEF) and the closing M17/M30/RET are allowed around them.
+void Interpreter::load_definitions(std::istream& in) {
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    try {
+      std::size_t rest;
+      std::string first = first_word(line, rest);
+      std::size_t start = skip_space(line, 0);
+      if (first.empty() && (start >= line.size() || line[start] == ';' || line[start] == '%')) continue;
+      if (first == "M17" || first == "M30" || first == "M2" || first == "M02" || first == "RET") continue;
+      if (first != "DEF") throw InputError(n, static_cast<int>(start) + 1, "a definitions file holds DEF lines only");
+      define(line, rest, globals_);
+    } catch (const InputError& e) {
+      throw InputError(n, e.column(), e.detail());
+    }
+  }
 }
 
 // NC-PARAM-SUB-2: PROC name(type par, VAR type par, …): the parameters become local variables,
@@ -270,6 +312,8 @@ void Interpreter::leave_subprogram() {
       r_[r_number(name)] = value.number;
     } else if (auto it = caller.variables.find(name); it != caller.variables.end() && it->second.dims.empty()) {
       store(it->second, 0, value, 0);
+    } else if (auto g = globals_.find(name); g != globals_.end() && g->second.dims.empty()) {
+      store(g->second, 0, value, 0);
     }
   }
 }

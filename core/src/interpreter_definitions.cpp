@@ -1,6 +1,7 @@
 // Definitions of user variables (NC-PARAM-VAR-2): DEF type name[dims][=value], ….
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cutcom/interpreter.hpp"
@@ -13,12 +14,15 @@ namespace cutcom {
 using namespace interpreter_text;
 
 // NC-PARAM-VAR-2: DEF type name[dims][=value], …
-void Interpreter::define(std::string_view s, std::size_t i) {
+void Interpreter::define(std::string_view s, std::size_t i, std::map<std::string, Variable>& into) {
   InterpreterLookup lookup(*this, cx().line);
   i = skip_space(s, i);
   std::size_t e = name_end(s, i);
   std::string type = upper_text(s.substr(i, e - i));
-  if (type == "NCK" || type == "CHAN") {  // GUD scope words
+  // Words of global data before the type: range, preprocessing stop, initialisation time.
+  static constexpr std::string_view kBefore[] = {"NCK",   "CHAN",  "SYNR",  "SYNW", "SYNRW",
+                                                 "INIPO", "INIRE", "INICF", "PRLOC"};
+  while (std::find(std::begin(kBefore), std::end(kBefore), type) != std::end(kBefore)) {
     i = skip_space(s, e);
     e = name_end(s, i);
     type = upper_text(s.substr(i, e - i));
@@ -44,6 +48,19 @@ void Interpreter::define(std::string_view s, std::size_t i) {
     std::size_t c = s.find(']', i);
     if (c == std::string_view::npos) throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
     i = skip_space(s, c + 1);
+  }
+  // After it: physical unit, limits and access rights, each with its value (not checked here).
+  static constexpr std::string_view kAttributes[] = {"PHU", "LLI", "ULI", "APR", "APW", "APRP", "APWP", "APRB", "APWB"};
+  while (true) {
+    std::size_t a = name_end(s, i);
+    if (std::find(std::begin(kAttributes), std::end(kAttributes), upper_text(s.substr(i, a - i))) ==
+        std::end(kAttributes))
+      break;
+    std::size_t v = skip_space(s, a);
+    std::size_t ve = v;
+    while (ve < s.size() && (is_digit(s[ve]) || s[ve] == '.' || s[ve] == '-' || s[ve] == '+')) ++ve;
+    if (ve == v) throw InputError(cx().line, static_cast<int>(v) + 1, "a value is expected after the attribute");
+    i = skip_space(s, ve);
   }
   while (true) {
     std::size_t n0 = i;
@@ -77,8 +94,8 @@ void Interpreter::define(std::string_view s, std::size_t i) {
       throw InputError(cx().line, static_cast<int>(n0) + 1, "the program's variables hold more than 4000000 values");
     NcValue zero = t == NcValue::Type::kString ? NcValue::string("") : NcValue{t, 0, {}};
     var.values.assign(count, zero);
-    cx().variables[name] = var;  // a second DEF of a name starts it again
-    Variable& v = cx().variables[name];
+    into[name] = var;  // a second DEF of a name starts it again
+    Variable& v = into[name];
     if (i < s.size() && s[i] == '=') {
       std::size_t at = skip_space(s, i + 1);
       std::size_t w = name_end(s, at);

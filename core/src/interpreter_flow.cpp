@@ -160,7 +160,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     return true;
   }
   if (k == "DEF") {
-    define(s, rest);
+    define(s, rest, cx().variables);
     return true;
   }
   if (k == "PROC") {

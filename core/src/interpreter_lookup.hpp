@@ -35,7 +35,7 @@ class InterpreterLookup : public ExpressionParser::Lookup {
     if (!v) fail(at, fmt::format("undefined variable '{}'", n));
     return v->values[offset(n, *v, idx, at)];
   }
-  bool is_variable(const std::string& n) const override { return it_.cx().variables.count(n) > 0; }
+  bool is_variable(const std::string& n) const override { return it_.find_variable(n) != nullptr; }
 
   double r_value(const NcValue& index, std::size_t at) {
     int k = r_index(index, at);

@@ -65,6 +65,12 @@ class Interpreter {
     search_path_ = std::move(dirs);
     found_.clear();
   }
+  // NC-PARAM-VAR-3: a definitions file (GUD, DEF.DIR/*.DEF): its DEF lines make variables every
+  // program level sees. Errors name the line of that file.
+  void load_definitions(std::istream& in);
+  // NC-PARAM-SUB-5: the program is a subprogram run on its own with these arguments ("5, 2.5, , 1"),
+  // as if called with them.
+  void set_arguments(std::string_view list);
   bool in_subprogram() const { return stack_.size() > 1; }
   int current_line() const { return cx().line; }  // in the file being read
   // An error found in a subprogram's block, named with its file, line and calls (NC-PARAM-SUB-3).
@@ -96,7 +102,7 @@ class Interpreter {
   // Runs one line's statements and assignments; `out` is the plain block (empty: none).
   void run_line(const std::string& text, std::string& out);
   bool statement(std::string_view keyword, std::string_view line, std::size_t rest);
-  void define(std::string_view line, std::size_t at);
+  void define(std::string_view line, std::size_t at, std::map<std::string, Variable>& into);
   void store(Variable& var, std::size_t offset, const NcValue& value, std::size_t at);
   std::vector<NcValue> values(std::string_view line, std::size_t& i, char close, InterpreterLookup& lookup);
   double counter(const std::string& name);
@@ -149,6 +155,8 @@ class Interpreter {
   };
   static constexpr std::size_t kMaxLevels = 16;  // the main program and 15 subprogram levels
   bool call(std::string_view line, std::size_t word);
+  void arguments(std::string_view line, std::size_t& i, std::vector<std::optional<NcValue>>& args,
+                 std::vector<std::string>& names);
   void procedure(std::string_view line, std::size_t at);
   void leave_subprogram();
   std::optional<std::string> find_subprogram(const std::string& name) const;
@@ -160,7 +168,8 @@ class Interpreter {
   InterpreterLimits limits_;
   std::string raw_;
   std::vector<Context> stack_;
-  std::map<int, double> r_;  // R parameters: global
+  std::map<int, double> r_;                  // R parameters: global
+  std::map<std::string, Variable> globals_;  // NC-PARAM-VAR-3: GUD from definition files
   std::vector<std::string> search_path_;
   mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
   std::int64_t backward_jumps_ = 0;

@@ -87,6 +87,10 @@ class ProgramReader : private SystemValues {
   // NC-PARAM-SUB-1: the folders subprograms are looked for in, the program's own first.
   void set_search_path(std::vector<std::string> dirs) { interpreter_.set_search_path(std::move(dirs)); }
   void set_source_name(std::string name) { source_ = std::move(name); }
+  // NC-PARAM-VAR-3: global user data (GUD) from a definitions file; errors name its lines.
+  void load_definitions(std::istream& in) { interpreter_.load_definitions(in); }
+  // NC-PARAM-SUB-5: the program is a subprogram run on its own with these arguments.
+  void set_arguments(std::string_view list) { interpreter_.set_arguments(list); }
 
  private:
   bool read_block(Block& out);
