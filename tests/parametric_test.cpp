@@ -170,6 +170,37 @@ TEST(Parametric, LoopRepeatAndLabelsAfterTheEnd) {
   expect_same_path(p.ref, q.ref);
 }
 
+// covers: NC-PARAM-FLOW-1 NC-PARAM-FLOW-2 NC-PARAM-FLOW-3
+TEST(Parametric, JumpsOutOfStructures) {
+  // A GOTOB out of an IF branch (a depth loop written with a jump), a GOTOF out of a WHILE and of
+  // an IF inside a FOR: the structures left end there, nothing is left open at the end.
+  const std::string parametric =
+      "R1=0\n"
+      "N10 G1 X=R1*10 F100\n"
+      "R1=R1+1\n"
+      "IF R1<3\n"
+      "  G1 Y=R1\n"
+      "  GOTOB N10\n"
+      "ENDIF\n"
+      "WHILE 1\n"
+      "  G1 Y=-R1\n"
+      "  IF R1>=3 GOTOF OUT\n"
+      "ENDWHILE\n"
+      "OUT: FOR R2=1 TO 5\n"
+      "  IF R2==2\n"
+      "    GOTOF DONE\n"
+      "  ENDIF\n"
+      "  G1 X=R2\n"
+      "ENDFOR\n"
+      "DONE: G1 Y0\n"
+      "M30\n";
+  const std::string plain = "G1 X0 F100\nY1\nX10\nY2\nX20\nY-3\nX1\nY0\nM30\n";
+  Runs p = run_both(parametric), q = run_both(plain);
+  ASSERT_TRUE(p.fast_ok && p.ref_ok && q.fast_ok && q.ref_ok);
+  expect_same_path(p.fast, q.fast);
+  expect_same_path(p.ref, q.ref);
+}
+
 // covers: NC-PARAM-FLOW-5
 TEST(Parametric, SectionRepetitionsAndCase) {
   // REPEAT START P=2 runs START…N30 twice more; REPEATB N30 P=2 runs N30 twice; CASE picks by

@@ -72,7 +72,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     bool c = condition(rest, end);
     nothing_after(end, "the condition of WHILE");
     if (c)
-      cx().frames.push_back({Frame::Kind::kWhile, cx().line_start, cx().line - 1, {}, 0});
+      cx().frames.push_back({Frame::Kind::kWhile, cx().line_start, cx().line - 1, {}, 0, cx().line});
     else
       skip_block("WHILE", "ENDWHILE", false);
     return true;
@@ -109,7 +109,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
       skip_block("FOR", "ENDFOR", false);
       return true;
     }
-    cx().frames.push_back({Frame::Kind::kFor, cx().offset, cx().line, var, last.number});
+    cx().frames.push_back({Frame::Kind::kFor, cx().offset, cx().line, var, last.number, cx().line});
     return true;
   }
   if (k == "ENDFOR") {
@@ -125,7 +125,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
   }
   if (k == "LOOP") {  // NC-PARAM-FLOW-3
     nothing_after(rest, "LOOP");
-    cx().frames.push_back({Frame::Kind::kLoop, cx().offset, cx().line, {}, 0});
+    cx().frames.push_back({Frame::Kind::kLoop, cx().offset, cx().line, {}, 0, cx().line});
     return true;
   }
   if (k == "ENDLOOP") {
@@ -139,7 +139,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
       repeat_section(s, rest, k == "REPEATB");
       return true;
     }
-    cx().frames.push_back({Frame::Kind::kRepeat, cx().offset, cx().line, {}, 0});
+    cx().frames.push_back({Frame::Kind::kRepeat, cx().offset, cx().line, {}, 0, cx().line});
     return true;
   }
   if (k == "UNTIL") {
@@ -224,10 +224,17 @@ void Interpreter::jump(std::string_view target, bool forward, bool backward, boo
   control_flow_ = true;
   int from_line = cx().line;
   std::streamoff from = cx().offset;
-  if (forward && find_forward(target)) return;
+  Passed passed;
+  if (forward && find_forward(target, &passed)) {
+    leave_structures(passed);
+    return;
+  }
   if (backward) {
     if (forward) seek(from, from_line);
-    if (find_backward(target, from_line)) return;
+    if (find_backward(target, from_line)) {
+      leave_structures_from(cx().line + 1);
+      return;
+    }
   }
   if (!must_exist) {  // GOTOC: no target, no jump
     seek(from, from_line);
@@ -240,8 +247,9 @@ void Interpreter::jump(std::string_view target, bool forward, bool backward, boo
                                                    : "before this block"));
 }
 
-bool Interpreter::find_forward(std::string_view target) {
+bool Interpreter::find_forward(std::string_view target, Passed* passed) {
   std::string text;
+  int if_depth = 0, loop_depth = 0;  // structures opened and closed on the way
   while (true) {
     std::streamoff start = cx().offset;
     int line = cx().line;
@@ -253,7 +261,37 @@ bool Interpreter::find_forward(std::string_view target) {
       seek(start, line);
       return true;
     }
+    if (!passed) continue;
+    std::size_t rest;
+    std::string w = first_word(text, rest);
+    if (w == "IF" && !has_jump(text)) {
+      ++if_depth;
+    } else if (w == "ENDIF") {
+      if (if_depth > 0)
+        --if_depth;
+      else
+        ++passed->ifs;
+    } else if (w == "WHILE" || w == "FOR" || w == "LOOP" || (w == "REPEAT" && skip_space(text, rest) >= text.size())) {
+      ++loop_depth;
+    } else if (w == "ENDWHILE" || w == "ENDFOR" || w == "ENDLOOP" || w == "UNTIL") {
+      if (loop_depth > 0)
+        --loop_depth;
+      else
+        ++passed->loops;
+    }
   }
+}
+
+// NC-PARAM-FLOW-1: a jump forward out of IF branches and loops ends them (their end words were
+// passed); a jump back to before where one opened ends it too (it opens again when run).
+void Interpreter::leave_structures(const Passed& passed) {
+  for (int k = 0; k < passed.ifs && !cx().open_ifs.empty(); ++k) cx().open_ifs.pop_back();
+  for (int k = 0; k < passed.loops && !cx().frames.empty(); ++k) cx().frames.pop_back();
+}
+
+void Interpreter::leave_structures_from(int target_line) {
+  while (!cx().open_ifs.empty() && cx().open_ifs.back() >= target_line) cx().open_ifs.pop_back();
+  while (!cx().frames.empty() && cx().frames.back().open_line >= target_line) cx().frames.pop_back();
 }
 
 bool Interpreter::find_backward(std::string_view target, int before_line) {

@@ -93,6 +93,7 @@ class Interpreter {
     int body_line;         // the number of lines before that position
     std::string variable;  // FOR: the counter
     double end = 0;        // FOR: the last value
+    int open_line = 0;     // the line of its opening word
   };
 
   bool getline(std::string& text);
@@ -109,7 +110,12 @@ class Interpreter {
   void assign_counter(const std::string& name, double value, std::size_t at);
   // Jumps (NC-PARAM-FLOW-1): to a label or block number, forward, backward or both.
   void jump(std::string_view target, bool forward, bool backward, bool must_exist, std::size_t at);
-  bool find_forward(std::string_view target);
+  struct Passed {  // end words of open structures a forward search went past
+    int ifs = 0, loops = 0;
+  };
+  bool find_forward(std::string_view target, Passed* passed = nullptr);
+  void leave_structures(const Passed& passed);
+  void leave_structures_from(int target_line);
   bool find_backward(std::string_view target, int before_line);
   static bool defines(std::string_view text, std::string_view target);
   // Skips lines to the `end` word matching `open` (nesting counted); with `or_else`, also stops
