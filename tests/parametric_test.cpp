@@ -360,9 +360,33 @@ TEST(Parametric, SaveRestoresTheCallersModalState) {
     RunResult p = run_in(engine, main, dir, &ok_p), q = run_engine(engine, plain, {}, &ok_q);
     ASSERT_TRUE(ok_p && ok_q) << engine;
     expect_same_path(p, q);
-    ASSERT_EQ(p.path.size(), 6u) << engine;  // N10 does not move
+    ASSERT_EQ(p.path.size(), 6u) << engine;        // N10 does not move
     EXPECT_EQ(p.path.back().end.x, 23) << engine;  // DRIFT's G91 stays: 22 + 1
   }
+}
+
+// covers: NC-PARAM-SUB-6 NC-PARAM-ERR-2
+TEST(Parametric, ModalCallRunsAfterEveryMove) {
+  // MCALL HOLE(2) runs HOLE after each block that moves in this level (not after its own moves,
+  // not after a frame), until MCALL alone; SETAL stops the run with the program's alarm.
+  std::string dir = folder_with("modal", {{"HOLE.SPF", "PROC HOLE(REAL DEPTH)\nN10 G1 Z=-DEPTH F50\nN20 G0 Z2\nRET\n"},
+                                          {"CHECK.SPF",
+                                           "PROC CHECK(REAL WIDTH)\nIF WIDTH<=0\n  SETAL(61101)\nENDIF\n"
+                                           "G1 X=WIDTH\nRET\n"}});
+  const std::string main =
+      "N10 G0 X0 Y0 Z2\nN20 MCALL HOLE(2)\nN30 X10\nN40 TRANS X0\nN50 Y10 F100\nN60 MCALL\nN70 X20\nM30\n";
+  const std::string plain =
+      "N10 G0 X0 Y0 Z2\nN30 X10\nN10 G1 Z-2 F50\nN20 G0 Z2\nN50 Y10 F100\nN10 G1 Z-2 F50\nN20 G0 Z2\nN70 X20\n"
+      "M30\n";
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok_p = false, ok_q = false;
+    RunResult p = run_in(engine, main, dir, &ok_p), q = run_engine(engine, plain, {}, &ok_q);
+    ASSERT_TRUE(ok_p && ok_q) << engine;
+    expect_same_path(p, q);
+    EXPECT_EQ(p.path.size(), 8u) << engine;
+  }
+  EXPECT_EQ(error_line("G0 X0\nCHECK(5)\nCHECK(0)\n", "the program raises alarm 61101 (SETAL)", {}, dir), 3);
+  EXPECT_EQ(error_line("MCALL NOSUCH(1)\n", "neither a standard cycle nor a subprogram found", {}, dir), 1);
 }
 
 int sub_error(const std::string& main, const std::string& dir, const std::string& words) {
@@ -371,10 +395,11 @@ int sub_error(const std::string& main, const std::string& dir, const std::string
 
 // covers: NC-PARAM-SUB-3 NC-PARAM-SUB-2 NC-PARAM-SUB-1 NC-PARAM-ERR-1
 TEST(Parametric, SubprogramErrorsNameFileLineAndCall) {
-  std::string dir = folder_with("broken", {{"BROKEN.SPF", "PROC BROKEN(REAL AA)\nG1 X=AA+UNDEF F100\nRET\n"},
-                                           {"DEEP.SPF", "PROC DEEP\nDEEP\nRET\n"},
-                                           {"WORDS.SPF", "G1 X1 F100\nQQ5\n"},
-                                           {"SHIFT.SPF", "PROC SHIFT SAVE\nTRANS X5\nG41 G1 X10 Y0 F100 T1 D1\nRET\n"}});
+  std::string dir =
+      folder_with("broken", {{"BROKEN.SPF", "PROC BROKEN(REAL AA)\nG1 X=AA+UNDEF F100\nRET\n"},
+                             {"DEEP.SPF", "PROC DEEP\nDEEP\nRET\n"},
+                             {"WORDS.SPF", "G1 X1 F100\nQQ5\n"},
+                             {"SHIFT.SPF", "PROC SHIFT SAVE\nTRANS X5\nG41 G1 X10 Y0 F100 T1 D1\nRET\n"}});
   EXPECT_EQ(sub_error("G0 X0\nN20 BROKEN(5)\n", dir,
                       "in subprogram BROKEN.SPF line 2, column 9 (called from line 2): undefined variable 'UNDEF'"),
             2);

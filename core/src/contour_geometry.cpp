@@ -20,9 +20,7 @@ IPoint turned(const IPoint& p, Decimal degrees) {
   return {c * p.a - s * p.o, s * p.a + c * p.o};
 }
 
-IPoint Element::tangent_at_start() const {
-  return arc ? Interval::integer(sense) * perp(start - centre) : end - start;
-}
+IPoint Element::tangent_at_start() const { return arc ? Interval::integer(sense) * perp(start - centre) : end - start; }
 IPoint Element::tangent_at_end() const { return arc ? Interval::integer(sense) * perp(end - centre) : end - start; }
 
 Element element_of(const Block& b) {
@@ -228,7 +226,9 @@ Interval longest_leg(const Element& e, const IPoint& corner, const IPoint& far) 
   return Interval::integer(2) * e.radius;
 }
 
-bool fits(const Element& e1, const Element& e2, const CornerCut& cut) { return within(e1, cut.t1) && within(e2, cut.t2); }
+bool fits(const Element& e1, const Element& e2, const CornerCut& cut) {
+  return within(e1, cut.t1) && within(e2, cut.t2);
+}
 
 }  // namespace
 

@@ -2,8 +2,8 @@
 // position in the frame's own system that partial and polar programming start from.
 #include <fmt/format.h>
 
-#include "cutcom/reader.hpp"
 #include "contour_geometry.hpp"
+#include "cutcom/reader.hpp"
 
 namespace cutcom {
 
@@ -49,16 +49,18 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
       if (angle.is_zero()) continue;
       if (a == applicate) continue;
       if (angle != Decimal::from_int(180))
-        fail(fmt::format("ROT/AROT {}{}: a rotation that tilts the working plane is SINUMERIK NC that cutcom does "
-                         "not simulate",
-                         "XYZ"[a], aw.value.to_string()));
+        fail(
+            fmt::format("ROT/AROT {}{}: a rotation that tilts the working plane is SINUMERIK NC that cutcom does "
+                        "not simulate",
+                        "XYZ"[a], aw.value.to_string()));
       auto [p, q] = rotation_plane(a);
       frame_.factor[p] = -frame_.factor[p];
       frame_.factor[q] = -frame_.factor[q];
     }
-    Decimal turn = w.cw().rpl ? *w.cw().rpl : w.axis[static_cast<std::size_t>(applicate)].present
-                                        ? w.axis[static_cast<std::size_t>(applicate)].value
-                                        : Decimal{};
+    Decimal turn = w.cw().rpl ? *w.cw().rpl
+                   : w.axis[static_cast<std::size_t>(applicate)].present
+                       ? w.axis[static_cast<std::size_t>(applicate)].value
+                       : Decimal{};
     if (w.cw().rpl && w.axis[static_cast<std::size_t>(applicate)].present)
       fail("RPL= and a rotation about the applicate in one block");
     turn = reduced(turn);
@@ -68,8 +70,7 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
     auto [p, q] = rotation_plane(applicate);
     Decimal fa = frame_.factor[p], fo = frame_.factor[q];
     // R·F·R(v) = R·R(±v)·F when F scales both plane axes alike (mirrored: the turn reverses).
-    if (fa != fo && fa != -fo)
-      fail("a rotation after scaling the plane axes differently is a shear: not simulated");
+    if (fa != fo && fa != -fo) fail("a rotation after scaling the plane axes differently is a shear: not simulated");
     frame_.rotation = reduced(frame_.rotation + ((fa.sign() < 0) != (fo.sign() < 0) ? -turn : turn));
     frame_.rotation_axis = applicate;
     return;

@@ -174,8 +174,10 @@ bool detail::round_all(const Interval* values, std::size_t n, Decimal* out, bool
         break;
       }
       // A tie at the last precision: away from zero is the end point of larger magnitude.
-      if (mpfr_sgn(hi) > 0 && mpfr_sgn(lo) >= 0) mpfr_set(lo, hi, MPFR_RNDN);
-      else if (mpfr_sgn(hi) > 0) mpfr_set_zero(lo, 1);  // straddles 0 by less than a unit: 0
+      if (mpfr_sgn(hi) > 0 && mpfr_sgn(lo) >= 0)
+        mpfr_set(lo, hi, MPFR_RNDN);
+      else if (mpfr_sgn(hi) > 0)
+        mpfr_set_zero(lo, 1);  // straddles 0 by less than a unit: 0
     }
     Int128 units = 0;
     if (!units_of(lo, units) || units > Decimal::kMaxUnits * 1000 || units < -Decimal::kMaxUnits * 1000)

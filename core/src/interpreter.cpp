@@ -74,6 +74,12 @@ NcValue Interpreter::evaluate(std::string_view expression, int line) {
 bool Interpreter::next(std::string& text, int& line) {
   while (true) {
     try {
+      if (modal_call_due_) {  // NC-PARAM-SUB-6: the block before moved
+        modal_call_due_ = false;
+        ModalCall m = *modal_call_;
+        enter(m.file, std::move(m.args), std::move(m.names), 1, 0);
+        continue;
+      }
       // NC-PARAM-FLOW-5: the last block of a repeated section has run.
       if (!cx().sections.empty() && cx().line == cx().sections.back().last_line) {
         end_section_pass();
@@ -157,6 +163,30 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     std::size_t j = name_end(s, i);
     std::string n = upper_text(s.substr(i, j - i));
     std::size_t after = skip_space(s, j);
+    // NC-PARAM-ERR-2: the program raises an alarm of its own and the control stops.
+    if (n == "SETAL" && after < s.size() && s[after] == '(') {
+      std::size_t e = after + 1;
+      std::vector<NcValue> args = values(s, e, ')', lookup);
+      std::string number = args.empty() ? "?" : grid_text(args[0], cx().line, after);
+      throw InputError(cx().line, static_cast<int>(start) + 1,
+                       fmt::format("the program raises alarm {} (SETAL): the control stops here", number));
+    }
+    // MSG(expression): the message as the operator would read it.
+    if (n == "MSG" && after < s.size() && s[after] == '(' && skip_space(s, after + 1) < s.size() &&
+        s[skip_space(s, after + 1)] != ')') {
+      ExpressionParser p(s, after + 1, cx().line, lookup);
+      NcValue text = p.parse();
+      std::size_t e = skip_space(s, p.position());
+      if (e >= s.size() || s[e] != ')') throw InputError(cx().line, static_cast<int>(e) + 1, "MSG: ')' expected");
+      std::string shown = text.type == NcValue::Type::kString ? text.text : grid_text(text, cx().line, after);
+      for (char& c : shown)
+        if (c == '"') c = '\'';
+      out.append(s, space, start - space);
+      out += "MSG(\"" + shown + "\")";
+      words = true;
+      i = e + 1;
+      continue;
+    }
     // Jumps end a block's words (NC-PARAM-FLOW-1).
     if (n == "GOTOF" || n == "GOTOB" || n == "GOTO" || n == "GOTOC") {
       std::size_t t = skip_space(s, j);

@@ -52,6 +52,30 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
   std::size_t w = name_end(s, word);
   std::string n = upper_text(s.substr(word, w - word));
   std::size_t i = skip_space(s, w);
+  bool modal = n == "MCALL";  // NC-PARAM-SUB-6
+  if (modal) {
+    if (i >= s.size() || s[i] == ';') {  // MCALL alone ends a modal call (a cycle's too: the reader's)
+      modal_call_.reset();
+      return false;
+    }
+    std::size_t e = name_end(s, i);
+    std::string target = upper_text(s.substr(i, e - i));
+    modal_call_.reset();  // a new MCALL replaces the one in force
+    std::optional<std::string> file = find_subprogram(target);
+    if (!file) return false;  // a standard cycle, or an error: the lexer names it
+    std::vector<std::optional<NcValue>> args;
+    std::vector<std::string> names;
+    std::size_t k = skip_space(s, e);
+    if (k < s.size() && s[k] == '(') {
+      arguments(s, ++k, args, names);
+      k = skip_space(s, k);
+    }
+    if (k < s.size() && s[k] != ';')
+      throw InputError(cx().line, static_cast<int>(k) + 1, "a modal call takes its block alone");
+    control_flow_ = true;
+    modal_call_ = ModalCall{*file, std::move(args), std::move(names), stack_.size()};
+    return true;
+  }
   bool explicit_call = n == "CALL" || n == "PCALL" || n == "EXTCALL";
   if (explicit_call) {
     std::size_t e;
@@ -113,20 +137,25 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
   }
   if (i < s.size() && s[i] != ';')
     throw InputError(cx().line, static_cast<int>(i) + 1, "a subprogram call takes its block alone");
+  enter(*file, std::move(args), std::move(names), passes, word);
+  return true;
+}
+
+void Interpreter::enter(const std::string& file, std::vector<std::optional<NcValue>> args,
+                        std::vector<std::string> names, int passes, std::size_t word) {
   if (stack_.size() >= kMaxLevels)
     throw InputError(
         cx().line, static_cast<int>(word) + 1,
         fmt::format("more than {} program levels (subprograms calling subprograms: NC-PARAM-SUB-2)", kMaxLevels));
   control_flow_ = true;
   Context c;
-  c.owned = std::make_unique<std::ifstream>(*file);
+  c.owned = std::make_unique<std::ifstream>(file);
   c.in = c.owned.get();
-  c.name = std::filesystem::path(*file).filename().string();
+  c.name = std::filesystem::path(file).filename().string();
   c.passes_left = passes - 1;
   c.args = std::move(args);
   c.arg_names = std::move(names);
   stack_.push_back(std::move(c));
-  return true;
 }
 
 // The arguments of a call from just after its '(' to just after its ')': values, a left-out one

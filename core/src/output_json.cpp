@@ -45,8 +45,10 @@ void JsonWriter::element(const PathElement& e) {
   if (e.origin.sar != SarMove::kNone) o["sar"] = sar_move_name(e.origin.sar);
   if (e.origin.insert.kind != InsertKind::kNone) {  // NC-CONTOUR-*: an element the reader inserted
     o["inserted"] = insert_kind_name(e.origin.insert.kind);
-    if (e.origin.insert.kind == InsertKind::kTurn) o["turn"] = e.origin.insert.turn;
-    else o["corner_next_line"] = e.origin.insert.next_line;
+    if (e.origin.insert.kind == InsertKind::kTurn)
+      o["turn"] = e.origin.insert.turn;
+    else
+      o["corner_next_line"] = e.origin.insert.next_line;
   }
   o["text"] = describe(e.origin);
   j["origin"] = o;
@@ -57,10 +59,8 @@ void JsonWriter::element(const PathElement& e) {
 }
 
 void JsonWriter::action(const ActionEvent& a) {
-  append(actions_, json{{"line", a.line},
-                        {"block", block_ref(a.block)},
-                        {"function", a.function.name()},
-                        {"at", point(a.at)}});
+  append(actions_,
+         json{{"line", a.line}, {"block", block_ref(a.block)}, {"function", a.function.name()}, {"at", point(a.at)}});
 }
 
 void JsonWriter::decision(const Decision& d) {

@@ -95,7 +95,8 @@ std::string describe_kind(const Origin& o) {
     case OriginKind::kOffset:
       return fmt::format("offset of {}", b);
     case OriginKind::kTransitionCircle:
-      return fmt::format("transition circle at corner {}/{}", b, inserted_name(o.next_line, o.next_block, o.next_insert));
+      return fmt::format("transition circle at corner {}/{}", b,
+                         inserted_name(o.next_line, o.next_block, o.next_insert));
     case OriginKind::kRetraction:
       return fmt::format("retraction {}", b);
     case OriginKind::kInfeed:

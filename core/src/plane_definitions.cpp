@@ -61,9 +61,12 @@ void ProgramReader::set_pole(const BlockWords& w, Plane plane) {
   int axes[2] = {pa.abscissa, pa.ordinate};
   for (std::size_t k = 0; k < 2; ++k) {
     const AxisWord& aw = w.axis[static_cast<std::size_t>(axes[k])];
-    if (aw.present) pole_[k] = from[k] + frame_value(axes[k], aw, Decimal{}, true);
-    else if (*w.cw().pole == PoleWord::kG111) pole_[k] = Decimal{};
-    else pole_[k] = from[k];
+    if (aw.present)
+      pole_[k] = from[k] + frame_value(axes[k], aw, Decimal{}, true);
+    else if (*w.cw().pole == PoleWord::kG111)
+      pole_[k] = Decimal{};
+    else
+      pole_[k] = from[k];
   }
 }
 
@@ -110,13 +113,16 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   Decimal eo = has_o ? frame_value(pa.ordinate, w.axis[io], so, abs_of(w.axis[io])) : so;
 
   if (polar) {  // NC-POLAR-2: AP and RP are modal; AP=IC() turns from the last AP
-    if (w.cw().ap.present) polar_angle_ = w.cw().ap.mode == ValueMode::kIncremental ? polar_angle_ + w.cw().ap.value : w.cw().ap.value;
+    if (w.cw().ap.present)
+      polar_angle_ = w.cw().ap.mode == ValueMode::kIncremental ? polar_angle_ + w.cw().ap.value : w.cw().ap.value;
     if (w.cw().rp) polar_radius_ = length(*w.cw().rp);
   }
   if (ang) {  // NC-CONTOUR-3
     if (has_a && has_o) {
-      if (!pending_ang_ || !pending_) fail("ANG= with both plane coordinates: the end point is given twice (ANG "
-                                            "with one coordinate, or in the second block of a two-block definition)");
+      if (!pending_ang_ || !pending_)
+        fail(
+            "ANG= with both plane coordinates: the end point is given twice (ANG "
+            "with one coordinate, or in the second block of a two-block definition)");
     } else if (!has_a && !has_o) {
       ang_open_ = true;  // the first block of a two-block definition: its end is the corner
     }

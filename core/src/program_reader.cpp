@@ -111,6 +111,11 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   return std::nullopt;
 }
 
+// A move given in polar coordinates only (AP=, RP=) without a pole word.
+bool ProgramReader::polar_move(const BlockWords& w) {
+  return (w.cw().ap.present || w.cw().rp.has_value()) && !w.cw().pole && !w.frame;
+}
+
 // NC-PARAM-SYS-1: $P_GG[group], the G function in force as its number within the group (the
 // manual's list of G function groups; the first of a group is 1). Only groups cutcom models.
 std::optional<double> ProgramReader::g_group_value(double group) const {
@@ -132,8 +137,8 @@ std::optional<double> ProgramReader::g_group_value(double group) const {
     case 15:  // G93 G94 G95
       return state_.feed_type == FeedType::kG93 ? 1.0 : state_.feed_type == FeedType::kG94 ? 2.0 : 3.0;
     case 17:  // NORM KONT KONTT KONTC
-      return state_.approach == ApproachMode::kNorm   ? 1.0
-             : state_.approach == ApproachMode::kKont ? 2.0
+      return state_.approach == ApproachMode::kNorm    ? 1.0
+             : state_.approach == ApproachMode::kKont  ? 2.0
              : state_.approach == ApproachMode::kKontT ? 3.0
                                                        : 4.0;
     case 18:  // G450 G451
@@ -459,7 +464,8 @@ void ProgramReader::resolve(Block& b) {
     unknown_line_ = w.line;
   }
   if (frame_values)
-    for (AxisWord& aw : w.axis) aw.present = false;  // NC-FRAME-1: the frame's values, not a move
+    for (AxisWord& aw : w.axis) aw.present = false;                        // NC-FRAME-1: the frame's values, not a move
+  if (w.programs_any_axis() || polar_move(w)) interpreter_.block_moved();  // NC-PARAM-SUB-6: MCALL
 
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
   bool has_centre = w.centre[0].present || w.centre[1].present || w.centre[2].present;

@@ -82,9 +82,10 @@ void ToolTable::load(std::istream& in, const std::string& source_name) {
     if (!ours) {
       // Other tool management data ($TC_TP8, $TC_MOP…, $TC_ADPT…, $A_…): no effect on the path.
       if (u[0] == '$') return;
-      throw InputError(n, 1, fmt::format("{}: not a line of a tool-offset archive ($TC_DPn[t,d]=…, "
-                                         "$TC_TP2[t]=\"NAME\")",
-                                         source_name));
+      throw InputError(n, 1,
+                       fmt::format("{}: not a line of a tool-offset archive ($TC_DPn[t,d]=…, "
+                                   "$TC_TP2[t]=\"NAME\")",
+                                   source_name));
     }
     BlockWords w;
     try {

@@ -91,7 +91,7 @@ void WordLexer::keyword_value(const std::string& n, std::size_t at) {
     set_once(out_.cw_set().turn, v, "TURN", at);
   } else if (n == "RPL") {
     set_once(out_.cw_set().rpl, plain_value("RPL", true), "RPL", at);  // NC-FRAME-4
-  } else if (n == "CIP" || n == "CT") {  // NC-CONTOUR-4: circles of the motion group
+  } else if (n == "CIP" || n == "CT") {                                // NC-CONTOUR-4: circles of the motion group
     if (out_.cw().circle_definition || out_.motion) fail("two G codes of the motion group in one block", at);
     out_.cw_set().circle_definition = n == "CIP" ? CircleDefinition::kCip : CircleDefinition::kCt;
   } else {
@@ -103,8 +103,12 @@ void WordLexer::keyword_value(const std::string& n, std::size_t at) {
 void WordLexer::contour_value(const std::string& n, std::size_t at) {
   Decimal v = plain_value(n, true);
   if (v.sign() < 0) fail(fmt::format("{} must not be negative", n), at);
-  Opt<Decimal>& slot = n == "RND" ? out_.cw_set().rnd : n == "RNDM" ? out_.cw_set().rndm : n == "CHF" ? out_.cw_set().chf
-                     : n == "CHR" ? out_.cw_set().chr : n == "FRC" ? out_.cw_set().frc : out_.cw_set().frcm;
+  Opt<Decimal>& slot = n == "RND"    ? out_.cw_set().rnd
+                       : n == "RNDM" ? out_.cw_set().rndm
+                       : n == "CHF"  ? out_.cw_set().chf
+                       : n == "CHR"  ? out_.cw_set().chr
+                       : n == "FRC"  ? out_.cw_set().frc
+                                     : out_.cw_set().frcm;
   set_once(slot, v, n, at);
 }
 
@@ -142,8 +146,7 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
                                       : DiameterMode::kDiamof,
                       "DIAMON/DIAMOF/DIAM90", at);
     case NamedWord::kCycle:  // NC-CYCLE-1: a standard cycle is not simulated
-      if (!out_.not_simulated.empty())
-        fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, n), at);
+      if (!out_.not_simulated.empty()) fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, n), at);
       skip_space();
       if (peek() == '(') balanced_arguments(n, at);
       out_.not_simulated = n;
@@ -158,9 +161,9 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
       std::string cycle = letters();
       name_tail(cycle);
       if (classify_named_word(cycle) != NamedWord::kCycle)
-        fail(fmt::format("MCALL of '{}': only standard cycles can be called modally (subprograms are not "
-                         "supported yet)",
-                         cycle),
+        fail(fmt::format("MCALL of '{}': neither a standard cycle nor a subprogram found ({}.SPF in the program's "
+                         "folder or --search-path)",
+                         cycle, cycle),
              cat);
       skip_space();
       if (peek() == '(') balanced_arguments(cycle, cat);

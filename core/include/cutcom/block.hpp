@@ -279,7 +279,7 @@ struct Block {
   int index = 0;        // 0-based block index in the program
   bool circle = false;  // set by the reader: see is_arc()
 
-  SarTag sar;  // a SAR sub-block (engines only; the reader leaves it empty)
+  SarTag sar;            // a SAR sub-block (engines only; the reader leaves it empty)
   ContourInsert insert;  // an element the reader inserted (NC-CONTOUR-*); kNone for programmed ones
   // A notice of the reader's on this block (a move not simulated, a position assumed): the
   // engines pass it to the sink when they take the block.

@@ -49,7 +49,7 @@ class Decimal {
   Decimal scaled(std::int64_t num, std::int64_t den, bool* exact = nullptr) const;
   // value * factor on the grid (NC-UNIT-2); |factor| must stay below 9.2e9 (frames allow 1000).
   Decimal times(Decimal factor) const {
-    return factor == from_int(1) ? *this
+    return factor == from_int(1)    ? *this
            : factor == from_int(-1) ? -*this
                                     : scaled(static_cast<std::int64_t>(factor.units()), kUnitsPerOne);
   }

@@ -71,6 +71,11 @@ class Interpreter {
   // NC-PARAM-SUB-5: the program is a subprogram run on its own with these arguments ("5, 2.5, , 1"),
   // as if called with them.
   void set_arguments(std::string_view list);
+  // NC-PARAM-SUB-6: the reader read a block that moves; a modal call (MCALL) of this level runs
+  // its subprogram before the next block.
+  void block_moved() {
+    if (modal_call_ && stack_.size() == modal_call_->level) modal_call_due_ = true;
+  }
   bool in_subprogram() const { return stack_.size() > 1; }
   int current_line() const { return cx().line; }  // in the file being read
   // An error found in a subprogram's block, named with its file, line and calls (NC-PARAM-SUB-3).
@@ -161,6 +166,17 @@ class Interpreter {
   };
   static constexpr std::size_t kMaxLevels = 16;  // the main program and 15 subprogram levels
   bool call(std::string_view line, std::size_t word);
+  // The subprogram in `file` starts: its lines are read next.
+  void enter(const std::string& file, std::vector<std::optional<NcValue>> args, std::vector<std::string> names,
+             int passes, std::size_t word);
+  struct ModalCall {  // MCALL NAME(arguments): after every move of the level it was programmed in
+    std::string file;
+    std::vector<std::optional<NcValue>> args;
+    std::vector<std::string> names;
+    std::size_t level;
+  };
+  std::optional<ModalCall> modal_call_;
+  bool modal_call_due_ = false;
   void arguments(std::string_view line, std::size_t& i, std::vector<std::optional<NcValue>>& args,
                  std::vector<std::string>& names);
   void procedure(std::string_view line, std::size_t at);

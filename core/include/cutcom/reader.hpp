@@ -3,16 +3,16 @@
 // Both are streaming: a program of any length is read with bounded memory.
 #pragma once
 
-#include <istream>
 #include <array>
 #include <deque>
-#include <vector>
+#include <istream>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "cutcom/block.hpp"
 #include "cutcom/input_error.hpp"
@@ -98,6 +98,7 @@ class ProgramReader : private SystemValues {
   // NC-PARAM-SYS-1: the system variables a program may read.
   std::optional<double> system_value(std::string_view name, const std::vector<NcValue>& indices) override;
   std::optional<double> g_group_value(double group) const;  // $P_GG[group]
+  static bool polar_move(const BlockWords& w);
   // NC-PARAM-SUB-4: PROC … SAVE.
   void save_modal_state() override;
   void restore_modal_state() override;
@@ -115,13 +116,12 @@ class ProgramReader : private SystemValues {
   void apply_frame(const BlockWords& w, Plane plane);
   Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
   Decimal length(const Decimal& v) const;  // the unit of a programmed length
-  Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
-                      bool distance = false) const;
+  Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
   // The translation of the settable offset in force relative to the first one, kept per change.
   const Point3& offset_difference() const { return offset_difference_; }
   void select_offset(int index);
   bool mirrors_plane(Plane plane) const;  // the selected settable offset relative to the first
-  void refresh_programmed();         // programmed_ from position_ after a frame or offset change
+  void refresh_programmed();              // programmed_ from position_ after a frame or offset change
   void update_programmed(const BlockWords& w, bool absolute_mode);
   void set_pole(const BlockWords& w, Plane plane);
   bool plane_definition(Block& b, ModalState& eff);  // NC-POLAR-*, NC-CONTOUR-3..5, NC-FRAME-4
@@ -139,7 +139,7 @@ class ProgramReader : private SystemValues {
   std::string text_;
   int line_ = 0;
   int index_ = 0;
-  int end_line_ = 0;  // line of M2/M30, 0 before it
+  int end_line_ = 0;    // line of M2/M30, 0 before it
   bool ended_ = false;  // M2/M30 ended a program with control flow: nothing more is read
   ModalState state_;
   ModalState effective_;  // the last block's state as the engines see it (NC-FRAME-3)
@@ -151,29 +151,29 @@ class ProgramReader : private SystemValues {
   std::optional<std::int64_t> preselected_;
   Units units_ = Units::kG71;
   DiameterMode diameter_ = DiameterMode::kDiamof;
-  int offset_index_ = 0;         // G500
-  Point3 offset_difference_;     // of offset_index_ (select_offset)
+  int offset_index_ = 0;      // G500
+  Point3 offset_difference_;  // of offset_index_ (select_offset)
   bool offsets_changed_ = false;
-  int first_offset_ = -1;        // the settable offset whose workpiece system the output uses
-  ProgrammableFrame frame_;      // programmable frame
-  Point3 programmed_;            // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
-  bool programmed_known_ = true;  // else recomputed from position_ when a block needs it
-  std::array<Decimal, 2> pole_{};  // NC-POLAR-1: in the frame's system, plane abscissa/ordinate
-  Decimal polar_angle_, polar_radius_;  // NC-POLAR-2: the last AP and RP
+  int first_offset_ = -1;                              // the settable offset whose workpiece system the output uses
+  ProgrammableFrame frame_;                            // programmable frame
+  Point3 programmed_;                                  // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
+  bool programmed_known_ = true;                       // else recomputed from position_ when a block needs it
+  std::array<Decimal, 2> pole_{};                      // NC-POLAR-1: in the frame's system, plane abscissa/ordinate
+  Decimal polar_angle_, polar_radius_;                 // NC-POLAR-2: the last AP and RP
   std::optional<CircleDefinition> circle_definition_;  // CIP/CT in force (motion group)
-  Decimal rounding_modal_;          // RNDM (0: off)
-  Decimal corner_feed_modal_;       // FRCM (0: off)
-  std::optional<Block> pending_;    // NC-CONTOUR-*: held until the next element
+  Decimal rounding_modal_;                             // RNDM (0: off)
+  Decimal corner_feed_modal_;                          // FRCM (0: off)
+  std::optional<Block> pending_;                       // NC-CONTOUR-*: held until the next element
   bool pending_ang_ = false;
-  Decimal pending_radius_;          // RND/RNDM radius and FRCM feed in force when pending_ was read
+  Decimal pending_radius_;  // RND/RNDM radius and FRCM feed in force when pending_ was read
   Decimal pending_feed_;
-  bool ang_open_ = false;           // the block just resolved opens a two-block ANG definition
-  Block last_element_;              // geometry of the last block that moved in the plane (CT)
-  bool last_element_valid_ = false;        // pending_ is the first block of a two-block ANG definition
-  std::vector<Block> between_;      // up to three blocks without plane motion after pending_
-  std::deque<Block> ready_;         // resolved blocks waiting to be handed out
-  std::array<bool, 3> unknown_{};  // NC-CYCLE-1: axes whose position a cycle left unknown
-  std::string unknown_after_;      // what left them unknown
+  bool ang_open_ = false;            // the block just resolved opens a two-block ANG definition
+  Block last_element_;               // geometry of the last block that moved in the plane (CT)
+  bool last_element_valid_ = false;  // pending_ is the first block of a two-block ANG definition
+  std::vector<Block> between_;       // up to three blocks without plane motion after pending_
+  std::deque<Block> ready_;          // resolved blocks waiting to be handed out
+  std::array<bool, 3> unknown_{};    // NC-CYCLE-1: axes whose position a cycle left unknown
+  std::string unknown_after_;        // what left them unknown
   int unknown_line_ = 0;
   bool modal_call_ = false;
   std::string modal_cycle_;
