@@ -246,12 +246,14 @@ int run_command(const RunOptions& o) {
     cutcom::JsonWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
+    writer.set_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
     ok = run_engine(o.engine, reader, md, writer, o);
     writer.finish();
   } else {
     cutcom::TextWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
+    writer.set_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
     ok = run_engine(o.engine, reader, md, writer, o);
     writer.finish();
   }

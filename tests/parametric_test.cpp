@@ -389,6 +389,26 @@ TEST(Parametric, ModalCallRunsAfterEveryMove) {
   EXPECT_EQ(error_line("MCALL NOSUCH(1)\n", "neither a standard cycle nor a subprogram found", {}, dir), 1);
 }
 
+// covers: NC-PARAM-SUB-3
+TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
+  std::string dir = folder_with("provenance", {{"OUTER.SPF", "N10 G1 X5 F100\nN20 INNER\nRET\n"},
+                                               {"INNER.SPF", "; inner\nN30 G1 Y5\nM17\n"}});
+  for (const char* engine : {"fast", "ref"}) {
+    std::istringstream in("N10 G0 X0 Y0\nN20 OUTER\nN30 X0\nM30\n");
+    MachineData md;
+    ProgramReader reader(in, md.initial_state());
+    reader.set_search_path({dir});
+    CollectingSink sink;
+    ASSERT_TRUE(std::string(engine) == "ref" ? ref::run(reader, md, sink) : fast::run(reader, md, sink));
+    const auto& path = sink.result.path;
+    ASSERT_EQ(path.size(), 3u) << engine;
+    EXPECT_EQ(reader.source_text(path[0].origin.source), "OUTER.SPF line 1") << engine;
+    EXPECT_EQ(reader.source_text(path[1].origin.source), "INNER.SPF line 2, called from OUTER.SPF line 2") << engine;
+    EXPECT_EQ(path[1].origin.line, 2) << engine;  // the main program's calling line
+    EXPECT_EQ(path[2].origin.source, 0u) << engine;
+  }
+}
+
 int sub_error(const std::string& main, const std::string& dir, const std::string& words) {
   return error_line(main, words, {}, dir);
 }

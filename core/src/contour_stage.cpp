@@ -218,6 +218,7 @@ void ProgramReader::finish_pending(Block* next) {
       for (Block& m : between_) set_plane(m.start, ax, v[2], v[3]), set_plane(m.end, ax, v[2], v[3]);
       Block ins;
       ins.words.line = p.words.line;
+      ins.words.source = p.words.source;
       ins.words.number = p.words.number;
       ins.words.word_count = 1;
       for (int a : {ax.abscissa, ax.ordinate}) {

@@ -27,6 +27,16 @@ InputError Interpreter::where(const InputError& e) const {
                     fmt::format("{} (called from line {}): {}", chain, stack_.front().line, e.detail()));
 }
 
+std::uint32_t Interpreter::block_source() {
+  if (stack_.size() == 1) return 0;
+  std::string key = fmt::format("{} line {}", cx().name, cx().line);
+  for (std::size_t k = stack_.size() - 1; k-- > 1;)
+    key += fmt::format(", called from {} line {}", stack_[k].name, stack_[k].line);
+  auto [it, added] = source_ids_.try_emplace(std::move(key), static_cast<std::uint32_t>(source_names_.size()));
+  if (added) source_names_.push_back(it->first);
+  return it->second;
+}
+
 // The file of a subprogram: NAME.SPF (or .MPF, any case) in the program's folder or the search
 // path (NC-PARAM-SUB-1).
 std::optional<std::string> Interpreter::find_subprogram(const std::string& name) const {

@@ -51,6 +51,7 @@ void JsonWriter::element(const PathElement& e) {
       o["corner_next_line"] = e.origin.insert.next_line;
   }
   o["text"] = describe(e.origin);
+  if (e.origin.source != 0 && sources_) o["source"] = sources_(e.origin.source);  // NC-PARAM-SUB-3
   j["origin"] = o;
   if (!e.rapid) j["feed"] = e.feed.to_string();
   if (!e.rapid && e.feed_type == FeedType::kG95) j["feed_type"] = "G95";

@@ -26,6 +26,7 @@ void TextWriter::element(const PathElement& e) {
                       : e.feed_type == FeedType::kG93 ? "feed/t"
                                                       : "feed",
                       pt(e.start), pt(e.end), describe(e.origin));
+  if (e.origin.source != 0 && sources_) out_ << fmt::format(" (in {})", sources_(e.origin.source));
   if (e.type == ElementType::kArc) out_ << fmt::format("  centre {} {}", pt(e.center), e.ccw ? "ccw" : "cw");
   out_ << "\n";
 }

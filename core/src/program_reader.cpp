@@ -51,6 +51,7 @@ bool ProgramReader::read_block(Block& out) {
     try {
       bool taken = take_block(out, interpreter_.current_line());
       out.words.line = line_;
+      out.words.source = interpreter_.block_source();
       if (taken) return true;
       if (ended_) return false;
     } catch (const InputError& e) {

@@ -17,6 +17,7 @@ namespace cutcom::fast {
 // What fast keeps of a block: converted once, copied into fixed slots (no allocation).
 struct BlockCopy {
   int line = 0;
+  std::uint32_t source = 0;  // NC-PARAM-SUB-3
   int block = 0;  // the block's index in the program: its identity (inserted elements share a line)
   std::optional<std::int64_t> number;
   PathPoint start, end;  // programmed, workpiece coordinates
@@ -48,6 +49,7 @@ struct BlockCopy {
   static BlockCopy of(const Block& b) {
     BlockCopy c;
     c.line = b.words.line;
+    c.source = b.words.source;
     c.block = b.index;
     c.number = b.words.number;
     c.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};

@@ -128,7 +128,7 @@ class Compensation {
   void actions(BlockCopy& b, const PathPoint& at);
   Origin origin(const BlockCopy& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.line, o.block = b.number, o.sar = b.sar, o.insert = b.insert;
+    o.kind = kind, o.line = b.line, o.source = b.source, o.block = b.number, o.sar = b.sar, o.insert = b.insert;
     return o;
   }
   void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, OriginKind kind, bool rapid) {

@@ -17,6 +17,7 @@ Vec2 plane_of(const Point3& p, PlaneAxes a) {
 
 void SarExpansion::keep_last_contour(const Block& b) {
   last_contour_.words.line = b.words.line, last_contour_.words.number = b.words.number;
+  last_contour_.words.source = b.words.source;
   last_contour_.words.cr = b.words.cr;
   last_contour_.index = b.index, last_contour_.state = b.state;
   last_contour_.start = b.start, last_contour_.end = b.end, last_contour_.centre = b.centre;

@@ -85,7 +85,7 @@ class Compensation {
 
   Origin origin(const Block& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.words.line, o.block = b.words.number, o.sar = b.sar.move, o.insert = b.insert;
+    o.kind = kind, o.line = b.words.line, o.source = b.words.source, o.block = b.words.number, o.sar = b.sar.move, o.insert = b.insert;
     return o;
   }
 

@@ -112,6 +112,7 @@ struct ContourWords {
 // The words of a block other than its action lists (reset as a whole for every block).
 struct BlockWordFields {
   int line = 0;                    // 1-based source line
+  std::uint32_t source = 0;        // NC-PARAM-SUB-3: where in a subprogram (0: the line itself)
   int word_count = 0;              // 0: blank or comment-only line
   Opt<std::int64_t> number;        // N number
   std::array<AxisWord, 3> axis;    // X Y Z

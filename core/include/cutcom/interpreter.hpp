@@ -76,6 +76,10 @@ class Interpreter {
   void block_moved() {
     if (modal_call_ && stack_.size() == modal_call_->level) modal_call_due_ = true;
   }
+  // NC-PARAM-SUB-3: an id for where the block just returned stands in its subprogram and the
+  // subprograms that called it (0: in the main program); the same place keeps its id.
+  std::uint32_t block_source();
+  const std::string& source_text(std::uint32_t id) const { return source_names_[id < source_names_.size() ? id : 0]; }
   bool in_subprogram() const { return stack_.size() > 1; }
   int current_line() const { return cx().line; }  // in the file being read
   // An error found in a subprogram's block, named with its file, line and calls (NC-PARAM-SUB-3).
@@ -191,7 +195,9 @@ class Interpreter {
   std::string raw_;
   std::vector<Context> stack_;
   std::map<int, double> r_;                  // R parameters: global
-  std::map<std::string, Variable> globals_;  // NC-PARAM-VAR-3: GUD from definition files
+  std::map<std::string, Variable> globals_;
+  std::vector<std::string> source_names_{""};
+  std::map<std::string, std::uint32_t> source_ids_;  // NC-PARAM-VAR-3: GUD from definition files
   std::vector<std::string> search_path_;
   mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
   std::int64_t backward_jumps_ = 0;

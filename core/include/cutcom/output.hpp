@@ -2,6 +2,8 @@
 // SVG pictures of the programmed contour and the tool-centre path.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -9,6 +11,9 @@
 #include "cutcom/sink.hpp"
 
 namespace cutcom {
+
+// NC-PARAM-SUB-3: the text of an origin's `source` (where in a subprogram), from the reader.
+using SourceNames = std::function<const std::string&(std::uint32_t)>;
 
 // Streams path elements as they arrive; lists kept for the end (alarms, notices, trace).
 class JsonWriter : public PathSink {
@@ -21,9 +26,11 @@ class JsonWriter : public PathSink {
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;
   void finish();
+  void set_sources(SourceNames names) { sources_ = std::move(names); }
 
  private:
   std::ostream& out_;
+  SourceNames sources_;
   bool with_trace_;
   bool first_ = true;
   std::string actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
@@ -39,9 +46,11 @@ class TextWriter : public PathSink {
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;
   void finish();
+  void set_sources(SourceNames names) { sources_ = std::move(names); }
 
  private:
   std::ostream& out_;
+  SourceNames sources_;
   bool with_trace_;
   int count_ = 0;
 };

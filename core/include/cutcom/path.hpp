@@ -29,6 +29,7 @@ enum class OriginKind : std::uint8_t {
 struct Origin {
   OriginKind kind = OriginKind::kProgrammed;
   int line = 0;                       // source line of the block
+  std::uint32_t source = 0;           // NC-PARAM-SUB-3: where in a subprogram (the reader's names)
   std::optional<std::int64_t> block;  // its N number
   int next_line = 0;                  // transition circle: line of the second corner block
   std::optional<std::int64_t> next_block;

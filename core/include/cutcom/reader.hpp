@@ -87,6 +87,9 @@ class ProgramReader : private SystemValues {
   // NC-PARAM-SUB-1: the folders subprograms are looked for in, the program's own first.
   void set_search_path(std::vector<std::string> dirs) { interpreter_.set_search_path(std::move(dirs)); }
   void set_source_name(std::string name) { source_ = std::move(name); }
+  // NC-PARAM-SUB-3: where a block of a subprogram stands ("INNER.SPF line 4, called from
+  // OUTER.SPF line 7"), by the id its origin carries; "" for 0.
+  const std::string& source_text(std::uint32_t id) const { return interpreter_.source_text(id); }
   // NC-PARAM-VAR-3: global user data (GUD) from a definitions file; errors name its lines.
   void load_definitions(std::istream& in) { interpreter_.load_definitions(in); }
   // NC-PARAM-SUB-5: the program is a subprogram run on its own with these arguments.
