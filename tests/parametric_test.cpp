@@ -350,10 +350,14 @@ TEST(Parametric, SaveRestoresTheCallersModalState) {
   std::string dir = folder_with("save", {{"KEEP.SPF",
                                           "PROC KEEP(REAL DX) SAVE DISPLOF\nN10 G91 G1 X=DX\nN20 TRANS X100\n"
                                           "N30 G3 X10 Y0 CR=5\nRET\n"},
-                                         {"DRIFT.SPF", "PROC DRIFT\nN10 G91 G1 X2\nRET\n"}});
-  const std::string main = "N10 G0 X0 Y0 Z0\nN20 G1 X5 F100\nN30 KEEP(5)\nN40 X20 Y5\nN50 DRIFT\nN60 X1\nM30\n";
+                                         {"DRIFT.SPF", "PROC DRIFT\nN10 G91 G1 X2\nRET\n"},
+                                         {"kont.mpf", "G1 X999\n"},
+                                         {"G17.SPF", "G1 X999\n"}});
+  // Files named as words the reader knows (KONT, G17) are never called.
+  const std::string main =
+      "N10 G0 X0 Y0 Z0\nKONT\nG17\nN20 G1 X5 F100\nN30 KEEP(5)\nN40 X20 Y5\nN50 DRIFT\nN60 X1\nM30\n";
   const std::string plain =
-      "N10 G0 X0 Y0 Z0\nN20 G1 X5 F100\nN10 G91 G1 X5\nN30 G3 X10 Y0 CR=5\nN40 G90 G1 X20 Y5\n"
+      "N10 G0 X0 Y0 Z0\nKONT\nG17\nN20 G1 X5 F100\nN10 G91 G1 X5\nN30 G3 X10 Y0 CR=5\nN40 G90 G1 X20 Y5\n"
       "N10 G91 G1 X2\nN60 X1\nM30\n";
   for (const char* engine : {"fast", "ref"}) {
     bool ok_p = false, ok_q = false;
@@ -391,8 +395,8 @@ TEST(Parametric, ModalCallRunsAfterEveryMove) {
 
 // covers: NC-PARAM-SUB-3
 TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
-  std::string dir = folder_with("provenance", {{"OUTER.SPF", "N10 G1 X5 F100\nN20 INNER\nRET\n"},
-                                               {"INNER.SPF", "; inner\nN30 G1 Y5\nM17\n"}});
+  std::string dir = folder_with(
+      "provenance", {{"OUTER.SPF", "N10 G1 X5 F100\nN20 INNER\nRET\n"}, {"INNER.SPF", "; inner\nN30 G1 Y5\nM17\n"}});
   for (const char* engine : {"fast", "ref"}) {
     std::istringstream in("N10 G0 X0 Y0\nN20 OUTER\nN30 X0\nM30\n");
     MachineData md;

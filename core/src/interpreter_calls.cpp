@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "cutcom/interpreter.hpp"
+#include "cutcom/reader.hpp"
 #include "interpreter_lookup.hpp"
 #include "interpreter_text.hpp"
 #include "nc_expression.hpp"
@@ -25,6 +26,20 @@ InputError Interpreter::where(const InputError& e) const {
     chain += fmt::format(", called from {} line {}", stack_[k].name, stack_[k].line);
   return InputError(stack_.front().line, 1,
                     fmt::format("{} (called from line {}): {}", chain, stack_.front().line, e.detail()));
+}
+
+bool Interpreter::reader_knows(const std::string& word) {
+  auto known = known_words_.find(word);
+  if (known != known_words_.end()) return known->second;
+  bool knows = true;
+  try {
+    BlockWords w;
+    parse_block_words(word, 0, w);
+  } catch (const InputError&) {
+    knows = false;
+  }
+  if (known_words_.size() < 4096) known_words_.emplace(word, knows);
+  return knows;
 }
 
 std::uint32_t Interpreter::block_source() {
@@ -112,6 +127,9 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     bool next_ok = i >= s.size() || s[i] == ';' || s[i] == '(' ||
                    (upper(s[i]) == 'P' && i + 1 < s.size() && (is_digit(s[i + 1]) || s[i + 1] == '='));
     if (!next_ok) return false;
+    // A word the block reader knows (KONT, CDON, G17, X10, CYCLE81, …) is never a call, whatever
+    // files the folders hold.
+    if (!l_number && reader_knows(n)) return false;
     if (!find_subprogram(n)) {
       if (l_number)
         throw InputError(

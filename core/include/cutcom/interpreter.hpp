@@ -186,6 +186,8 @@ class Interpreter {
   void procedure(std::string_view line, std::size_t at);
   void leave_subprogram();
   std::optional<std::string> find_subprogram(const std::string& name) const;
+  bool reader_knows(const std::string& word);  // the block reader reads it as a word
+  std::map<std::string, bool> known_words_;
 
   Context& cx() { return stack_.back(); }
   const Context& cx() const { return stack_.back(); }
