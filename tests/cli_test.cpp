@@ -325,7 +325,7 @@ TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
 }  // namespace
 
 namespace {
-// covers: NC-PARAM-FLOW-4 NC-PARAM-FLOW-3 NC-PARAM-FLOW-6 CLI-1
+// covers: NC-PARAM-FLOW-4 NC-PARAM-FLOW-3 NC-PARAM-FLOW-6 CLI-1 NC-PARAM-SUB-1 NC-PARAM-SUB-3 NC-PARAM-SUB-4
 TEST(Cli, ParametricExampleRunsAndARunawayLoopStops) {
   const std::string example = CUTCOM_SOURCE_DIR "/examples/slots.mpf";
   Result fast = sh(kCli + " run " + example + " --format json");
@@ -338,6 +338,20 @@ TEST(Cli, ParametricExampleRunsAndARunawayLoopStops) {
   for (const auto& e : f["path"]) approaches += e["origin"]["kind"] == "approach";
   EXPECT_EQ(approaches, 6);
   EXPECT_EQ(f["path"].size(), r["path"].size());
+  // The machine builder's cycle called for two sizes: two SAR approaches, eight roundings, the
+  // subprogram's lines named.
+  const std::string cycle = CUTCOM_SOURCE_DIR "/examples/cycle/FLANGE.MPF";
+  Result cf = sh(kCli + " run " + cycle + " --format json");
+  Result cr = sh(kCli + " run " + cycle + " --format json --engine ref");
+  ASSERT_EQ(cf.status, 0) << cf.out;
+  ASSERT_EQ(cr.status, 0) << cr.out;
+  auto jf = nlohmann::json::parse(cf.out), jr = nlohmann::json::parse(cr.out);
+  EXPECT_EQ(jf["path"].size(), jr["path"].size());
+  EXPECT_EQ(jf["variables"].size(), 2u);
+  int roundings = 0;
+  for (const auto& e : jf["path"]) roundings += e["origin"].value("inserted", "") == "rounding";
+  EXPECT_EQ(roundings, 8);
+  EXPECT_EQ(jf["path"][6]["origin"]["source"], "PROFILE.SPF line 14");
   const std::string dir = CUTCOM_BINARY_DIR;
   std::ofstream(dir + "/endless.mpf") << "G1 X0 F100\nAGAIN: R1=R1+1\nGOTOB AGAIN\n";
   Result loop = sh(kCli + " run " + dir + "/endless.mpf --max-loops 500", true);

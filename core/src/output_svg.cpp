@@ -89,6 +89,7 @@ std::vector<ProgrammedSegment> programmed_contour(const std::vector<Block>& bloc
     s.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
     s.rapid = b.state.motion == Motion::kRapid;
     s.line = b.words.line;
+    s.label = b.words.number ? fmt::format("N{}", *b.words.number) : fmt::format("L{}", b.words.line);
     if (b.is_arc() && b.centre) {
       s.arc = true;
       s.ccw = b.state.motion == Motion::kArcCcw;
@@ -114,8 +115,8 @@ void draw_panel(std::ostream& out, const View& v, const std::vector<ProgrammedSe
                        d);
   }
   for (const auto& s : programmed)
-    out << fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#666\" font-size=\"10\">L{}</text>\n", v.sx(s.end) + 3,
-                       v.sy(s.end) - 3, s.line);
+    out << fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#666\" font-size=\"10\">{}</text>\n", v.sx(s.end) + 3,
+                       v.sy(s.end) - 3, s.label);
   for (const auto& e : result.path) {
     std::string d =
         e.type == ElementType::kArc

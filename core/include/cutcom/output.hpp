@@ -60,6 +60,7 @@ struct ProgrammedSegment {
   PathPoint start, end, center;
   bool arc = false, ccw = false, rapid = false;
   int line = 0;
+  std::string label;  // its N number where the program has one ("N40"), else its line ("L12")
 };
 
 void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programmed, const RunResult& result,
