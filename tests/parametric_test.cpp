@@ -271,6 +271,19 @@ TEST(Parametric, GGroupsReadTheModalState) {
   EXPECT_EQ(error_line("R1=$P_GG[99]\n", "system variable $P_GG is not one cutcom knows"), 1);
 }
 
+// covers: NC-PARAM-SYS-2
+TEST(Parametric, ProgramWritesSettableOffsets) {
+  // Written values take effect when an offset is selected next; the output stays in the system
+  // of the first selected offset (G54 at X10): X5 there is 5, after G54 again with X12.5 it is 7.5,
+  // and G55 at X100 puts X0 at 90.
+  EXPECT_EQ(end_x("R1=5\n$P_UIFR[1]=CTRANS(X,R1*2,Y,0)\nG54 G1 X5 F100\n"), "5");
+  EXPECT_EQ(end_x("$P_UIFR[1]=CTRANS(X,10)\nG54 G1 X5 F100\n$P_UIFR[1,X,TR]=12.5\nX5\n"), "5");
+  EXPECT_EQ(end_x("$P_UIFR[1]=CTRANS(X,10)\nG54 G1 X5 F100\n$P_UIFR[1,X,TR]=12.5\nG54 X5\n"), "7.5");
+  EXPECT_EQ(end_x("$P_UIFR[1]=CTRANS(X,10)\nG54 G1 X5 F100\n$P_UIFR[2]=CTRANS(X,100)\nG55 X0\n"), "90");
+  EXPECT_EQ(error_line("G1 X1 F1\n$P_UIFR[1]=CTRANS(Q,1)\n", "'Q' is not a geometry axis"), 2);
+  EXPECT_EQ(error_line("$P_UIFR[1]=CTRANS(X)\n", "CTRANS needs axis, value pairs"), 1);
+}
+
 // covers: NC-PARAM-ERR-1 NC-PARAM-FLOW-6 NC-PARAM-FLOW-1 NC-PARAM-FLOW-3 NC-PARAM-VAR-2
 TEST(Parametric, LanguageErrorsNameTheirLine) {
   EXPECT_EQ(error_line("G1 X0 F100\nG1 X=UNKNOWN\n", "undefined variable 'UNKNOWN'"), 2);

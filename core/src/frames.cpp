@@ -131,7 +131,7 @@ void ProgramReader::select_offset(int index) {
   offsets_changed_ = false;
   Point3 d = offsets_.translation(offset_index_);
   if (first_offset_ > 0) {
-    Point3 f = offsets_.translation(first_offset_);
+    const Point3& f = first_translation_;
     d = Point3{d.x - f.x, d.y - f.y, d.z - f.z};
   }
   offset_difference_ = d;

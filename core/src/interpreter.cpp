@@ -204,6 +204,10 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     bool indexed = k < s.size() && s[k] == '[';
     bool r_indexed = indexed && n == "R";
     bool variable = is_r_parameter(n) || r_indexed || find_variable(n) != nullptr;
+    if (n == "$P_UIFR" && after < s.size() && s[after] == '[') {  // NC-PARAM-SYS-2
+      i = settable_offset(s, after);
+      continue;
+    }
     bool tool_data = n.rfind("$TC_", 0) == 0;  // other system variables go to the lexer as written
     if (indexed && (variable || tool_data)) {
       // Indices as expressions: R[expr], A[i,j], $TC_DP6[t,d].

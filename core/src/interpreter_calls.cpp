@@ -28,6 +28,67 @@ InputError Interpreter::where(const InputError& e) const {
                     fmt::format("{} (called from line {}): {}", chain, stack_.front().line, e.detail()));
 }
 
+// NC-PARAM-SYS-2: $P_UIFR[n]=CTRANS(X,expr,Y,expr,…) or $P_UIFR[n,X,TR]=expr, from just after the
+// name (at '['); the values are evaluated and the assignment, written on the grid, goes to the
+// reader's settable offsets. Returns where the assignment ends.
+std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i) {
+  InterpreterLookup lookup(*this, cx().line);
+  std::size_t open = i;
+  ExpressionParser index(s, i + 1, cx().line, lookup);
+  std::string text = "$P_UIFR[" + grid_text(index.parse(), cx().line, i + 1);
+  i = skip_space(s, index.position());
+  if (i < s.size() && s[i] == ',') {  // [n, axis, component]: names, kept as written
+    std::size_t close = s.find(']', i);
+    if (close == std::string_view::npos) throw InputError(cx().line, static_cast<int>(open) + 1, "']' expected");
+    for (char c : s.substr(i, close - i))
+      if (c != ' ' && c != '\t') text += upper(c);
+    i = close;
+  }
+  if (i >= s.size() || s[i] != ']') throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
+  i = skip_space(s, i + 1);
+  if (i >= s.size() || s[i] != '=') throw InputError(cx().line, static_cast<int>(i) + 1, "'=' expected");
+  text += "]=";
+  i = skip_space(s, i + 1);
+  std::size_t fe = name_end(s, i);
+  std::string function = upper_text(s.substr(i, fe - i));
+  std::size_t paren = skip_space(s, fe);
+  if (function == "CTRANS" && paren < s.size() && s[paren] == '(') {
+    text += "CTRANS(";
+    i = skip_space(s, paren + 1);
+    for (bool first = true; i < s.size() && s[i] != ')'; first = false) {
+      if (!first) {
+        if (s[i] != ',') throw InputError(cx().line, static_cast<int>(i) + 1, "',' or ')' expected in CTRANS");
+        i = skip_space(s, i + 1);
+        text += ',';
+      }
+      std::size_t ae = name_end(s, i);
+      text += upper_text(s.substr(i, ae - i)) + ",";
+      i = skip_space(s, ae);
+      if (i >= s.size() || s[i] != ',')
+        throw InputError(cx().line, static_cast<int>(i) + 1, "CTRANS needs axis, value pairs");
+      ExpressionParser value(s, i + 1, cx().line, lookup);
+      text += grid_text(value.parse(), cx().line, i + 1);
+      i = skip_space(s, value.position());
+    }
+    if (i >= s.size()) throw InputError(cx().line, static_cast<int>(paren) + 1, "')' expected");
+    text += ')';
+    ++i;
+  } else {
+    ExpressionParser value(s, i, cx().line, lookup);
+    text += grid_text(value.parse(), cx().line, i);
+    i = value.position();
+  }
+  bool taken = false;
+  try {
+    taken = system_ && system_->write_settable_offset(text);
+  } catch (const InputError& e) {
+    throw InputError(cx().line, static_cast<int>(open) + 1, fmt::format("{}: {}", text, e.detail()));
+  }
+  if (!taken) throw InputError(cx().line, static_cast<int>(open) + 1, "$P_UIFR cannot be written here");
+  control_flow_ = true;
+  return i;
+}
+
 bool Interpreter::reader_knows(const std::string& word) {
   auto known = known_words_.find(word);
   if (known != known_words_.end()) return known->second;

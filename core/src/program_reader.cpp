@@ -2,6 +2,7 @@
 // of blocks into exact positions in one coordinate system, and the tool data in force.
 #include <fmt/format.h>
 
+#include <sstream>
 #include <stdexcept>
 
 #include "contour_geometry.hpp"
@@ -159,6 +160,20 @@ std::optional<double> ProgramReader::g_group_value(double group) const {
   }
 }
 
+// NC-PARAM-SYS-2: the program writes a settable offset; it takes effect when an offset is
+// selected (G54 …) next, as when it was given with --offsets.
+bool ProgramReader::write_settable_offset(const std::string& assignment) {
+  std::istringstream in(assignment);
+  try {
+    offsets_.load(in, "$P_UIFR");
+  } catch (const InputError& e) {
+    std::string detail = e.detail();
+    if (detail.rfind("$P_UIFR: ", 0) == 0) detail = detail.substr(9);
+    throw InputError(0, 1, detail);
+  }
+  return true;
+}
+
 void ProgramReader::save_modal_state() {
   saved_.push_back({state_, units_, diameter_, offset_index_, frame_, circle_definition_});
 }
@@ -284,6 +299,7 @@ void ProgramReader::resolve(Block& b) {
     if (idx != offset_index_ && idx > 0) {
       if (first_offset_ < 0) {
         first_offset_ = idx;
+        first_translation_ = offsets_.translation(idx);
         note(b, "NC-OFFSET-1",
              fmt::format("coordinates are in the workpiece system of {}",
                          idx <= 4 ? fmt::format("G{}", idx + 53) : fmt::format("G{}", idx + 500)));

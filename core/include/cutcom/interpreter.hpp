@@ -42,6 +42,9 @@ class SystemValues {
   // NC-PARAM-SUB-4, PROC … SAVE: the modal state when the subprogram starts is kept, and put back
   // when it returns (every block before has been read by then).
   virtual void save_modal_state() {}
+  // NC-PARAM-SYS-2: "$P_UIFR[n]=CTRANS(X,10,Y,20)" or "$P_UIFR[n,X,TR]=10" with values on the
+  // grid; false: not taken. Throws InputError (column 1) for a wrong assignment.
+  virtual bool write_settable_offset(const std::string& assignment) { return false; }
   virtual void restore_modal_state() {}
 };
 
@@ -186,7 +189,8 @@ class Interpreter {
   void procedure(std::string_view line, std::size_t at);
   void leave_subprogram();
   std::optional<std::string> find_subprogram(const std::string& name) const;
-  bool reader_knows(const std::string& word);  // the block reader reads it as a word
+  bool reader_knows(const std::string& word);
+  std::size_t settable_offset(std::string_view line, std::size_t at);  // the block reader reads it as a word
   std::map<std::string, bool> known_words_;
 
   Context& cx() { return stack_.back(); }
@@ -196,7 +200,7 @@ class Interpreter {
   InterpreterLimits limits_;
   std::string raw_;
   std::vector<Context> stack_;
-  std::map<int, double> r_;                  // R parameters: global
+  std::map<int, double> r_;  // R parameters: global
   std::map<std::string, Variable> globals_;
   std::vector<std::string> source_names_{""};
   std::map<std::string, std::uint32_t> source_ids_;  // NC-PARAM-VAR-3: GUD from definition files

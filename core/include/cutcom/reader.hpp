@@ -103,6 +103,7 @@ class ProgramReader : private SystemValues {
   std::optional<double> g_group_value(double group) const;  // $P_GG[group]
   static bool polar_move(const BlockWords& w);
   // NC-PARAM-SUB-4: PROC … SAVE.
+  bool write_settable_offset(const std::string& assignment) override;
   void save_modal_state() override;
   void restore_modal_state() override;
   struct SavedState {
@@ -157,9 +158,11 @@ class ProgramReader : private SystemValues {
   int offset_index_ = 0;      // G500
   Point3 offset_difference_;  // of offset_index_ (select_offset)
   bool offsets_changed_ = false;
-  int first_offset_ = -1;                              // the settable offset whose workpiece system the output uses
-  ProgrammableFrame frame_;                            // programmable frame
-  Point3 programmed_;                                  // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
+  int first_offset_ = -1;
+  Point3 first_translation_;  // its translation when it was first selected                              // the settable
+                              // offset whose workpiece system the output uses
+  ProgrammableFrame frame_;   // programmable frame
+  Point3 programmed_;         // the position in the frame's system (NC-FRAME-4, NC-POLAR-1)
   bool programmed_known_ = true;                       // else recomputed from position_ when a block needs it
   std::array<Decimal, 2> pole_{};                      // NC-POLAR-1: in the frame's system, plane abscissa/ordinate
   Decimal polar_angle_, polar_radius_;                 // NC-POLAR-2: the last AP and RP
