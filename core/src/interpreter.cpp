@@ -167,9 +167,9 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     if (n == "SETAL" && after < s.size() && s[after] == '(') {
       std::size_t e = after + 1;
       std::vector<NcValue> args = values(s, e, ')', lookup);
-      std::string number = args.empty() ? "?" : grid_text(args[0], cx().line, after);
+      std::string alarm = args.empty() ? "?" : grid_text(args[0], cx().line, after);
       throw InputError(cx().line, static_cast<int>(start) + 1,
-                       fmt::format("the program raises alarm {} (SETAL): the control stops here", number));
+                       fmt::format("the program raises alarm {} (SETAL): the control stops here", alarm));
     }
     // MSG(expression): the message as the operator would read it.
     if (n == "MSG" && after < s.size() && s[after] == '(' && skip_space(s, after + 1) < s.size() &&
@@ -179,8 +179,8 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       std::size_t e = skip_space(s, p.position());
       if (e >= s.size() || s[e] != ')') throw InputError(cx().line, static_cast<int>(e) + 1, "MSG: ')' expected");
       std::string shown = text.type == NcValue::Type::kString ? text.text : grid_text(text, cx().line, after);
-      for (char& c : shown)
-        if (c == '"') c = '\'';
+      for (char& ch : shown)
+        if (ch == '"') ch = '\'';
       out.append(s, space, start - space);
       out += "MSG(\"" + shown + "\")";
       words = true;

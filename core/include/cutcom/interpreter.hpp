@@ -44,7 +44,7 @@ class SystemValues {
   virtual void save_modal_state() {}
   // NC-PARAM-SYS-2: "$P_UIFR[n]=CTRANS(X,10,Y,20)" or "$P_UIFR[n,X,TR]=10" with values on the
   // grid; false: not taken. Throws InputError (column 1) for a wrong assignment.
-  virtual bool write_settable_offset(const std::string& assignment) { return false; }
+  virtual bool write_settable_offset(const std::string& /*assignment*/) { return false; }
   virtual void restore_modal_state() {}
 };
 
