@@ -340,18 +340,11 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
         t = name_end(s, i);
         type = upper_text(s.substr(i, t - i));
       }
-      NcValue::Type vt;
-      if (type == "REAL")
-        vt = NcValue::Type::kReal;
-      else if (type == "INT" || type == "CHAR")
-        vt = NcValue::Type::kInt;
-      else if (type == "BOOL")
-        vt = NcValue::Type::kBool;
-      else if (type == "STRING" || type == "AXIS")
-        vt = NcValue::Type::kString;
-      else
+      std::optional<NcValue::Type> known = value_type(type);
+      if (!known)
         throw InputError(cx().line, static_cast<int>(i) + 1,
                          fmt::format("'{}' is not a parameter type (REAL INT BOOL CHAR STRING AXIS)", type));
+      NcValue::Type vt = *known;
       i = skip_space(s, t);
       if (type == "STRING" && i < s.size() && s[i] == '[') {
         std::size_t c = s.find(']', i);

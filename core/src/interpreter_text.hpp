@@ -140,4 +140,13 @@ inline int r_number(const std::string& n) {
   return std::stoi(n.substr(1));
 }
 
+// NC-PARAM-VAR-2: the value type of a DEF or PROC type name (CHAR is a code, AXIS a name).
+inline std::optional<NcValue::Type> value_type(std::string_view type) {
+  if (type == "REAL") return NcValue::Type::kReal;
+  if (type == "INT" || type == "CHAR") return NcValue::Type::kInt;
+  if (type == "BOOL") return NcValue::Type::kBool;
+  if (type == "STRING" || type == "AXIS") return NcValue::Type::kString;
+  return std::nullopt;
+}
+
 }  // namespace cutcom::interpreter_text
