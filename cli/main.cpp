@@ -164,15 +164,29 @@ std::string read_all(std::istream& in) {
 }
 
 // The output file is written beside its place and renamed when the run is done, so that a
-// rejected program leaves no empty or partial file behind (NC-ERR-3, CLI-1).
+// rejected program leaves no empty or partial file behind (NC-ERR-3, CLI-1). A path that is not a
+// regular file (/dev/null, a pipe, a terminal) is written in place: renaming over it would replace
+// the device with a file. A symbolic link is followed, so the file it names is replaced.
 class OutputFile {
  public:
-  explicit OutputFile(const std::string& path) : path_(path), part_(path + ".part") {}
+  explicit OutputFile(const std::string& path) : path_(path) {
+    std::error_code ec;
+    std::filesystem::path target = path_;
+    for (int links = 0; links < 40 && std::filesystem::is_symlink(target, ec); ++links) {
+      std::filesystem::path to = std::filesystem::read_symlink(target, ec);
+      if (ec) break;
+      target = to.is_absolute() ? to : target.parent_path() / to;
+    }
+    auto kind = std::filesystem::status(target, ec).type();
+    in_place_ = !ec && kind != std::filesystem::file_type::regular && kind != std::filesystem::file_type::not_found;
+    path_ = target.string();
+    part_ = in_place_ ? path_ : path_ + ".part";
+  }
   ~OutputFile() {
     if (!committed_ && file_.is_open()) {
       file_.close();
       std::error_code ec;
-      std::filesystem::remove(part_, ec);
+      if (!in_place_) std::filesystem::remove(part_, ec);
     }
   }
   bool open() {
@@ -182,13 +196,14 @@ class OutputFile {
   std::ostream& stream() { return file_; }
   void commit() {
     file_.close();
-    std::filesystem::rename(part_, path_);
+    if (!in_place_) std::filesystem::rename(part_, path_);
     committed_ = true;
   }
 
  private:
   std::string path_, part_;
   std::ofstream file_;
+  bool in_place_ = false;  // not a regular file: written directly, never renamed over
   bool committed_ = false;
 };
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -322,6 +323,29 @@ TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
   EXPECT_NE(g.out.find("line 1, column 7: 'R_T' is not a SINUMERIK word cutcom knows"), std::string::npos) << g.out;
 }
 
+// A device, pipe or link as the output is written through, never renamed over: `-o /dev/null` as
+// root once replaced the device with a regular file.
+// covers: CLI-1
+TEST(Cli, OutputThroughAPipeOrALinkKeepsWhatItIs) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(CUTCOM_BINARY_DIR) / "output-kinds";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::path fifo = dir / "pipe", link = dir / "link.txt", target = dir / "target.txt";
+  Result r =
+      sh("mkfifo " + fifo.string() + " && (timeout 20 cat " + fifo.string() + " > " + (dir / "piped.txt").string() +
+         " &) && " + kCli + " run " + kExample + " -o " + fifo.string() + "; s=$?; wait; exit $s");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_FALSE(fs::exists(dir / "pipe.part"));
+  fs::create_symlink(target, link);
+  EXPECT_EQ(sh(kCli + " run " + kExample + " -o " + link.string()).status, 0);
+  EXPECT_TRUE(fs::is_symlink(link));
+  std::ifstream written(target);
+  std::string first;
+  std::getline(written, first);
+  EXPECT_EQ(first.rfind("cutcom tool-centre path", 0), 0u) << first;
+}
 }  // namespace
 
 namespace {
@@ -362,8 +386,9 @@ TEST(Cli, ParametricExampleRunsAndARunawayLoopStops) {
 // covers: NC-PARAM-VAR-3 NC-PARAM-SUB-5 NC-PARAM-SUB-2
 TEST(Cli, DefinitionsFileAndASubprogramRunOnItsOwn) {
   const std::string dir = CUTCOM_BINARY_DIR;
-  std::ofstream(dir + "/gud.def") << "%_N_GUD_DEF\n; global data\nDEF NCK SYNRW REAL PHU 1 LLI 0 ULI 99 APW 2 _DEPTH=2.5\n"
-                                      "DEF CHAN INT _LAPS\nM30\n";
+  std::ofstream(dir + "/gud.def")
+      << "%_N_GUD_DEF\n; global data\nDEF NCK SYNRW REAL PHU 1 LLI 0 ULI 99 APW 2 _DEPTH=2.5\n"
+         "DEF CHAN INT _LAPS\nM30\n";
   std::ofstream(dir + "/WALL.SPF") << "PROC WALL(REAL LEN, INT LAPS)\nG1 Z=-_DEPTH F100\nG1 X=LEN*LAPS\n_LAPS=LAPS\n"
                                       "G1 X=_LAPS\nM17\n";
   Result ok = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/gud.def --args \"4, 3\" --format json");

@@ -1,56 +1,130 @@
 #include <fmt/format.h>
 
 #include "cutcom/output.hpp"
+#include "text_append.hpp"
 
 namespace cutcom {
 
 namespace {
-std::string pt(const PathPoint& p) {
+// Written out when the buffer holds this much: few large writes instead of one per line.
+constexpr std::size_t kFlushSize = 1 << 16;
+
+// "(x, y, z)" with four decimals; -0 prints as 0.
+void append_point(std::string& out, const PathPoint& p) {
   auto c = [](double v) { return v == 0 ? 0.0 : v; };
-  return fmt::format("({:.4f}, {:.4f}, {:.4f})", c(p.x), c(p.y), c(p.z));
+  out += '(';
+  text::append_fixed(out, c(p.x), 4);
+  out += ", ";
+  text::append_fixed(out, c(p.y), 4);
+  out += ", ";
+  text::append_fixed(out, c(p.z), 4);
+  out += ')';
+}
+
+std::string pt(const PathPoint& p) {
+  std::string s;
+  append_point(s, p);
+  return s;
+}
+
+const char* move_name(const PathElement& e) {
+  if (e.rapid) return "rapid";
+  if (e.feed_type == FeedType::kG95) return "feed/r";
+  if (e.feed_type == FeedType::kG93) return "feed/t";
+  return "feed";
 }
 }  // namespace
 
 TextWriter::TextWriter(std::ostream& out, std::string engine, bool with_trace) : out_(out), with_trace_(with_trace) {
-  out_ << fmt::format("cutcom tool-centre path (engine: {}, coordinates in mm)\n", engine);
-  out_ << fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}\n", "#", "line", "type", "move", "start", "end",
-                      "origin");
+  buffer_.reserve(kFlushSize + 1024);
+  buffer_ += fmt::format("cutcom tool-centre path (engine: {}, coordinates in mm)\n", engine);
+  buffer_ +=
+      fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}\n", "#", "line", "type", "move", "start", "end", "origin");
+}
+
+TextWriter::~TextWriter() {
+  try {
+    flush();
+  } catch (...) {  // a destructor must not throw; the stream's state reports the failure
+  }
+}
+
+void TextWriter::flush() {
+  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  buffer_.clear();
+}
+
+void TextWriter::written() {
+  if (buffer_.size() >= kFlushSize) flush();
 }
 
 void TextWriter::element(const PathElement& e) {
   ++count_;
-  std::string type = e.type == ElementType::kLine ? "line" : (e.ccw ? "arc+" : "arc-");
-  out_ << fmt::format("{:>4} {:>5} {:<5} {:<6} {:<28} {:<28} {}", count_, e.origin.line, type,
-                      e.rapid                         ? "rapid"
-                      : e.feed_type == FeedType::kG95 ? "feed/r"
-                      : e.feed_type == FeedType::kG93 ? "feed/t"
-                                                      : "feed",
-                      pt(e.start), pt(e.end), describe(e.origin));
-  if (e.origin.source != 0 && sources_) out_ << fmt::format(" (in {})", sources_(e.origin.source));
-  if (e.type == ElementType::kArc) out_ << fmt::format("  centre {} {}", pt(e.center), e.ccw ? "ccw" : "cw");
-  out_ << "\n";
+  std::string& b = buffer_;
+  text::append_right_integer(b, count_, 4);
+  b += ' ';
+  text::append_right_integer(b, e.origin.line, 5);
+  b += ' ';
+  b += e.type == ElementType::kLine ? "line  " : (e.ccw ? "arc+  " : "arc-  ");
+  std::size_t field = b.size();
+  b += move_name(e);
+  text::pad_to(b, field, 6);
+  b += ' ';
+  field = b.size();
+  append_point(b, e.start);
+  text::pad_to(b, field, 28);
+  b += ' ';
+  field = b.size();
+  append_point(b, e.end);
+  text::pad_to(b, field, 28);
+  b += ' ';
+  append_description(b, e.origin);
+  if (e.origin.source != 0 && sources_) {
+    b += " (in ";
+    b += sources_(e.origin.source);
+    b += ')';
+  }
+  if (e.type == ElementType::kArc) {
+    b += "  centre ";
+    append_point(b, e.center);
+    b += e.ccw ? " ccw" : " cw";
+  }
+  b += '\n';
+  written();
 }
 
 void TextWriter::action(const ActionEvent& a) {
-  out_ << fmt::format("     {:>5} {} at {}\n", a.line, a.function.name(), pt(a.at));
+  buffer_ += fmt::format("     {:>5} {} at {}\n", a.line, a.function.name(), pt(a.at));
+  written();
 }
 
 void TextWriter::decision(const Decision& d) {
   if (!with_trace_) return;
-  out_ << fmt::format("     trace line {:>4}  {:<16} {:<22}", d.line, d.clause, d.branch);
+  buffer_ += fmt::format("     trace line {:>4}  {:<16} {:<22}", d.line, d.clause, d.branch);
   if (d.has_margin)
-    out_ << (d.margin_exact.empty() ? fmt::format("  margin {:.6g}", d.margin) : "  margin " + d.margin_exact);
-  out_ << "\n";
+    buffer_ += d.margin_exact.empty() ? fmt::format("  margin {:.6g}", d.margin) : "  margin " + d.margin_exact;
+  buffer_ += '\n';
+  written();
 }
 
-void TextWriter::alarm(const Alarm& a) { out_ << fmt::format("ALARM {} {} [{}]\n", a.number, a.text, a.clause); }
+void TextWriter::alarm(const Alarm& a) {
+  buffer_ += fmt::format("ALARM {} {} [{}]\n", a.number, a.text, a.clause);
+  written();
+}
 
-void TextWriter::notice(const Notice& n) { out_ << fmt::format("note  line {}: {} [{}]\n", n.line, n.text, n.clause); }
+void TextWriter::notice(const Notice& n) {
+  buffer_ += fmt::format("note  line {}: {} [{}]\n", n.line, n.text, n.clause);
+  written();
+}
 
 void TextWriter::sar_variables(const SarVariables& v) {
-  out_ << fmt::format("     {:>5} $P_APR={} $P_AEP={} $P_APDV={}\n", v.line, pt(v.p_apr), pt(v.p_aep), v.p_apdv);
+  buffer_ += fmt::format("     {:>5} $P_APR={} $P_AEP={} $P_APDV={}\n", v.line, pt(v.p_apr), pt(v.p_aep), v.p_apdv);
+  written();
 }
 
-void TextWriter::finish() { out_ << fmt::format("{} path elements\n", count_); }
+void TextWriter::finish() {
+  buffer_ += fmt::format("{} path elements\n", count_);
+  flush();
+}
 
 }  // namespace cutcom

@@ -1,6 +1,6 @@
 #include "cutcom/path.hpp"
 
-#include <fmt/format.h>
+#include "text_append.hpp"
 
 namespace cutcom {
 
@@ -22,11 +22,69 @@ std::string origin_kind_name(OriginKind k) {
   return "?";
 }
 
-std::string describe_kind(const Origin& o);
-
 namespace {
-std::string block_name(int line, const std::optional<std::int64_t>& n) {
-  return n ? fmt::format("N{}", *n) : fmt::format("line {}", line);
+void append_block_name(std::string& out, int line, const std::optional<std::int64_t>& n) {
+  if (n) {
+    out += 'N';
+    text::append_integer(out, *n);
+  } else {
+    out += "line ";
+    text::append_integer(out, line);
+  }
+}
+
+// "N40", or for an inserted element "(rounding of N40/N50)", "(turn 2 of N60)" (NC-CONTOUR-*).
+void append_inserted_name(std::string& out, int line, const std::optional<std::int64_t>& block,
+                          const ContourInsert& insert) {
+  switch (insert.kind) {
+    case InsertKind::kNone:
+      append_block_name(out, line, block);
+      return;
+    case InsertKind::kRounding:
+    case InsertKind::kChamfer:
+      out += insert.kind == InsertKind::kRounding ? "(rounding of " : "(chamfer of ";
+      append_block_name(out, line, block);
+      out += '/';
+      append_block_name(out, insert.next_line, insert.next_block);
+      out += ')';
+      return;
+    case InsertKind::kTurn:
+      out += "(turn ";
+      text::append_integer(out, insert.turn);
+      out += " of ";
+      append_block_name(out, line, block);
+      out += ')';
+      return;
+  }
+}
+
+void append_kind_description(std::string& out, const Origin& o) {
+  switch (o.kind) {
+    case OriginKind::kProgrammed:
+      append_inserted_name(out, o.line, o.block, o.insert);
+      out += " without compensation";
+      return;
+    case OriginKind::kApproach:
+      out += "approach ";
+      break;
+    case OriginKind::kOffset:
+      out += "offset of ";
+      break;
+    case OriginKind::kTransitionCircle:
+      out += "transition circle at corner ";
+      append_inserted_name(out, o.line, o.block, o.insert);
+      out += '/';
+      append_inserted_name(out, o.next_line, o.next_block, o.next_insert);
+      return;
+    case OriginKind::kRetraction:
+      out += "retraction ";
+      break;
+    case OriginKind::kInfeed:
+      append_inserted_name(out, o.line, o.block, o.insert);
+      out += " at the corner point";
+      return;
+  }
+  append_inserted_name(out, o.line, o.block, o.insert);
 }
 }  // namespace
 
@@ -48,27 +106,19 @@ std::string sar_move_name(SarMove m) {
   return "?";
 }
 
-std::string describe(const Origin& o) {
-  std::string text = describe_kind(o);
-  if (o.sar != SarMove::kNone) text += fmt::format(" (SAR {})", sar_move_name(o.sar));
-  return text;
+void append_description(std::string& out, const Origin& o) {
+  append_kind_description(out, o);
+  if (o.sar != SarMove::kNone) {
+    out += " (SAR ";
+    out += sar_move_name(o.sar);
+    out += ')';
+  }
 }
 
-// "N40", or for an inserted element "(rounding of N40/N50)", "(turn 2 of N60)" (NC-CONTOUR-*).
-std::string inserted_name(int line, const std::optional<std::int64_t>& block, const ContourInsert& insert) {
-  std::string b = block_name(line, block);
-  const ContourInsert& o = insert;
-  switch (o.kind) {
-    case InsertKind::kNone:
-      return b;
-    case InsertKind::kRounding:
-      return fmt::format("(rounding of {}/{})", b, block_name(o.next_line, o.next_block));
-    case InsertKind::kChamfer:
-      return fmt::format("(chamfer of {}/{})", b, block_name(o.next_line, o.next_block));
-    case InsertKind::kTurn:
-      return fmt::format("(turn {} of {})", o.turn, b);
-  }
-  return b;
+std::string describe(const Origin& o) {
+  std::string text;
+  append_description(text, o);
+  return text;
 }
 
 std::string insert_kind_name(InsertKind k) {
@@ -83,26 +133,6 @@ std::string insert_kind_name(InsertKind k) {
       return "turn";
   }
   return "?";
-}
-
-std::string describe_kind(const Origin& o) {
-  std::string b = inserted_name(o.line, o.block, o.insert);
-  switch (o.kind) {
-    case OriginKind::kProgrammed:
-      return fmt::format("{} without compensation", b);
-    case OriginKind::kApproach:
-      return fmt::format("approach {}", b);
-    case OriginKind::kOffset:
-      return fmt::format("offset of {}", b);
-    case OriginKind::kTransitionCircle:
-      return fmt::format("transition circle at corner {}/{}", b,
-                         inserted_name(o.next_line, o.next_block, o.next_insert));
-    case OriginKind::kRetraction:
-      return fmt::format("retraction {}", b);
-    case OriginKind::kInfeed:
-      return fmt::format("{} at the corner point", b);
-  }
-  return b;
 }
 
 }  // namespace cutcom

@@ -39,6 +39,9 @@ class JsonWriter : public PathSink {
 class TextWriter : public PathSink {
  public:
   TextWriter(std::ostream& out, std::string engine, bool with_trace);
+  ~TextWriter() override;
+  TextWriter(const TextWriter&) = delete;
+  TextWriter& operator=(const TextWriter&) = delete;
   void element(const PathElement& e) override;
   void action(const ActionEvent& a) override;
   void decision(const Decision& d) override;
@@ -49,7 +52,11 @@ class TextWriter : public PathSink {
   void set_sources(SourceNames names) { sources_ = std::move(names); }
 
  private:
+  void written();  // writes the buffer out once it is large
+  void flush();
+
   std::ostream& out_;
+  std::string buffer_;  // text not yet written to out_
   SourceNames sources_;
   bool with_trace_;
   int count_ = 0;
