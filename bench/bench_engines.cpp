@@ -186,6 +186,40 @@ BENCHMARK(BM_ReaderLongProgram)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_FastLongProgram, cdof, false)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_FastLongProgram, cdon, true)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
+// A pocket written as a WHILE loop (issue "Parametric programs", item 9): `passes` passes of four
+// blocks whose coordinates are computed, under G41. Blocks per second through the interpreter,
+// the reader and fast, against the same path written out block by block (BM_FastPlainPocket).
+std::string while_pocket(long passes) {
+  return "DEF INT KK=0\nDEF REAL XX\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.2\n"
+         "N10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F1000\nWHILE KK<" +
+         std::to_string(passes) +
+         "\n  XX=KK*2\n  G1 Y50\n  X=XX+1\n  Y0\n  X=XX+2\n  KK=KK+1\nENDWHILE\n"
+         "G40 G1 X=XX+20 Y-10\nM30\n";
+}
+
+std::string plain_pocket(long passes) {
+  std::string text = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.2\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F1000\n";
+  for (long k = 0; k < passes; ++k)
+    text += "G1 Y50\nX" + std::to_string(2 * k + 1) + "\nY0\nX" + std::to_string(2 * k + 2) + "\n";
+  return text + "G40 G1 X" + std::to_string(2 * (passes - 1) + 20) + " Y-10\nM30\n";
+}
+
+void BM_FastPocket(benchmark::State& state, bool loop) {
+  MachineData md;
+  long passes = state.range(0) / 4;
+  std::string text = loop ? while_pocket(passes) : plain_pocket(passes);
+  for (auto _ : state) {
+    std::istringstream in(text);
+    ProgramReader reader(in, md.initial_state());
+    NullSink sink;
+    fast::run(reader, md, sink);
+    benchmark::DoNotOptimize(sink.elements);
+  }
+  state.SetItemsProcessed(state.iterations() * 4 * passes);
+}
+BENCHMARK_CAPTURE(BM_FastPocket, while_loop, true)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FastPocket, plain, false)->Arg(100000)->Unit(benchmark::kMillisecond);
+
 // SAR: the same for programs made of SAR approaches and retractions (no allocation per SAR block).
 void BM_FastLongSarProgram(benchmark::State& state) {
   MachineData md;

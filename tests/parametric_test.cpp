@@ -157,6 +157,32 @@ TEST(Parametric, ParametricProgramGivesThePlainProgramsPath) {
   expect_same_path(p.ref, q.ref);
 }
 
+// Loop passes and backward jumps read their lines from the line cache; without it (or past its
+// budget) they are read from the file again: the same blocks either way.
+// covers: NC-PARAM-FLOW-3 NC-PARAM-FLOW-1
+TEST(Parametric, LinesReadAgainFromMemoryOrFromTheFileAlike) {
+  const std::string program =
+      "DEF INT KK\nR1=0\nN10 G1 X0 Y0 F100\nWHILE KK<3\n  KK=KK+1\n  G1 X=KK*10\n  Y=KK\nENDWHILE\n"
+      "AGAIN: R1=R1+1\nG1 Y=R1*5\nIF R1<4 GOTOB AGAIN\nFOR KK=1 TO 2\n  X=-KK\nENDFOR\nM30\n";
+  auto blocks = [&](std::size_t cache) {
+    std::istringstream in(program);
+    ProgramReader reader(in);
+    InterpreterLimits limits;
+    limits.line_cache_bytes = cache;
+    reader.set_limits(limits);
+    std::vector<std::string> ends;
+    Block b;
+    while (reader.next(b))
+      ends.push_back(std::to_string(b.words.line) + ":" + b.end.x.to_string() + "," + b.end.y.to_string());
+    return ends;
+  };
+  std::vector<std::string> cached = blocks(InterpreterLimits{}.line_cache_bytes), read_again = blocks(0),
+                           part = blocks(40);
+  EXPECT_EQ(cached.size(), 14u);  // N10, 3 x 2 in WHILE, 4 by GOTOB, 2 in FOR, M30
+  EXPECT_EQ(cached, read_again);
+  EXPECT_EQ(cached, part);
+}
+
 // covers: NC-PARAM-FLOW-3 NC-PARAM-FLOW-1
 TEST(Parametric, LoopRepeatAndLabelsAfterTheEnd) {
   // LOOP left by a jump; REPEAT … UNTIL; M30 ends the run although an error handler follows.

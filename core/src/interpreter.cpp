@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "interpreter_lookup.hpp"
 #include "interpreter_text.hpp"
@@ -19,22 +20,49 @@ Interpreter::Interpreter(std::istream& in, SystemValues* system, InterpreterLimi
     : system_(system), limits_(limits) {
   stack_.emplace_back();
   cx().in = &in;
+  cx().cache = &line_caches_[""];
   std::streampos p = in.tellg();
   cx().offset = cx().start_offset = p == std::streampos(-1) ? 0 : static_cast<std::streamoff>(p);
+  cx().stream_at = cx().offset;
 }
 
 bool Interpreter::getline(std::string& text) {
-  cx().line_start = cx().offset;
-  if (!std::getline((*cx().in), text)) return false;
-  cx().offset += static_cast<std::streamoff>(text.size()) + 1;
-  ++cx().line;
+  Context& c = cx();
+  c.line_start = c.offset;
+  if (!c.cache->lines.empty()) {
+    auto hit = c.cache->lines.find(c.offset);
+    if (hit != c.cache->lines.end()) {
+      text = hit->second.text;
+      c.offset = hit->second.next;
+      ++c.line;
+      return true;
+    }
+  }
+  if (!c.in) {  // a subprogram's file is opened when a line is first needed
+    c.owned = std::make_unique<std::ifstream>(c.path);
+    c.in = c.owned.get();
+    c.stream_at = 0;
+  }
+  if (c.stream_at != c.offset) {
+    c.in->clear();
+    c.in->seekg(c.offset);
+    if (!*c.in) throw InputError(c.line, 1, "a jump needs a program that can be read again (a file, not a pipe)");
+  }
+  if (!std::getline(*c.in, text)) {
+    c.stream_at = -1;
+    return false;
+  }
+  c.offset += static_cast<std::streamoff>(text.size()) + 1;
+  c.stream_at = c.offset;
+  ++c.line;
+  if ((control_flow_ || stack_.size() > 1) && cached_bytes_ + text.size() <= limits_.line_cache_bytes) {
+    cached_bytes_ += text.size() + sizeof(CachedLine) + 32;  // with the table's own cost
+    c.cache->lines.emplace(c.line_start, CachedLine{text, c.offset});
+  }
   return true;
 }
 
 void Interpreter::seek(std::streamoff to, int line) {
-  (*cx().in).clear();
-  (*cx().in).seekg(to);
-  if (!(*cx().in)) throw InputError(cx().line, 1, "a jump needs a program that can be read again (a file, not a pipe)");
   cx().offset = to;
   cx().line = line;
 }
@@ -115,7 +143,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
   if (label.empty()) {
     out.append(s, 0, i);
   } else {  // the label is the interpreter's: the reader gets the block skip and number only
-    cx().labels_seen[label].push_back({cx().line_start, cx().line - 1});
+    note_label(label, cx().line_start, cx().line - 1);
     control_flow_ = true;
     std::size_t k = skip_space(s, 0);
     if (k < s.size() && s[k] == '/') {

@@ -238,8 +238,8 @@ void Interpreter::enter(const std::string& file, std::vector<std::optional<NcVal
         fmt::format("more than {} program levels (subprograms calling subprograms: NC-PARAM-SUB-2)", kMaxLevels));
   control_flow_ = true;
   Context c;
-  c.owned = std::make_unique<std::ifstream>(file);
-  c.in = c.owned.get();
+  c.path = file;
+  c.cache = &line_caches_[file];
   c.name = std::filesystem::path(file).filename().string();
   c.passes_left = passes - 1;
   c.args = std::move(args);

@@ -256,7 +256,7 @@ bool Interpreter::find_forward(std::string_view target, Passed* passed) {
     if (!getline(text)) return false;
     std::string label;
     block_prefix(text, nullptr, &label);
-    if (!label.empty()) cx().labels_seen[label].push_back({start, line});
+    if (!label.empty()) note_label(label, start, line);
     if (defines(text, target)) {
       seek(start, line);
       return true;
@@ -292,6 +292,14 @@ void Interpreter::leave_structures(const Passed& passed) {
 void Interpreter::leave_structures_from(int target_line) {
   while (!cx().open_ifs.empty() && cx().open_ifs.back() >= target_line) cx().open_ifs.pop_back();
   while (!cx().frames.empty() && cx().frames.back().open_line >= target_line) cx().frames.pop_back();
+}
+
+// A label's place, kept once however often its line is read (a loop passes it every time).
+void Interpreter::note_label(const std::string& label, std::streamoff start, int line) {
+  auto& seen = cx().labels_seen[label];
+  for (const auto& p : seen)
+    if (p.first == start) return;
+  seen.push_back({start, line});
 }
 
 bool Interpreter::find_backward(std::string_view target, int before_line) {
@@ -478,7 +486,7 @@ std::string Interpreter::skip_block(std::string_view open, std::string_view end,
     if (!getline(text)) break;
     std::string label;
     block_prefix(text, nullptr, &label);
-    if (!label.empty()) cx().labels_seen[label].push_back({start, line});
+    if (!label.empty()) note_label(label, start, line);
     std::size_t rest;
     std::string w = first_word(text, rest);
     if (w == open && !(open == "IF" && has_jump(text))) {

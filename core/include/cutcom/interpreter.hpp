@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "cutcom/input_error.hpp"
@@ -52,6 +53,8 @@ struct InterpreterLimits {
   // NC-PARAM-FLOW-6: jumps back (loop passes and backward GOTOs) before a program is taken as
   // running away.
   std::int64_t max_backward_jumps = 10'000'000;
+  // Text of program lines kept in memory for loops and calls to read again (all files together).
+  std::size_t line_cache_bytes = std::size_t{16} << 20;
 };
 
 class Interpreter {
@@ -109,7 +112,23 @@ class Interpreter {
   };
 
   bool getline(std::string& text);
+  // Sets where the next line is read; the stream itself is moved only when a line must be read
+  // from it (a loop's body is read again from the line cache).
   void seek(std::streamoff to, int line);
+
+  // Lines of a program file by their offset, kept once the program runs control flow or
+  // subprograms: a loop pass or a call reads them from memory, not from the file again. All
+  // caches together hold at most InterpreterLimits::line_cache_bytes; lines past that are read
+  // from the file.
+  struct CachedLine {
+    std::string text;
+    std::streamoff next;  // offset of the line after it
+  };
+  struct LineCache {
+    std::unordered_map<std::streamoff, CachedLine> lines;
+  };
+  std::map<std::string, LineCache> line_caches_;  // by file ("" for the main program)
+  std::size_t cached_bytes_ = 0;
   // A line that may hold NC language beyond plain words (a cheap test on every line).
   static bool maybe_parametric(std::string_view text);
   // Runs one line's statements and assignments; `out` is the plain block (empty: none).
@@ -129,6 +148,7 @@ class Interpreter {
   void leave_structures(const Passed& passed);
   void leave_structures_from(int target_line);
   bool find_backward(std::string_view target, int before_line);
+  void note_label(const std::string& label, std::streamoff start, int line);
   static bool defines(std::string_view text, std::string_view target);
   // Skips lines to the `end` word matching `open` (nesting counted); with `or_else`, also stops
   // at an ELSE of the same level. Returns the word found.
@@ -146,9 +166,12 @@ class Interpreter {
 
   // One program level: the main program or a subprogram being run (NC-PARAM-SUB-*).
   struct Context {
-    std::unique_ptr<std::istream> owned;  // a subprogram's file
+    std::unique_ptr<std::istream> owned;  // a subprogram's file, opened when a line is not cached
     std::istream* in = nullptr;
-    std::string name;                             // the file, for messages ("" for the main program)
+    std::string path;  // a subprogram's file as found
+    std::string name;  // the file, for messages ("" for the main program)
+    LineCache* cache = nullptr;
+    std::streamoff stream_at = -1;                // where `in` stands (-1: to be sought)
     std::streamoff offset = 0, start_offset = 0;  // of the next line, of the text's start
     std::streamoff line_start = 0;                // of the line just read
     int line = 0;
