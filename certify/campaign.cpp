@@ -36,7 +36,7 @@ constexpr Source kSources[] = {{"any", any_contour}, {"sar", sar_contour}, {"any
                                {"sar", sar_contour}, {"any", any_contour}, {"near-radius", circles_near_radius}};
 
 struct Outcome {
-  std::string verdict;  // agree, knife-edge, not-supported, diverge
+  std::string verdict;  // agree, knife-edge, knife-edge-ends-differ, not-supported, diverge
   std::string clause;   // knife edge: the parting clause
   std::string explanation;
   double error = 0, ratio = 0;
@@ -55,7 +55,16 @@ Outcome judge(CaseRuns runs) {
     if (v.kind != Verdict::Kind::kKnifeEdge) return o.verdict = "diverge", o;
   }
   if (v.kind == Verdict::Kind::kDiverge) return o.verdict = "diverge", o;
-  if (v.kind == Verdict::Kind::kKnifeEdge) return o.verdict = "knife-edge", o.clause = v.clause, o;
+  if (v.kind == Verdict::Kind::kKnifeEdge) {
+    // A knife edge after which the runs end differently (one clean, one with an alarm or a
+    // rejection, or other alarms) is a verdict of its own: legitimate, but the user sees it.
+    bool same_end = r.ref_unsupported == r.fast_unsupported && r.ref.alarms.size() == r.fast.alarms.size();
+    for (std::size_t i = 0; same_end && i < r.ref.alarms.size(); ++i)
+      same_end = r.ref.alarms[i].number == r.fast.alarms[i].number;
+    o.verdict = same_end ? "knife-edge" : "knife-edge-ends-differ";
+    o.clause = v.clause;
+    return o;
+  }
   o.verdict = "agree";
   o.error = v.max_coordinate_error;
   o.ratio = r.tolerance.coordinate > 0 ? o.error / r.tolerance.coordinate : 0;
@@ -354,8 +363,9 @@ CampaignSummary run_campaign(const CampaignOptions& o) {
       int filled = static_cast<int>(std::clamp(done, 0.0, 1.0) * 30);
       std::cerr << fmt::format("\r[{:<30}] {} cases  {:.0f}/s  knife edges {}  over budget {}  divergences {}",
                                std::string(static_cast<std::size_t>(filled), '#'), s.cases,
-                               static_cast<double>(s.cases) / std::max(elapsed(), 1e-9), s.verdicts["knife-edge"],
-                               s.over_budget.size(), s.divergences.size())
+                               static_cast<double>(s.cases) / std::max(elapsed(), 1e-9),
+                               s.verdicts["knife-edge"] + s.verdicts["knife-edge-ends-differ"], s.over_budget.size(),
+                               s.divergences.size())
                 << std::flush;
     }
     return false;
@@ -403,7 +413,7 @@ void CampaignSummary::add(const CaseRecord& r) {
   if (r.verdict == "over-budget" || r.verdict == "crash") return;
   ++alarms[r.alarm];
   for (const std::string& e : r.evidence) ++evidence[e];
-  if (r.verdict == "knife-edge") ++knife_edges[r.clause];
+  if (r.verdict == "knife-edge" || r.verdict == "knife-edge-ends-differ") ++knife_edges[r.clause];
   for (const auto& [clause, branches] : r.decisions)
     for (const auto& [branch, n] : branches) {
       BranchCount& b = coverage[clause][branch];

@@ -71,13 +71,15 @@ constexpr Untraced kUntraced[] = {
     {"SAR-BLOCK-1", "e:sar:element", "reading of the SAR block: every SAR element"},
     {"SAR-P4-1", "d:SAR-TANGENT-1", "where P4 comes from: a branch of SAR-TANGENT-1 (alarm 10740 is not generated)"},
     {"SAR-P4-2", "d:SAR-TANGENT-1/p4-in-later-block", "a branch of SAR-TANGENT-1"},
-    {"SAR-STOP-1", "e:alarm:SAR-STOP-1", "alarm 10746: the variant writes STOPRE between the SAR block and its direction block"},
+    {"SAR-STOP-1", "e:alarm:SAR-STOP-1",
+     "alarm 10746: the variant writes STOPRE between the SAR block and its direction block"},
     {"SAR-AGAIN-1", "e:alarm:SAR-AGAIN-1", "alarm 10743: the variant writes a second SAR block before the first ends"},
     {"SAR-POINTS-1", "e:sar:lead", "a construction: the approach's points P0-P4"},
     {"SAR-POINTS-2", "d:SAR-END-1", "a construction: the retraction's points"},
     {"SAR-DISCL-1", "d:SAR-DISCL-3", "the level of P2, which SAR-DISCL-3 decides against"},
     {"SAR-DISCL-2", "d:SAR-DISCL-3", "the level without DISCL or with DISCL=0 (drawn by the generators)"},
-    {"SAR-DISRP-1", "d:SAR-DISRP-2", "the level of P1: DISRP above or below P4's plane (variants), decided against by SAR-DISRP-2"},
+    {"SAR-DISRP-1", "d:SAR-DISRP-2",
+     "the level of P1: DISRP above or below P4's plane (variants), decided against by SAR-DISRP-2"},
     {"SAR-SEG-1", "e:sar:element", "G340: the generators draw G340 and G341"},
     {"SAR-SEG-2", "e:sar:slow_infeed", "G341: the infeed sub-blocks"},
     {"SAR-FEED-1", "e:sar:element", "feeds of the sub-blocks (FAD drawn), compared with each element"},
@@ -115,7 +117,8 @@ constexpr Untraced kUntraced[] = {
 long evidence_count(const CampaignSummary& s, const std::string& key) {
   if (key.rfind("d:", 0) == 0) {
     std::string clause = key.substr(2), branch;
-    if (auto slash = clause.find('/'); slash != std::string::npos) branch = clause.substr(slash + 1), clause.resize(slash);
+    if (auto slash = clause.find('/'); slash != std::string::npos)
+      branch = clause.substr(slash + 1), clause.resize(slash);
     auto it = s.coverage.find(clause);
     if (it == s.coverage.end()) return 0;
     long n = 0;
@@ -134,7 +137,9 @@ long evidence_count(const CampaignSummary& s, const std::string& key) {
   return 0;
 }
 
-std::string percent(long n, long total) { return total ? fmt::format("{:.3f} %", 100.0 * static_cast<double>(n) / static_cast<double>(total)) : "-"; }
+std::string percent(long n, long total) {
+  return total ? fmt::format("{:.3f} %", 100.0 * static_cast<double>(n) / static_cast<double>(total)) : "-";
+}
 
 void write_histogram(const CampaignSummary& s, const std::string& path) {
   std::ofstream out(path);
@@ -201,17 +206,21 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
   for (const auto& [v, n] : s.verdicts) md << fmt::format("| {} | {} | {} |\n", v, n, percent(n, s.cases));
   md << "\n*agree*: same decisions, coordinates within the tolerance. *knife-edge*: a decision parted the\n"
      << "runs where ref's exact margin lies inside the clause's documented band (the rest is not\n"
-     << "compared). *not-supported*: both engines rejected the program naming the same line (TRC-UNSUP-1).\n"
+     << "compared); *knife-edge-ends-differ*: such a case after which one engine ends clean and the\n"
+     << "other with an alarm or a rejection, or with other alarms. *not-supported*: both engines rejected the program "
+        "naming the same line (TRC-UNSUP-1).\n"
      << "*over-budget*: the case ran longer than `--budget` seconds and was stopped, not compared (listed\n"
-     << "below). *diverge* and *crash* stop a shard: each is an unexplained divergence.\n\n";
+     << "below). *diverge* and *crash* stop a shard: each is an unexplained divergence. A decision\n"
+     << "whose branch its own engine's margin contradicts under the clause's boundary rule\n"
+     << "(PROP-BOUNDARY-1) is a divergence, never a knife edge.\n\n";
   md << "### Knife edges by clause\n\n| clause | cases |\n|---|---|\n";
   for (const auto& [c, n] : s.knife_edges) md << fmt::format("| {} | {} |\n", c, n);
   md << "\n## Unexplained divergences\n\n";
   if (s.divergences.empty()) md << "None.\n";
   for (const auto& d : s.divergences) md << "- " << d << "\n";
   if (!s.over_budget.empty())
-    md << "\nCases over budget (replay with `cutcom certify --seed " << s.seed << " --show K`): "
-       << fmt::format("{}", fmt::join(s.over_budget, ", ")) << ".\n";
+    md << "\nCases over budget (replay with `cutcom certify --seed " << s.seed
+       << " --show K`): " << fmt::format("{}", fmt::join(s.over_budget, ", ")) << ".\n";
   md << "\n## Coordinate error\n\n"
      << "The largest coordinate difference (mm, max norm over start, end and centre of every element)\n"
      << "between fast and ref per agreeing case, and the same relative to the case's documented\n"

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <optional>
 
+#include "cutcom/boundary_rules.hpp"
+
 namespace cutcom::props {
 
 namespace {
@@ -23,7 +25,8 @@ double distance(const PathPoint& a, const PathPoint& b) {
 
 // How far an arc turns, in [0, 2π], in its plane: the axis on which centre and start agree is the
 // applicate (both engines put the centre at the start's applicate; a helix's end leaves it); of
-// several, the one in whose plane start and end are equally far from the centre. A full circle
+// several, the one on which the end agrees too, then the one in whose plane start and end are
+// equally far from the centre. A full circle
 // (start == end) turns 2π; otherwise the angle between the radius vectors u, v, or 2π minus it,
 // by the sense of u × v against the arc's direction (counter-clockwise seen from the positive
 // applicate axis). Empty where that sense is within the rounding of u × v (start and end a few
@@ -35,11 +38,16 @@ std::optional<double> sweep_of(const PathElement& e) {
   static constexpr int kPlane[3][2] = {{1, 2}, {2, 0}, {0, 1}};  // (abscissa, ordinate) about axis k
   int best = -1;
   double best_mismatch = 0;
+  bool best_flat = false;
   for (int k = 0; k < 3; ++k) {
     if (c[k] != s[k]) continue;
     int a = kPlane[k][0], b = kPlane[k][1];
+    // An axis on which the end agrees too is the applicate of a circle in its plane: it wins over
+    // one where only the start happens to lie level with the centre (a start on the centre's x).
+    bool flat = t[k] == c[k];
     double mismatch = std::fabs(std::hypot(s[a] - c[a], s[b] - c[b]) - std::hypot(t[a] - c[a], t[b] - c[b]));
-    if (best < 0 || mismatch < best_mismatch) best = k, best_mismatch = mismatch;
+    if (best < 0 || (flat && !best_flat) || (flat == best_flat && mismatch < best_mismatch))
+      best = k, best_mismatch = mismatch, best_flat = flat;
   }
   if (best < 0) return std::nullopt;
   int a = kPlane[best][0], b = kPlane[best][1];
@@ -265,6 +273,40 @@ bool parted_after_touching(const RunResult& ref, std::size_t upto, const Toleran
 }
 }  // namespace
 
+namespace {
+// The sign of a decision's margin: fast's double, or ref's text whose sign is exact ("0" only
+// for an exact tie). Empty for a NaN, which no rule admits.
+std::optional<int> margin_sign(const Decision& d) {
+  if (d.margin_exact.empty()) {
+    if (std::isnan(d.margin)) return std::nullopt;
+    return (d.margin > 0) - (d.margin < 0);
+  }
+  const std::string& t = d.margin_exact;
+  if (t[0] == '-') return -1;
+  if (t.find_first_of("123456789") == std::string::npos && t.find("inf") == std::string::npos) return 0;
+  return 1;
+}
+}  // namespace
+
+// PROP-BOUNDARY-1: each engine's branch agrees with its own margin under the clause's boundary
+// rule. A branch taken against its own margin is a wrong comparison at the threshold (`<` for
+// `<=`), whatever the other engine did: never a knife edge.
+std::optional<std::string> broken_boundary_rule(const RunResult& run, std::string_view engine) {
+  for (std::size_t i = 0; i < run.decisions.size(); ++i) {
+    const Decision& d = run.decisions[i];
+    if (!d.has_margin) continue;
+    const BoundaryRule* rule = boundary_rule(d.clause, d.branch);
+    if (!rule) continue;
+    std::optional<int> sign = margin_sign(d);
+    if (sign && satisfies(rule->margin, *sign)) continue;
+    return fmt::format("{} decision {}: {} line {} `{}` with margin {} breaks its boundary rule (`{}` needs margin {})",
+                       engine, i, d.clause, d.line, d.branch,
+                       d.margin_exact.empty() ? fmt::format("{}", d.margin) : d.margin_exact, d.branch,
+                       requirement_text(rule->margin));
+  }
+  return std::nullopt;
+}
+
 Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& tol) {
   Verdict v;
   auto diverge = [&](std::string why) {
@@ -272,6 +314,8 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     v.explanation = std::move(why);
     return v;
   };
+  for (auto [run, engine] : {std::pair{&fast, "fast"}, std::pair{&ref, "ref"}})
+    if (std::optional<std::string> broken = broken_boundary_rule(*run, engine)) return diverge(*broken);
   std::size_t n = std::min(ref.decisions.size(), fast.decisions.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Decision& r = ref.decisions[i];
@@ -347,6 +391,15 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       // a sliver): the difference along the circle counts.
       std::optional<double> rs = sweep_of(r), fs = sweep_of(f);
       if (rs && fs) e = std::max(e, std::fabs(*rs - *fs) * radius_of(r));
+      // A full circle (start == end) against an arc whose end points lie a rounding apart on one
+      // radius: that arc's turn is undetermined (a sliver or a full circle to whoever reads it).
+      bool r_full = r.start.x == r.end.x && r.start.y == r.end.y && r.start.z == r.end.z;
+      bool f_full = f.start.x == f.end.x && f.start.y == f.end.y && f.start.z == f.end.z;
+      if ((r_full && !fs) || (f_full && !rs))
+        return diverge(
+            fmt::format("element {} ({}): {} turns a full circle, {} writes end points that leave its "
+                        "turn undetermined",
+                        i, describe(r.origin), r_full ? "ref" : "fast", r_full ? "fast" : "ref"));
     }
     v.max_coordinate_error = std::max(v.max_coordinate_error, e);
     if (!(e <= tol.coordinate) && touch && e <= tol.touching) {

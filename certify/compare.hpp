@@ -3,7 +3,9 @@
 // documented for that clause; coordinates must agree within a tolerance scaled to the contour.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "cutcom/block.hpp"
 #include "cutcom/sink.hpp"
@@ -47,5 +49,9 @@ struct Verdict {
 };
 
 Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& tol);
+
+// PROP-BOUNDARY-1: the first decision of `run` whose branch its own margin contradicts under the
+// clause's boundary rule (cutcom/boundary_rules.hpp), described; empty when there is none.
+std::optional<std::string> broken_boundary_rule(const RunResult& run, std::string_view engine);
 
 }  // namespace cutcom::props

@@ -364,12 +364,14 @@ int certify_command(CertifyOptions& o) {
   }
   long agree = s.verdicts.count("agree") ? s.verdicts.at("agree") : 0;
   long knife = s.verdicts.count("knife-edge") ? s.verdicts.at("knife-edge") : 0;
+  long ends_differ = s.verdicts.count("knife-edge-ends-differ") ? s.verdicts.at("knife-edge-ends-differ") : 0;
   long unsupported = s.verdicts.count("not-supported") ? s.verdicts.at("not-supported") : 0;
   std::cout << fmt::format(
-      "{} cases in {:.1f} s ({:.0f}/s): {} agree, {} knife edges, {} not supported, {} over budget, {} unexplained "
-      "divergences; largest coordinate error {:.3g} mm ({:.3g} of the tolerance)\n",
-      s.cases, s.seconds, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife, unsupported,
-      s.over_budget.size(), s.divergences.size(), s.max_error, s.max_ratio);
+      "{} cases in {:.1f} s ({:.0f}/s): {} agree, {} knife edges (after {} of them the runs end differently), {} not "
+      "supported, {} over budget, {} unexplained divergences; largest coordinate error {:.3g} mm ({:.3g} of the "
+      "tolerance)\n",
+      s.cases, s.seconds, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife + ends_differ,
+      ends_differ, unsupported, s.over_budget.size(), s.divergences.size(), s.max_error, s.max_ratio);
   for (const auto& c : s.over_budget) std::cout << "over budget: case " << c << "\n";
   for (const auto& d : s.divergences) std::cout << "unexplained divergence: " << d << "\n";
   return s.divergences.empty() ? kDone : kAlarm;

@@ -5,6 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "cutcom/boundary_rules.hpp"
 
 namespace cutcom::props {
 namespace {
@@ -60,6 +65,78 @@ TEST(Comparison, AFullCircleAgainstAnArcWithTheSameEndPointsDiverges) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
   fast.path = {arc(s, s, {0, 0, 0}, true)};
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
+  // fast without its full-circle end snapping: (0, 3) to (0, 2.9999999999999996), one radius,
+  // the end points 4.4e-16 mm apart; whether it turns 0 or 2 pi cannot be read from them.
+  fast.path = {arc(s, {0, 2.9999999999999996, 0}, {0, 0, 0}, true)};
+  Verdict v = compare(ref, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("ref turns a full circle, fast writes end points"), std::string::npos) << v.explanation;
+  // A start level with the centre on x is no reason to read the circle in the YZ plane: the end
+  // keeps the applicate z, so it turns in XY, a whole turn less 2.5e-11 rad (a corner cut).
+  ref.path = {arc({0, 0, -1}, {0, 0, -1}, {0, -0.001, -1}, false)};
+  fast.path = {arc({0, 0, -1}, {-2.5109690751477657e-14, -1.0611755321835595e-19, -1}, {0, -0.001, -1}, false)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
+}
+
+}  // namespace
+}  // namespace cutcom::props
+
+namespace cutcom::props {
+namespace {
+
+Decision decision(std::string_view clause, std::string_view branch, double margin, std::string exact = {}) {
+  Decision d;
+  d.clause = clause, d.branch = branch, d.line = 7, d.has_margin = true, d.margin = margin,
+  d.margin_exact = std::move(exact);
+  return d;
+}
+
+// A branch taken against its own margin is a divergence even where both engines agree and ref's
+// margin lies in the band: `<` for `<=` at MD20230 shows as `switch-to-G451` at margin 0.
+// covers: PROP-BOUNDARY-1 TRC-CORNER-4 TRC-KONT-1 TRC-ELEMENT-1
+TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
+  RunResult ref, fast;
+  ref.decisions = {decision("TRC-CORNER-4", "keep-G450", 0, "0")};
+  fast.decisions = {decision("TRC-CORNER-4", "switch-to-G451", 0)};
+  Verdict v = compare(ref, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("fast decision 0: TRC-CORNER-4 line 7 `switch-to-G451` with margin 0 breaks"),
+            std::string::npos)
+      << v.explanation;
+  // The same branch at a margin that says so: a knife edge, as before.
+  fast.decisions = {decision("TRC-CORNER-4", "switch-to-G451", -1e-12)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kKnifeEdge);
+  // ref is held to its rules too, by the exact sign of its margin text.
+  ref.decisions = {decision("TRC-KONT-1", "behind", 0, "0")};
+  fast.decisions = {decision("TRC-KONT-1", "behind", -1e-15)};
+  EXPECT_NE(compare(ref, fast, tolerance()).explanation.find("ref decision 0"), std::string::npos);
+  ref.decisions = fast.decisions = {decision("TRC-ELEMENT-1", "vanishes", 0, "0")};
+  fast.decisions[0].margin_exact.clear();
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
+  fast.decisions[0].branch = ref.decisions[0].branch = "reverses";
+  ref.decisions[0].margin_exact = "-1.5e-30";
+  EXPECT_NE(compare(ref, fast, tolerance()).explanation.find("fast decision 0: TRC-ELEMENT-1"), std::string::npos);
+  // A NaN margin satisfies no rule.
+  fast.decisions[0].margin = std::nan("");
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
+}
+
+// Every rule names a clause of the spec and a branch its engines trace.
+// covers: PROP-BOUNDARY-1
+TEST(Comparison, EveryBoundaryRuleNamesAClauseOfTheSpec) {
+  std::string spec;
+  for (const char* file : {"arcs.md", "trc-lines.md", "approach-retraction.md", "sar.md"}) {
+    std::ifstream in(std::string(CUTCOM_SOURCE_DIR) + "/spec/" + file);
+    spec += std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  EXPECT_GT(boundary_rules().size(), 40u);
+  for (const BoundaryRule& r : boundary_rules()) {
+    std::string heading = "### ", branch = "`";
+    heading.append(r.clause).append(" ");
+    branch.append(r.branch).append("`");
+    EXPECT_NE(spec.find(heading), std::string::npos) << r.clause;
+    EXPECT_NE(spec.find(branch), std::string::npos) << r.clause << " " << r.branch;
+  }
 }
 
 }  // namespace

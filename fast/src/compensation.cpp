@@ -151,9 +151,14 @@ bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std:
     if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end));
     // PATH-ELEMENT-2: a circle that turns more than half a turn but whose end, rounded, lies just
     // past its start (within 1e-8 of the radius) would read as a sliver: it ends at its start.
-    double reads = signed_rotation(open_start - e.centre, end_point - e.centre, e.sense);
-    if (turn > std::numbers::pi && reads > 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius))
-      to = xyz(open_start, h(open.end));
+    // Nor may it end where its direction from the centre is the start's within rounding: whether
+    // it turns 0 or a whole turn could not be read from its points (PATH-ELEMENT-2).
+    Vec2 u = open_start - e.centre, v = end_point - e.centre;
+    double nu = norm(u), nv = norm(v);
+    bool unreadable = std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
+    double reads = signed_rotation(u, v, e.sense);
+    bool just_past = reads > 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius);
+    if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end));
     arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
   }
   return true;

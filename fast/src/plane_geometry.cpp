@@ -114,14 +114,28 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
   return true;
 }
 
+// The sign is that of the quantity carrier_intersections decides on (PROP-BOUNDARY-1: the
+// branch "meet" or "miss" must agree with the margin traced), the size the distance in mm.
 double carrier_gap(const Carrier& u, const Carrier& v) {
   if (u.circle != v.circle) {
     const Carrier& l = u.circle ? v : u;
     const Carrier& c = u.circle ? u : v;
-    return std::fabs(cross(l.direction, c.point - l.point)) / norm(l.direction) - c.radius;
+    Vec2 d = (1.0 / norm(l.direction)) * l.direction;
+    Vec2 foot = l.point + dot(c.point - l.point, d) * d;
+    double dist2 = dot(foot - c.point, foot - c.point);
+    double half2 = c.radius * c.radius - dist2;
+    return -half2 / (c.radius + std::sqrt(dist2));  // = distance of the centre - radius
   }
-  double d = norm(v.point - u.point);
-  return std::max(d - (u.radius + v.radius), std::fabs(u.radius - v.radius) - d);
+  Vec2 d = v.point - u.point;
+  double dd = dot(d, d);
+  if (dd == 0) return std::fabs(u.radius - v.radius);  // concentric: never meet (or the same circle)
+  double along = (u.radius * u.radius - v.radius * v.radius + dd) / (2 * dd);
+  double across2 = u.radius * u.radius / dd - along * along;
+  double dist = std::sqrt(dd);
+  double gap = std::max(dist - (u.radius + v.radius), std::fabs(u.radius - v.radius) - dist);
+  if ((across2 < 0) == (gap > 0)) return gap;
+  // Within rounding of touching the two formulas may disagree: the deciding one's sign, its size.
+  return -across2 * dd / (u.radius + std::fabs(along) * dist);
 }
 
 double signed_rotation(Vec2 from, Vec2 to, int sense) { return sense * std::atan2(cross(from, to), dot(from, to)); }
