@@ -25,8 +25,8 @@ double distance(const PathPoint& a, const PathPoint& b) {
 
 // How far an arc turns, in [0, 2π], in its plane: the axis on which centre and start agree is the
 // applicate (both engines put the centre at the start's applicate; a helix's end leaves it); of
-// several, the one on which the end agrees too, then the one in whose plane start and end are
-// equally far from the centre. A full circle
+// several, the one in whose plane start and end are equally far from the centre, and of two
+// equally so within rounding, the one on which the end agrees too. A full circle
 // (start == end) turns 2π; otherwise the angle between the radius vectors u, v, or 2π minus it,
 // by the sense of u × v against the arc's direction (counter-clockwise seen from the positive
 // applicate axis). Empty where that sense is within the rounding of u × v (start and end a few
@@ -45,8 +45,11 @@ std::optional<double> sweep_of(const PathElement& e) {
     // An axis on which the end agrees too is the applicate of a circle in its plane: it wins over
     // one where only the start happens to lie level with the centre (a start on the centre's x).
     bool flat = t[k] == c[k];
-    double mismatch = std::fabs(std::hypot(s[a] - c[a], s[b] - c[b]) - std::hypot(t[a] - c[a], t[b] - c[b]));
-    if (best < 0 || (flat && !best_flat) || (flat == best_flat && mismatch < best_mismatch))
+    double rs = std::hypot(s[a] - c[a], s[b] - c[b]), rt = std::hypot(t[a] - c[a], t[b] - c[b]);
+    double mismatch = std::fabs(rs - rt);
+    // Mismatches within rounding of the radius are a tie, which the flat axis wins.
+    bool tie = best >= 0 && std::fabs(mismatch - best_mismatch) <= 16 * kUnitRoundoff * std::max(rs, rt);
+    if (best < 0 || (tie ? flat && !best_flat : mismatch < best_mismatch))
       best = k, best_mismatch = mismatch, best_flat = flat;
   }
   if (best < 0) return std::nullopt;

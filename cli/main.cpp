@@ -20,6 +20,7 @@
 #include "cutcom/output.hpp"
 #include "cutcom/reader.hpp"
 #include "cutcom/ref/engine.hpp"
+#include "knife_edge_watch.hpp"
 
 namespace {
 
@@ -295,6 +296,7 @@ struct CertifyOptions {
   }();
   std::string shard = "0/1";
   std::string summary, report, histogram, spec = "spec";
+  std::string knife_baseline, write_knife_baseline;  // PROP-KNIFE-1
   std::vector<std::string> merge, replay;
   long show = -1;
 };
@@ -356,6 +358,21 @@ int certify_command(CertifyOptions& o) {
     s = cutcom::props::run_campaign(o.campaign);
   }
   if (!o.summary.empty()) std::ofstream(o.summary) << s.to_json().dump(1) << "\n";
+  if (!o.write_knife_baseline.empty())
+    std::ofstream(o.write_knife_baseline) << cutcom::props::knife_edge_baseline(s).dump(1) << "\n";
+  std::vector<std::string> rises;
+  if (!o.knife_baseline.empty()) {  // PROP-KNIFE-1
+    std::ifstream in(o.knife_baseline);
+    if (!in) throw cutcom::MachineDataError(fmt::format("cannot open knife-edge baseline '{}'", o.knife_baseline));
+    nlohmann::json baseline = nlohmann::json::parse(in, nullptr, false);
+    if (baseline.is_discarded())
+      throw cutcom::MachineDataError(fmt::format("knife-edge baseline '{}' is not JSON", o.knife_baseline));
+    try {
+      rises = cutcom::props::knife_edge_rises(s, baseline);
+    } catch (const std::runtime_error& e) {
+      throw cutcom::MachineDataError(fmt::format("'{}': {}", o.knife_baseline, e.what()));
+    }
+  }
   if (!o.report.empty()) {
     std::string svg = o.histogram.empty()
                           ? (std::filesystem::path(o.report).parent_path() / "certification-errors.svg").string()
@@ -374,7 +391,10 @@ int certify_command(CertifyOptions& o) {
       ends_differ, unsupported, s.over_budget.size(), s.divergences.size(), s.max_error, s.max_ratio);
   for (const auto& c : s.over_budget) std::cout << "over budget: case " << c << "\n";
   for (const auto& d : s.divergences) std::cout << "unexplained divergence: " << d << "\n";
-  return s.divergences.empty() ? kDone : kAlarm;
+  for (const auto& r : rises) std::cout << "knife edges rose beyond noise: " << r << "\n";
+  if (!o.knife_baseline.empty() && rises.empty())
+    std::cout << "knife edges per clause within noise of the baseline " << o.knife_baseline << "\n";
+  return s.divergences.empty() && rises.empty() ? kDone : kAlarm;
 }
 
 int list_alarms() {
@@ -437,6 +457,10 @@ int main(int argc, char** argv) {
   certify->add_option("--histogram", co.histogram, "the histogram's SVG file (next to the report by default)");
   certify->add_option("--spec", co.spec, "spec directory, for the clause list of the coverage table");
   certify->add_flag("!--no-progress", co.campaign.progress, "no progress bar");
+  certify->add_option("--knife-baseline", co.knife_baseline,
+                      "fail when a clause's knife edges rise beyond noise over this baseline (JSON)");
+  certify->add_option("--write-knife-baseline", co.write_knife_baseline,
+                      "write this campaign's knife edges per clause as a baseline (JSON)");
   certify->add_option("--replay", co.replay, "judge these programs (FILE.md beside each: machine data) and stop")
       ->expected(1, -1);
   certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop");

@@ -76,6 +76,11 @@ TEST(Comparison, AFullCircleAgainstAnArcWithTheSameEndPointsDiverges) {
   ref.path = {arc({0, 0, -1}, {0, 0, -1}, {0, -0.001, -1}, false)};
   fast.path = {arc({0, 0, -1}, {-2.5109690751477657e-14, -1.0611755321835595e-19, -1}, {0, -0.001, -1}, false)};
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
+  // A SAR half turn down a helix whose start, end and centre share x: the plane is XY (start and
+  // end equally far from the centre there), not YZ where x agrees too.
+  ref.path = {arc({-0.659, -5.54, 2.383}, {-0.659, -10.226, 0}, {-0.659, -7.883, 2.383}, true)};
+  fast.path = {arc({-0.659, -5.54, 2.383}, {-0.659, -10.226 + 1e-15, 0}, {-0.659, -7.883, 2.383}, true)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree) << compare(ref, fast, tolerance()).explanation;
 }
 
 }  // namespace
