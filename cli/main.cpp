@@ -21,6 +21,7 @@
 #include "cutcom/reader.hpp"
 #include "cutcom/ref/engine.hpp"
 #include "knife_edge_watch.hpp"
+#include "neighbours.hpp"
 
 namespace {
 
@@ -297,26 +298,38 @@ struct CertifyOptions {
   std::string shard = "0/1";
   std::string summary, report, histogram, spec = "spec";
   std::string knife_baseline, write_knife_baseline;  // PROP-KNIFE-1
-  std::vector<std::string> merge, replay;
+  std::vector<std::string> merge, replay, from;
+  long neighbours = 200;  // --from: generated neighbours of each program
   long show = -1;
 };
+
+// A program and its machine data (FILE.md beside it, as in tests/corpus), for --replay and --from.
+struct ProgramWithData {
+  std::string text, md_text;
+  cutcom::MachineData md;
+};
+ProgramWithData read_program_with_data(const std::string& f) {
+  std::ifstream in(f);
+  if (!in) throw cutcom::MachineDataError(fmt::format("cannot open program '{}'", f));
+  ProgramWithData p;
+  p.text = read_all(in);
+  std::filesystem::path md_file = std::filesystem::path(f).replace_extension(".md");
+  if (std::filesystem::exists(md_file)) {
+    std::ifstream m(md_file);
+    p.md_text = read_all(m);
+    std::istringstream again(p.md_text);
+    p.md.load(again, md_file.string());
+  }
+  return p;
+}
 
 // `certify --replay`: each program (with its FILE.md machine data beside it, as in tests/corpus)
 // through both engines, judged as a campaign case; exit 1 on an unexplained divergence.
 int replay_programs(const std::vector<std::string>& files) {
   bool diverged = false;
   for (const auto& f : files) {
-    std::ifstream in(f);
-    if (!in) throw cutcom::MachineDataError(fmt::format("cannot open program '{}'", f));
-    std::ostringstream text;
-    text << in.rdbuf();
-    cutcom::MachineData md;
-    std::filesystem::path md_file = std::filesystem::path(f).replace_extension(".md");
-    if (std::filesystem::exists(md_file)) {
-      std::ifstream m(md_file);
-      md.load(m, md_file.string());
-    }
-    cutcom::props::ReplayVerdict v = cutcom::props::replay(text.str(), md);
+    ProgramWithData p = read_program_with_data(f);
+    cutcom::props::ReplayVerdict v = cutcom::props::replay(p.text, p.md);
     diverged = diverged || v.verdict == "diverge";
     std::cout << fmt::format("{}: {}", f, v.verdict);
     if (!v.clause.empty()) std::cout << " (" << v.clause << ")";
@@ -328,11 +341,56 @@ int replay_programs(const std::vector<std::string>& files) {
   return diverged ? kAlarm : kDone;
 }
 
-// The certification campaign (docs/certification.md): exit 0 without unexplained divergence,
-// 1 with one (written to the corpus).
+// `certify --from`: each program and `count` neighbours of it (values moved by small steps and
+// onto exact ties, machine data near theirs), judged as campaign cases. A neighbour that
+// diverges is written beside the program (NAME.neighbour-K.mpf and .md) to replay; exit 1.
+int certify_from(const std::vector<std::string>& files, long count, std::uint64_t seed) {
+  bool diverged = false;
+  for (const auto& f : files) {
+    ProgramWithData p = read_program_with_data(f);
+    std::map<std::string, long> verdicts, knife_edges;
+    long rejected = 0;
+    double worst = 0;
+    for (long k = 0; k <= count; ++k) {
+      cutcom::props::Neighbour n{p.text, p.md, "the program itself"};
+      if (k > 0) n = cutcom::props::neighbour_of(p.text, p.md, seed, k);
+      cutcom::props::ReplayVerdict v;
+      try {
+        v = cutcom::props::replay(n.text, n.md);
+      } catch (const std::exception& e) {  // a neighbour the reader rejects (an unreachable CR=, say)
+        if (k == 0) throw;
+        ++rejected;
+        continue;
+      }
+      ++verdicts[v.verdict];
+      if (v.verdict.rfind("knife-edge", 0) == 0) ++knife_edges[v.clause];
+      if (v.verdict == "agree") worst = std::max(worst, v.ratio);
+      if (v.verdict != "diverge") continue;
+      diverged = true;
+      std::filesystem::path base = std::filesystem::path(f).replace_extension("");
+      std::string out = fmt::format("{}.neighbour-{}", base.string(), k);
+      std::ofstream(out + ".mpf") << n.text;
+      std::ofstream(out + ".md") << p.md_text << "MD20210=" << machine_datum_value(n.md, "MD20210")
+                                 << "\nMD20230=" << machine_datum_value(n.md, "MD20230")
+                                 << "\nMD20240=" << machine_datum_value(n.md, "MD20240") << "\n";
+      std::cout << fmt::format("{}: neighbour {} ({}) diverges: {}\n  written to {}.mpf\n", f, k, n.change,
+                               v.explanation, out);
+    }
+    auto count_of = [&](const char* v) { return verdicts.count(v) ? verdicts.at(v) : 0L; };
+    std::cout << fmt::format(
+        "{}: the program and {} neighbours: {} agree, {} knife edges ({} ending differently), {} not supported, {} "
+        "rejected by the reader, {} unexplained divergences; largest coordinate error {:.3g} of the tolerance\n",
+        f, count, count_of("agree"), count_of("knife-edge") + count_of("knife-edge-ends-differ"),
+        count_of("knife-edge-ends-differ"), count_of("not-supported"), rejected, count_of("diverge"), worst);
+    for (const auto& [clause, n] : knife_edges) std::cout << fmt::format("  knife edges {}: {}\n", clause, n);
+  }
+  return diverged ? kAlarm : kDone;
+}
+
 int certify_command(CertifyOptions& o) {
   using cutcom::props::CampaignSummary;
   if (!o.replay.empty()) return replay_programs(o.replay);
+  if (!o.from.empty()) return certify_from(o.from, o.neighbours, o.campaign.seed);
   if (o.show >= 0) {  // one case, to replay it with `cutcom run`
     auto [program, md] = cutcom::props::campaign_case(o.campaign.seed, o.show);
     std::string words = md.substr(0, md.size() - 1);
@@ -463,6 +521,12 @@ int main(int argc, char** argv) {
                       "write this campaign's knife edges per clause as a baseline (JSON)");
   certify->add_option("--replay", co.replay, "judge these programs (FILE.md beside each: machine data) and stop")
       ->expected(1, -1);
+  certify
+      ->add_option("--from", co.from,
+                   "certify fast on these programs (FILE.md beside each: machine data) and their neighbours")
+      ->expected(1, -1);
+  certify->add_option("--neighbours", co.neighbours, "--from: neighbours of each program (default 200)")
+      ->check(CLI::Range(0L, 10'000'000L));
   certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop");
 
   try {

@@ -246,7 +246,7 @@ TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
   EXPECT_NE(tight.out.find(std::to_string(over) + " over budget"), std::string::npos) << tight.out;
 }
 
-// covers: CLI-2 PROP-CORPUS-1
+// covers: CLI-2 PROP-CORPUS-1 PROP-FROM-1
 TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
   const std::string src = CUTCOM_SOURCE_DIR, dir = CUTCOM_BINARY_DIR;
   // A corpus case: a knife edge of TRC-CD-3 (its MD20240 = 2 read from the .md beside it) after
@@ -263,6 +263,11 @@ TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
   Result bad = sh("{ " + kCli + " certify --replay " + dir + "/replay-bad.mpf 2>&1; }");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.out.find("replay-bad.md:1: MD20240"), std::string::npos) << bad.out;
+  // A user's program and its neighbours (PROP-FROM-1).
+  Result from = sh(kCli + " certify --from " + src + "/examples/contour.mpf --neighbours 40");
+  EXPECT_EQ(from.status, 0) << from.out;
+  EXPECT_NE(from.out.find("contour.mpf: the program and 40 neighbours: "), std::string::npos) << from.out;
+  EXPECT_NE(from.out.find(" 0 unexplained divergences"), std::string::npos) << from.out;
   Result missing = sh("{ " + kCli + " certify --replay " + dir + "/no-such-program.mpf 2>&1; }");
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.out.find("cannot open program"), std::string::npos) << missing.out;
