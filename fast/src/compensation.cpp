@@ -66,6 +66,7 @@ void Compensation::select(const Block& b) {
   decide(cs.decision, b.words.line);
   s = cs.s;
   r = cs.r.to_double();
+  r_units = cs.r.units();
   selection = copy_of(b);
   selection_from_tool = false;
   has_prev = false;
@@ -189,6 +190,15 @@ std::optional<Compensation::ExactProducts> Compensation::exact_products(const st
   for (Int128 v : {a1, b1, a2, b2})
     if (v >= limit || v <= -limit) return std::nullopt;  // beyond the range: the double decision stands
   return ExactProducts{a1 * b2 - b1 * a2, a1 * a2 + b1 * b2};
+}
+
+std::optional<int> Compensation::exact_room_sign(const std::array<Int128, 3>& u) const {
+  const Int128 limit = Int128(1) << 62;
+  Int128 a = u[static_cast<std::size_t>(axes.abscissa)], b = u[static_cast<std::size_t>(axes.ordinate)];
+  for (Int128 v : {a, b, r_units})
+    if (v >= limit || v <= -limit) return std::nullopt;  // beyond the range: the double decision stands
+  Int128 d = a * a + b * b - r_units * r_units;          // each square below 2^124: no overflow
+  return (d > 0) - (d < 0);
 }
 
 bool Compensation::equidistant_exists(const Block& b, const Element& e, double& radius) {

@@ -52,8 +52,9 @@ class Compensation {
   PlaneAxes axes{0, 1, 2};
   Plane plane = Plane::kG17;
   Side side = Side::kOff;
-  int s = 0;     // +1 left, -1 right (after TRC-RADIUS-2)
-  double r = 0;  // |effective radius|
+  int s = 0;           // +1 left, -1 right (after TRC-RADIUS-2)
+  double r = 0;        // |effective radius|
+  Int128 r_units = 0;  // the same, exactly, in 10^-9 mm (TRC-KONT-2 decides on it)
   ActiveEdge edge;
 
   BlockCopy selection;               // kApproach: the selection block
@@ -209,7 +210,10 @@ class Compensation {
   struct Kont {
     Vec2 vertex, point, d1, d2;
     std::optional<int> exact_sign;  // sign of cross(contour tangent, point - vertex), if decided in integers
+    std::optional<int> exact_room;  // sign of |point - vertex|^2 - r^2, if decided in integers
   };
+  // The sign of |u|^2 - r^2 in the plane for an exact displacement u, if in range.
+  std::optional<int> exact_room_sign(const std::array<Int128, 3>& u) const;
 
   // The sign of cross(t, k * u) for exact integer displacements t and u (k = +-1), if they are in range.
   std::optional<int> exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u, int k) const;

@@ -30,9 +30,10 @@ void Compensation::approach(const Block& b) {
   if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
   if (selection.kont) {
     // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
-    Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt};
+    Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt, std::nullopt};
     if (!selection_from_tool && !e.arc && first.exact && selection.exact)
       k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
+    if (!selection_from_tool && selection.exact) k.exact_room = exact_room_sign(selection.delta);
     if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
     if (trace.stopped()) return;
   }
@@ -86,8 +87,13 @@ bool Compensation::kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 ta
   if (!kont_side(at_block, k.vertex, k.point, tangent, k.exact_sign)) return false;
   Vec2 off = k.point - k.vertex;
   double distance = norm(off);
-  bool inside = distance < r;
-  decide("TRC-KONT-2", at_block.line, inside ? "inside" : "room", distance - r);
+  // Between programmed points the distance is decided exactly (a start exactly r from the
+  // contour's start has room); the margin keeps the sign decided.
+  int room = k.exact_room ? *k.exact_room : (distance > r) - (distance < r);
+  bool inside = room < 0;
+  double gap = std::max(std::fabs(distance - r), std::numeric_limits<double>::denorm_min());
+  double margin = room == 0 ? 0.0 : room > 0 ? gap : -gap;
+  decide("TRC-KONT-2", at_block.line, inside ? "inside" : "room", margin);
   if (inside) raise(alarm, at_block.line, at_block.number, "TRC-KONT-2");
   return !inside;
 }
@@ -149,8 +155,9 @@ void Compensation::retract_edge(const Block& b) {
   decide("TRC-DESEL-1", d.line, "deselected");
   if (d.kont) {  // TRC-KONT-1/2, then TRC-EDGE-6
     Vec2 p = ab(d.end);
-    Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt};
+    Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt, std::nullopt};
     if (!last.arc && last_block->exact && d.exact) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
+    if (d.exact) k.exact_room = exact_room_sign(d.delta);
     if (kont_behind(d, k, k.d1, 10756)) return retract_edge_around(d, *last_block, k);
     if (trace.stopped()) return;
   }
@@ -258,8 +265,9 @@ void Compensation::deselect(const Block& b) {
   BlockCopy last = copy_of(b);
   if (last.kont) {
     Vec2 p = ab(last.end);
-    Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt};
+    Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt, std::nullopt};
     if (!open_el.arc && open.exact && last.exact) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
+    if (last.exact) k.exact_room = exact_room_sign(last.delta);
     if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
     if (trace.stopped()) return;
   }
