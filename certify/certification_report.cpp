@@ -221,6 +221,11 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
   if (!s.over_budget.empty())
     md << "\nCases over budget (replay with `cutcom certify --seed " << s.seed
        << " --show K`): " << fmt::format("{}", fmt::join(s.over_budget, ", ")) << ".\n";
+  md << "\n## Mutants\n\n"
+     << "How strong the certificate is: `scripts/mutants.sh` plants each patch of `mutants/` (one\n"
+     << "realistic change of fast) and judges it by a 20,000-case campaign under PROP-BOUNDARY-1 and\n"
+     << "PROP-KNIFE-1, then by the CI properties. The score, the killing check of every mutant and\n"
+     << "every survivor's explanation are in [mutants.md](mutants.md).\n";
   md << "\n## Coordinate error\n\n"
      << "The largest coordinate difference (mm, max norm over start, end and centre of every element)\n"
      << "between fast and ref per agreeing case, and the same relative to the case's documented\n"

@@ -284,10 +284,11 @@ std::optional<int> margin_sign(const Decision& d) {
     if (std::isnan(d.margin)) return std::nullopt;
     return (d.margin > 0) - (d.margin < 0);
   }
+  // ref writes "0" for an exact tie and nothing else: a tiny margin whose digits underflow to
+  // "0.00000000000000000e+00" keeps the sign of its text.
   const std::string& t = d.margin_exact;
-  if (t[0] == '-') return -1;
-  if (t.find_first_of("123456789") == std::string::npos && t.find("inf") == std::string::npos) return 0;
-  return 1;
+  if (t == "0") return 0;
+  return t[0] == '-' ? -1 : 1;
 }
 }  // namespace
 

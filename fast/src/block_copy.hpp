@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 
 #include "cutcom/block.hpp"
@@ -18,7 +19,7 @@ namespace cutcom::fast {
 struct BlockCopy {
   int line = 0;
   std::uint32_t source = 0;  // NC-PARAM-SUB-3
-  int block = 0;  // the block's index in the program: its identity (inserted elements share a line)
+  int block = 0;             // the block's index in the program: its identity (inserted elements share a line)
   std::optional<std::int64_t> number;
   PathPoint start, end;  // programmed, workpiece coordinates
   bool rapid = false;
@@ -27,6 +28,7 @@ struct BlockCopy {
   PathPoint centre;  // programmed centre (I/J/K arcs)
   bool has_centre = false;
   double cr = 0;                  // CR= arcs
+  Int128 cr_units = 0;            // the same, exactly, in 10^-9 mm (the centre's height from integers)
   std::array<Int128, 3> delta{};  // exact programmed displacement X Y Z, units of 1e-9 mm
   Decimal feed;
   std::array<AuxFunction, BlockWords::kMaxAux> aux{};
@@ -59,7 +61,7 @@ struct BlockCopy {
     c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
     c.has_centre = b.centre.has_value();
     if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
-    if (b.words.cr) c.cr = b.words.cr->to_double();
+    if (b.words.cr) c.cr = b.words.cr->to_double(), c.cr_units = b.words.cr->units();
     c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
     c.feed = b.state.feed;
     std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
@@ -92,7 +94,24 @@ inline PathPoint xyz_in(Vec2 v, double applicate, PlaneAxes a) {
 inline Element element_in(const BlockCopy& c, PlaneAxes a) {
   if (!c.arc) return Element::line(ab_in(c.start, a), ab_in(c.end, a));
   if (c.has_centre) return Element::circle(ab_in(c.start, a), ab_in(c.end, a), ab_in(c.centre, a), c.sense);
-  return Element::circle_by_radius(ab_in(c.start, a), ab_in(c.end, a), c.cr, c.sense);
+  // ARC-CR-1: q = CR^2 / chord^2 - 1/4 and the chord from the programmed integers, rounded once:
+  // near a half circle the doubles' q cancels to a few ulps of 1/4, and on a short chord the
+  // difference of two rounded points tilts it; the centre moves by CR times either error.
+  double q = std::numeric_limits<double>::quiet_NaN();
+  Vec2 chord{std::numeric_limits<double>::quiet_NaN(), 0};
+  if (c.exact) {
+    const Int128 limit = Int128(1) << 62;
+    Int128 da = c.delta[static_cast<std::size_t>(a.abscissa)], db = c.delta[static_cast<std::size_t>(a.ordinate)];
+    if (da < limit && da > -limit && db < limit && db > -limit && c.cr_units < limit && c.cr_units > -limit) {
+      Int128 chord2 = da * da + db * db;
+      if (chord2 > 0) {
+        q = static_cast<double>(4 * c.cr_units * c.cr_units - chord2) / (4 * static_cast<double>(chord2));
+        // The chord too: end - start of two rounded points loses digits on a short chord.
+        chord = {static_cast<double>(da) / 1e9, static_cast<double>(db) / 1e9};
+      }
+    }
+  }
+  return Element::circle_by_radius(ab_in(c.start, a), ab_in(c.end, a), c.cr, c.sense, q, chord);
 }
 
 // Where a block's in-plane points are not its decimals (SAR-SUB-1, SAR-END-3): doubles in the

@@ -30,12 +30,12 @@ Element Element::circle(Vec2 s, Vec2 e, Vec2 c, int sense) {
   return a;
 }
 
-Element Element::circle_by_radius(Vec2 s, Vec2 e, double cr, int sense) {
+Element Element::circle_by_radius(Vec2 s, Vec2 e, double cr, int sense, double q, Vec2 chord) {
   Element a;
   a.arc = true;
   a.start = s, a.end = e, a.sense = sense;
-  Vec2 d = e - s;
-  double q = cr * cr / dot(d, d) - 0.25;
+  Vec2 d = std::isnan(chord.a) ? e - s : chord;
+  if (std::isnan(q)) q = cr * cr / dot(d, d) - 0.25;
   double h = q > 0 ? std::sqrt(q) : 0;
   int k = (sense > 0) == (cr > 0) ? 1 : -1;  // short arc for CR > 0, long for CR < 0
   a.centre = 0.5 * (s + e) + (k * h) * left_normal(d);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 namespace cutcom::fast {
 
@@ -30,7 +31,11 @@ struct Element {
 
   static Element line(Vec2 s, Vec2 e);
   static Element circle(Vec2 s, Vec2 e, Vec2 programmed_centre, int sense);
-  static Element circle_by_radius(Vec2 s, Vec2 e, double cr, int sense);  // ARC-CR-1
+  // ARC-CR-1; `q` = CR^2 / chord^2 - 1/4 and `chord` = e - s where the caller has them from exact
+  // values (NaN: from the doubles).
+  static Element circle_by_radius(Vec2 s, Vec2 e, double cr, int sense,
+                                  double q = std::numeric_limits<double>::quiet_NaN(),
+                                  Vec2 chord = {std::numeric_limits<double>::quiet_NaN(), 0});
 
   Vec2 start_tangent() const { return arc ? tangent_at(start) : unit; }  // unit vectors
   Vec2 end_tangent() const { return arc ? tangent_at(end) : unit; }
