@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -82,7 +83,7 @@ Neighbour neighbour_of(const std::string& text, const MachineData& md, std::uint
   std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(k));
   Neighbour n{text, md, {}};
   std::vector<Literal> lits = literals_of(text);
-  std::vector<std::pair<std::size_t, std::string>> edits;  // literal index, new text
+  std::map<std::size_t, std::string> edits;  // literal index -> new text (a later move of one wins)
   int moves = lits.empty() ? 0 : 1 + static_cast<int>(rng() % 3);
   for (int m = 0; m < moves; ++m) {
     std::size_t i = rng() % lits.size();
@@ -104,17 +105,13 @@ Neighbour neighbour_of(const std::string& text, const MachineData& md, std::uint
       w = rng() % 2 ? v + step : v - step;
     }
     if (l.address == "$TC_DP6" && w.sign() < 0) w = -w;
-    edits.emplace_back(i, w.to_string());
+    edits[i] = w.to_string();
     n.change += fmt::format("{}line {} {}: {} -> {}", n.change.empty() ? "" : "; ", l.line, l.address,
                             text.substr(l.start, l.end - l.start), w.to_string());
   }
-  // Apply from the back so earlier positions stay valid; a literal edited twice keeps the last.
-  std::vector<std::pair<std::size_t, std::string>> last;
-  std::vector<bool> seen(lits.size(), false);
+  // From the back, so that earlier positions stay valid.
   for (auto it = edits.rbegin(); it != edits.rend(); ++it)
-    if (!seen[it->first]) seen[it->first] = true, last.push_back(*it);
-  std::sort(last.begin(), last.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (const auto& [i, t] : last) n.text.replace(lits[i].start, lits[i].end - lits[i].start, t);
+    n.text.replace(lits[it->first].start, lits[it->first].end - lits[it->first].start, it->second);
   if (k % 4 == 3) {  // the machine data near their ties too
     switch (rng() % 3) {
       case 0: {

@@ -90,6 +90,12 @@ inline PathPoint xyz_in(Vec2 v, double applicate, PlaneAxes a) {
   *c[a.abscissa] = v.a, *c[a.ordinate] = v.b, *c[a.applicate] = applicate;
   return p;
 }
+// Integer displacements below 2^62 units: products of two and sums of two such stay in 128 bits.
+inline bool in_exact_range(Int128 v) {
+  const Int128 limit = Int128(1) << 62;
+  return v < limit && v > -limit;
+}
+
 // The element of a block in the plane `a`.
 inline Element element_in(const BlockCopy& c, PlaneAxes a) {
   if (!c.arc) return Element::line(ab_in(c.start, a), ab_in(c.end, a));
@@ -100,9 +106,8 @@ inline Element element_in(const BlockCopy& c, PlaneAxes a) {
   double q = std::numeric_limits<double>::quiet_NaN();
   Vec2 chord{std::numeric_limits<double>::quiet_NaN(), 0};
   if (c.exact) {
-    const Int128 limit = Int128(1) << 62;
     Int128 da = c.delta[static_cast<std::size_t>(a.abscissa)], db = c.delta[static_cast<std::size_t>(a.ordinate)];
-    if (da < limit && da > -limit && db < limit && db > -limit && c.cr_units < limit && c.cr_units > -limit) {
+    if (in_exact_range(da) && in_exact_range(db) && in_exact_range(c.cr_units)) {
       Int128 chord2 = da * da + db * db;
       if (chord2 > 0) {
         q = static_cast<double>(4 * c.cr_units * c.cr_units - chord2) / (4 * static_cast<double>(chord2));

@@ -184,20 +184,18 @@ void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& 
 
 std::optional<Compensation::ExactProducts> Compensation::exact_products(const std::array<Int128, 3>& t,
                                                                         const std::array<Int128, 3>& u) const {
-  const Int128 limit = Int128(1) << 62;
   Int128 a1 = t[static_cast<std::size_t>(axes.abscissa)], b1 = t[static_cast<std::size_t>(axes.ordinate)];
   Int128 a2 = u[static_cast<std::size_t>(axes.abscissa)], b2 = u[static_cast<std::size_t>(axes.ordinate)];
   for (Int128 v : {a1, b1, a2, b2})
-    if (v >= limit || v <= -limit) return std::nullopt;  // beyond the range: the double decision stands
+    if (!in_exact_range(v)) return std::nullopt;  // beyond the range: the double decision stands
   return ExactProducts{a1 * b2 - b1 * a2, a1 * a2 + b1 * b2};
 }
 
 std::optional<int> Compensation::exact_room_sign(const std::array<Int128, 3>& u) const {
-  const Int128 limit = Int128(1) << 62;
   Int128 a = u[static_cast<std::size_t>(axes.abscissa)], b = u[static_cast<std::size_t>(axes.ordinate)];
   for (Int128 v : {a, b, r_units})
-    if (v >= limit || v <= -limit) return std::nullopt;  // beyond the range: the double decision stands
-  Int128 d = a * a + b * b - r_units * r_units;          // each square below 2^124: no overflow
+    if (!in_exact_range(v)) return std::nullopt;  // beyond the range: the double decision stands
+  Int128 d = a * a + b * b - r_units * r_units;   // each square below 2^124: no overflow
   return (d > 0) - (d < 0);
 }
 
