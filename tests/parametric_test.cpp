@@ -450,6 +450,29 @@ TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
     EXPECT_EQ(path[1].origin.line, 2) << engine;  // the main program's calling line
     EXPECT_EQ(path[2].origin.source, 0u) << engine;
   }
+  // An alarm at a subprogram's block names that block's place too: an inner half circle smaller
+  // than the tool in INNER2 (10751 at its N20), an arc selecting G41 in ARCSEL (10753).
+  std::string alarms = folder_with("provenance-alarms", {{"OUTER2.SPF", "N10 G0 X0 Y0\nN20 INNER2\nRET\n"},
+                                                         {"INNER2.SPF",
+                                                          "N10 G1 G41 X10 Y0 F100\n"
+                                                          "N20 G3 X10 Y1 CR=0.5\nN30 G1 X0\nM17\n"},
+                                                         {"ARCSEL.SPF", "N50 G41 G2 X10 Y0 CR=20 F100\nM17\n"}});
+  const std::string tool = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\n";
+  for (const char* engine : {"fast", "ref"}) {
+    for (auto [main, where, number] :
+         {std::tuple{tool + "N20 OUTER2\nM30\n", "INNER2.SPF line 2, called from OUTER2.SPF line 2", 10751},
+          std::tuple{tool + "G0 X0 Y0\nARCSEL\nM30\n", "ARCSEL.SPF line 1", 10753}}) {
+      std::istringstream in(main);
+      MachineData md;
+      ProgramReader reader(in, md.initial_state());
+      reader.set_search_path({alarms});
+      CollectingSink sink;
+      EXPECT_FALSE(std::string(engine) == "ref" ? ref::run(reader, md, sink) : fast::run(reader, md, sink));
+      ASSERT_EQ(sink.result.alarms.size(), 1u) << engine;
+      EXPECT_EQ(sink.result.alarms[0].number, number) << engine;
+      EXPECT_EQ(reader.source_text(sink.result.alarms[0].source), where) << engine;
+    }
+  }
 }
 
 int sub_error(const std::string& main, const std::string& dir, const std::string& words) {
@@ -471,6 +494,72 @@ TEST(Parametric, SubprogramErrorsNameFileLineAndCall) {
   EXPECT_EQ(sub_error("G0 X0\nL99\n", dir, "subprogram L99 not found"), 2);
   EXPECT_EQ(sub_error("BROKEN(1, 2)\n", dir, "2 arguments given, the PROC has 1 parameters"), 1);
   EXPECT_EQ(sub_error("G0 X0 Y0\nSHIFT\n", dir, "puts back another frame"), 2);
+}
+
+// An array passed to a PROC's VAR array parameter: the PROC reads the caller's corners and
+// writes one back; sizes left open take the caller's; wrong arrays are errors naming the PROC line.
+// covers: NC-PARAM-SUB-2 NC-PARAM-ERR-1
+TEST(Parametric, ArrayParametersWorkOnTheCallersArray) {
+  std::string dir = folder_with(
+      "arrays", {{"OUTLINE.SPF",
+                  "PROC OUTLINE(VAR REAL PTS[,2], INT COUNT, VAR INT SEEN)\nDEF INT KK\n"
+                  "G1 G41 X=PTS[0,0] Y=PTS[0,1]\nFOR KK=1 TO COUNT-1\n  X=PTS[KK,0] Y=PTS[KK,1]\n"
+                  "  SEEN=SEEN+1\nENDFOR\nX=PTS[0,0] Y=PTS[0,1]\nPTS[1,0]=PTS[1,0]*3\nG40 X-10 Y-10\nM17\n"},
+                 {"FIXED.SPF", "PROC FIXED(VAR REAL PTS[3,2])\nG1 X=PTS[2,0] F100\nM17\n"},
+                 {"BYVALUE.SPF", "PROC BYVALUE(REAL PTS[3])\nM17\n"},
+                 {"SCALAR.SPF", "PROC SCALAR(REAL AA)\nM17\n"}});
+  const std::string head = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nG17 G90 T1 D1 F200\nG0 X-10 Y-10\n";
+  const std::string main = head +
+                           "DEF REAL CORNERS[4,2]=SET(0,0, 30,0, 30,20, 0,20)\nDEF INT NN\n"
+                           "OUTLINE(CORNERS, 4, NN)\nG0 X=CORNERS[1,0]+NN Y-10\nM30\n";
+  const std::string plain = head + "G1 G41 X0 Y0\nX30 Y0\nX30 Y20\nX0 Y20\nX0 Y0\nG40 X-10 Y-10\nG0 X93 Y-10\nM30\n";
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok_p = false, ok_q = false;
+    RunResult p = run_in(engine, main, dir, &ok_p), q = run_engine(engine, plain, {}, &ok_q);
+    ASSERT_TRUE(ok_p && ok_q) << engine;
+    EXPECT_EQ(p.path.size(), 8u);
+    expect_same_path(p, q);
+  }
+  EXPECT_EQ(sub_error("DEF REAL AA[2,2]\nFIXED(AA)\n", dir, "has 2 elements in index 1, the PROC declares 3"), 2);
+  EXPECT_EQ(sub_error("DEF INT AA[3,2]\nFIXED(AA)\n", dir, "another type or number of indices"), 2);
+  EXPECT_EQ(sub_error("FIXED(5)\n", dir, "needs an array variable as its argument"), 1);
+  EXPECT_EQ(sub_error("DEF REAL AA[3]\nBYVALUE(AA)\n", dir, "must be a VAR parameter"), 2);
+  EXPECT_EQ(sub_error("DEF REAL AA[3]\nSCALAR(AA)\n", dir, "AA is an array: the parameter AA is not"), 2);
+}
+
+// A frame assigned to $P_PFRAME, built in a FRAME variable, chained and read back, gives the path
+// of the same frame programmed with TRANS/AROT/AMIRROR/ASCALE blocks.
+// covers: NC-PARAM-FRAME-1 NC-FRAME-1 NC-FRAME-4
+TEST(Parametric, FrameVariablesGiveTheFrameInstructionsPath) {
+  const std::string contour = "G0 X0 Y0\nG1 G41 X10 Y0 F100\nY10\nG2 X0 Y10 CR=5\nG1 Y0\nG40 X-5 Y-5\n";
+  const std::string head = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1.5\nG17 G90 T1 D1\n";
+  const std::string parametric = head +
+                                 "DEF FRAME PAL, SAVED\nDEF REAL AA=30\n"
+                                 "PAL=CTRANS(X,10,Y,AA/6):CROT(Z,AA*3)\n"  // TRANS X10 Y5, AROT 90
+                                 "$P_PFRAME=PAL\n" +
+                                 contour + "$P_PFRAME=$P_PFRAME:CTRANS(X,100):CMIRROR(Y):CSCALE(X,2,Y,2)\n" + contour +
+                                 "SAVED=$P_PFRAME\n$P_PFRAME=CTRANS()\nG0 X1 Y1\n"
+                                 "$P_PFRAME=CTRANS(X,-50):SAVED\n" +
+                                 contour + "$P_PFRAME=CRPL(0,45):CRPL(1,-45)\n" + contour + "M30\n";
+  const std::string plain = head + "TRANS X10 Y5\nAROT RPL=90\n" + contour + "ATRANS X100\nAMIRROR Y0\nASCALE X2 Y2\n" +
+                            contour +
+                            "TRANS\nG0 X1 Y1\nTRANS X-50\nATRANS X10 Y5\nAROT RPL=90\nATRANS X100\n"
+                            "AMIRROR Y0\nASCALE X2 Y2\n" +
+                            contour + "TRANS\n" + contour + "M30\n";
+  Runs p = run_both(parametric), q = run_both(plain);
+  ASSERT_TRUE(p.fast_ok && p.ref_ok && q.fast_ok && q.ref_ok);
+  EXPECT_GT(q.fast.path.size(), 20u);
+  expect_same_path(p.fast, q.fast);
+  expect_same_path(p.ref, q.ref);
+  EXPECT_EQ(error_line("DEF FRAME FF\nFF=5\n", "FRAME variable is assigned a value that is not a frame"), 2);
+  EXPECT_EQ(error_line("DEF REAL RR\nRR=CTRANS(X,1)\n", "a frame is assigned to a variable"), 2);
+  EXPECT_EQ(error_line("G1 X=CTRANS(X,1) F100\n", "not a frame"), 1);
+  EXPECT_EQ(error_line("$P_PFRAME=CTRANS(Q,1)\n", "an axis X, Y or Z is expected, not Q"), 1);
+  EXPECT_EQ(error_line("$P_PFRAME=CTRANS(X,1):5\n", "a frame is needed after it"), 1);
+  EXPECT_EQ(error_line("$P_PFRAME=CTRANS(X,1) G1 X5\n", "block of its own"), 1);
+  EXPECT_EQ(error_line("$P_PFRAME[X,TR]=5\n", "not simulated yet"), 1);
+  EXPECT_EQ(error_line("$P_PFRAME=CROT(X,30)\n", "tilts the working plane"), 1);
+  EXPECT_EQ(error_line("G1 G41 X1 Y1 F100 T1 D1\n$P_PFRAME=CTRANS(X,1)\n", "frame change"), 2);
 }
 
 }  // namespace

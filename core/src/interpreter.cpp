@@ -101,6 +101,11 @@ NcValue Interpreter::evaluate(std::string_view expression, int line) {
 
 bool Interpreter::next(std::string& text, int& line) {
   while (true) {
+    if (pending_next_ < pending_.size()) {  // NC-PARAM-FRAME-1: the blocks of a frame assignment
+      text = pending_[pending_next_++];
+      line = pending_line_;
+      return true;
+    }
     try {
       if (modal_call_due_) {  // NC-PARAM-SUB-6: the block before moved
         modal_call_due_ = false;
@@ -236,6 +241,32 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       i = settable_offset(s, after);
       continue;
     }
+    if (n == "$P_PFRAME" && after < s.size() && (s[after] == '=' || s[after] == '[')) {  // NC-PARAM-FRAME-1
+      if (s[after] == '[')
+        throw InputError(cx().line, static_cast<int>(start) + 1,
+                         "a component of $P_PFRAME ($P_PFRAME[axis, TR], …) is not simulated yet: assign a whole "
+                         "frame, e.g. $P_PFRAME=$P_PFRAME:CTRANS(X,10)");
+      ExpressionParser p(s, after + 1, cx().line, lookup);
+      NcValue frame = p.parse();
+      if (frame.type != NcValue::Type::kFrame)
+        throw InputError(cx().line, static_cast<int>(after) + 2, "$P_PFRAME is assigned a value that is not a frame");
+      std::size_t end = skip_space(s, p.position());
+      if (words || (end < s.size() && s[end] != ';'))
+        throw InputError(cx().line, static_cast<int>(start) + 1,
+                         "a $P_PFRAME assignment must stand in a block of its own, as a frame instruction does");
+      // The programmable frame is replaced: TRANS alone resets it, then the chain's blocks.
+      pending_.assign({"TRANS"});
+      for (std::size_t from = 0; from < frame.text.size();) {
+        std::size_t e = frame.text.find('\n', from);
+        if (e == std::string::npos) e = frame.text.size();
+        pending_.emplace_back(frame.text.substr(from, e - from));
+        from = e + 1;
+      }
+      pending_next_ = 0;
+      pending_line_ = stack_.size() == 1 ? cx().line : stack_.front().line;
+      out.clear();
+      return;
+    }
     bool tool_data = n.rfind("$TC_", 0) == 0;  // other system variables go to the lexer as written
     if (indexed && (variable || tool_data)) {
       // Indices as expressions: R[expr], A[i,j], $TC_DP6[t,d].
@@ -361,6 +392,14 @@ std::vector<NcValue> Interpreter::values(std::string_view s, std::size_t& i, cha
 void Interpreter::store(Variable& var, std::size_t at_offset, const NcValue& value, std::size_t at) {
   NcValue v = value;
   using T = NcValue::Type;
+  if ((var.type == T::kFrame) != (value.type == T::kFrame))  // NC-PARAM-FRAME-1
+    throw InputError(cx().line, static_cast<int>(at) + 1,
+                     var.type == T::kFrame ? "a FRAME variable is assigned a value that is not a frame"
+                                           : "a frame is assigned to a variable that is not a FRAME");
+  if (var.type == T::kFrame) {
+    var.values[at_offset] = value;
+    return;
+  }
   bool text = var.type == T::kString;
   if (text != (value.type == T::kString))
     throw InputError(cx().line, static_cast<int>(at) + 1,

@@ -2,6 +2,7 @@
 // subprogram happened.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -265,9 +266,15 @@ void Interpreter::arguments(std::string_view s, std::size_t& i, std::vector<std:
       std::size_t ne = name_end(s, i);
       std::size_t after = skip_space(s, ne);
       names.push_back(after < s.size() && (s[after] == ',' || s[after] == ')') ? upper_text(s.substr(i, ne - i)) : "");
-      ExpressionParser p(s, i, cx().line, lookup);
-      args.push_back(p.parse());
-      i = skip_space(s, p.position());
+      const Variable* whole = names.back().empty() ? nullptr : find_variable(names.back());
+      if (whole && !whole->dims.empty()) {  // a whole array: passed by reference (NC-PARAM-SUB-2)
+        args.emplace_back(NcValue{});
+        i = after;
+      } else {
+        ExpressionParser p(s, i, cx().line, lookup);
+        args.push_back(p.parse());
+        i = skip_space(s, p.position());
+      }
     }
     if (i < s.size() && s[i] == ',') {
       ++i;
@@ -323,7 +330,15 @@ void Interpreter::load_definitions(std::istream& in) {
 void Interpreter::procedure(std::string_view s, std::size_t i) {
   std::size_t e = name_end(s, skip_space(s, i));
   i = skip_space(s, e);
-  std::vector<std::tuple<std::string, NcValue::Type, bool>> params;
+  struct Parameter {
+    std::string name;
+    NcValue::Type type;
+    bool by_ref;
+    std::optional<std::vector<int>> dims;  // an array: its sizes (0: left open, "[,3]")
+    std::size_t at;
+  };
+  std::vector<Parameter> params;
+  InterpreterLookup lookup(*this, cx().line);
   if (i < s.size() && s[i] == '(') {
     ++i;
     while (true) {
@@ -343,7 +358,7 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
       std::optional<NcValue::Type> known = value_type(type);
       if (!known)
         throw InputError(cx().line, static_cast<int>(i) + 1,
-                         fmt::format("'{}' is not a parameter type (REAL INT BOOL CHAR STRING AXIS)", type));
+                         fmt::format("'{}' is not a parameter type (REAL INT BOOL CHAR STRING AXIS FRAME)", type));
       NcValue::Type vt = *known;
       i = skip_space(s, t);
       if (type == "STRING" && i < s.size() && s[i] == '[') {
@@ -355,10 +370,39 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
       std::string name = upper_text(s.substr(i, ne - i));
       if (name.size() < 2)
         throw InputError(cx().line, static_cast<int>(i) + 1, "a parameter name of at least two characters is expected");
-      params.emplace_back(name, vt, by_ref);
+      params.push_back({name, vt, by_ref, std::nullopt, i});
       i = skip_space(s, ne);
-      if (i < s.size() && s[i] == '[')
-        throw InputError(cx().line, static_cast<int>(i) + 1, "array parameters are not simulated yet");
+      if (i < s.size() && s[i] == '[') {  // VAR REAL NAME[], NAME[,3], NAME[4,3]: an array, by reference
+        if (!by_ref)
+          throw InputError(cx().line, static_cast<int>(i) + 1,
+                           fmt::format("the array parameter {} must be a VAR parameter", name));
+        std::vector<int> dims;
+        ++i;
+        while (true) {
+          i = skip_space(s, i);
+          if (i < s.size() && (s[i] == ',' || s[i] == ']')) {
+            dims.push_back(0);
+          } else {
+            ExpressionParser size(s, i, cx().line, lookup);
+            NcValue d = size.parse();
+            if (d.type == NcValue::Type::kString || d.type == NcValue::Type::kFrame || d.number < 1 || d.number > 1e6 ||
+                d.number != std::trunc(d.number))
+              throw InputError(cx().line, static_cast<int>(i) + 1,
+                               "an array size must be a whole number from 1 to 1000000");
+            dims.push_back(static_cast<int>(d.number));
+            i = skip_space(s, size.position());
+          }
+          if (i < s.size() && s[i] == ',') {
+            ++i;
+            continue;
+          }
+          if (i < s.size() && s[i] == ']') break;
+          throw InputError(cx().line, static_cast<int>(i) + 1, "']' or ',' expected in the array parameter");
+        }
+        if (dims.size() > 3) throw InputError(cx().line, static_cast<int>(i) + 1, "an array has at most three indices");
+        params.back().dims = dims;
+        i = skip_space(s, i + 1);
+      }
       if (i < s.size() && s[i] == ',') {
         ++i;
         continue;
@@ -387,13 +431,56 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
     throw InputError(cx().line, 1,
                      fmt::format("{} arguments given, the PROC has {} parameters", cx().args.size(), params.size()));
   for (std::size_t k = 0; k < params.size(); ++k) {
-    auto& [name, type, by_ref] = params[k];
+    const Parameter& pm = params[k];
+    const std::string& name = pm.name;
+    // The caller's variable named as this argument, if it is an array.
+    const Variable* array = nullptr;
+    if (stack_.size() > 1 && k < cx().arg_names.size() && !cx().arg_names[k].empty()) {
+      const Context& caller = stack_[stack_.size() - 2];
+      auto it = caller.variables.find(cx().arg_names[k]);
+      if (it != caller.variables.end())
+        array = &it->second;
+      else if (auto g = globals_.find(cx().arg_names[k]); g != globals_.end())
+        array = &g->second;
+      if (array && array->dims.empty()) array = nullptr;
+    }
+    if (pm.dims) {  // NC-PARAM-SUB-2: an array parameter works on the caller's array
+      Variable v;
+      if (array) {
+        if (array->type != pm.type || array->dims.size() != pm.dims->size())
+          throw InputError(
+              cx().line, static_cast<int>(pm.at) + 1,
+              fmt::format("the array {} given for {} has another type or number of indices", cx().arg_names[k], name));
+        for (std::size_t d = 0; d < array->dims.size(); ++d)
+          if ((*pm.dims)[d] != 0 && (*pm.dims)[d] != array->dims[d])
+            throw InputError(cx().line, static_cast<int>(pm.at) + 1,
+                             fmt::format("the array {} given for {} has {} elements in index {}, the PROC declares {}",
+                                         cx().arg_names[k], name, array->dims[d], d + 1, (*pm.dims)[d]));
+        v = *array;
+        cx().by_reference.emplace_back(name, cx().arg_names[k]);
+      } else if (stack_.size() == 1 && std::find(pm.dims->begin(), pm.dims->end(), 0) == pm.dims->end() &&
+                 (k >= cx().args.size() || !cx().args[k])) {
+        v.type = pm.type;  // run on its own without the argument: the declared array, zero
+        v.dims = *pm.dims;
+        std::size_t count = 1;
+        for (int d : v.dims) count *= static_cast<std::size_t>(d);
+        v.values.assign(count, pm.type == NcValue::Type::kString ? NcValue::string("") : NcValue{pm.type, 0, {}});
+      } else {
+        throw InputError(cx().line, static_cast<int>(pm.at) + 1,
+                         fmt::format("the array parameter {} needs an array variable as its argument", name));
+      }
+      cx().variables[name] = std::move(v);
+      continue;
+    }
+    if (array)
+      throw InputError(cx().line, static_cast<int>(pm.at) + 1,
+                       fmt::format("{} is an array: the parameter {} is not", cx().arg_names[k], name));
     Variable v;
-    v.type = type;
-    v.values.assign(1, type == NcValue::Type::kString ? NcValue::string("") : NcValue{type, 0, {}});
+    v.type = pm.type;
+    v.values.assign(1, pm.type == NcValue::Type::kString ? NcValue::string("") : NcValue{pm.type, 0, {}});
     cx().variables[name] = v;
     if (k < cx().args.size() && cx().args[k]) store(cx().variables[name], 0, *cx().args[k], 0);
-    if (by_ref && stack_.size() > 1) {  // run on its own, the main program: nothing to write back
+    if (pm.by_ref && stack_.size() > 1) {  // run on its own, the main program: nothing to write back
       if (k >= cx().arg_names.size() || cx().arg_names[k].empty())
         throw InputError(cx().line, 1, fmt::format("the VAR parameter {} needs a variable as its argument", name));
       cx().by_reference.emplace_back(name, cx().arg_names[k]);
@@ -404,8 +491,8 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
 void Interpreter::leave_subprogram() {
   Context& c = cx();
   // VAR parameters: the caller's variables take the values.
-  std::vector<std::pair<std::string, NcValue>> results;
-  for (const auto& [local, caller] : c.by_reference) results.emplace_back(caller, c.variables[local].values[0]);
+  std::vector<std::pair<std::string, Variable>> results;
+  for (const auto& [local, caller] : c.by_reference) results.emplace_back(caller, std::move(c.variables[local]));
   if (c.saved && system_) system_->restore_modal_state();
   c.saved = false;
   bool again = c.passes_left > 0;
@@ -418,13 +505,18 @@ void Interpreter::leave_subprogram() {
     stack_.pop_back();
   }
   Context& caller = again ? stack_[stack_.size() - 2] : cx();
-  for (auto& [name, value] : results) {
-    if (is_r_parameter(name) && r_number(name) < kRParameters) {
-      r_[r_number(name)] = value.number;
-    } else if (auto it = caller.variables.find(name); it != caller.variables.end() && it->second.dims.empty()) {
-      store(it->second, 0, value, 0);
-    } else if (auto g = globals_.find(name); g != globals_.end() && g->second.dims.empty()) {
-      store(g->second, 0, value, 0);
+  for (auto& [name, local] : results) {
+    Variable* target = nullptr;
+    if (auto it = caller.variables.find(name); it != caller.variables.end())
+      target = &it->second;
+    else if (auto g = globals_.find(name); g != globals_.end())
+      target = &g->second;
+    if (!local.dims.empty()) {  // an array parameter: the whole array goes back
+      if (target && target->values.size() == local.values.size()) target->values = std::move(local.values);
+    } else if (is_r_parameter(name) && r_number(name) < kRParameters) {
+      r_[r_number(name)] = local.values[0].number;
+    } else if (target && target->dims.empty()) {
+      store(*target, 0, local.values[0], 0);
     }
   }
 }

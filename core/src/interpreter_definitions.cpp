@@ -27,11 +27,10 @@ void Interpreter::define(std::string_view s, std::size_t i, std::map<std::string
     e = name_end(s, i);
     type = upper_text(s.substr(i, e - i));
   }
-  if (type == "FRAME") throw InputError(cx().line, static_cast<int>(i) + 1, "FRAME variables are not simulated yet");
   std::optional<NcValue::Type> known = value_type(type);
   if (!known)
     throw InputError(cx().line, static_cast<int>(i) + 1,
-                     fmt::format("'{}' is not a type (REAL INT BOOL CHAR STRING AXIS)", type));
+                     fmt::format("'{}' is not a type (REAL INT BOOL CHAR STRING AXIS FRAME)", type));
   NcValue::Type t = *known;
   i = skip_space(s, e);
   if (type == "STRING" && i < s.size() && s[i] == '[') {  // STRING[length]

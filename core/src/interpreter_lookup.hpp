@@ -26,6 +26,11 @@ class InterpreterLookup : public ExpressionParser::Lookup {
       auto it = it_.r_.find(k);
       return NcValue::real(it == it_.r_.end() ? 0.0 : it->second);
     }
+    if (n == "$P_PFRAME" && idx.empty()) {  // NC-PARAM-FRAME-1
+      std::optional<std::string> chain = it_.system_ ? it_.system_->programmable_frame() : std::nullopt;
+      if (!chain) fail(at, "$P_PFRAME cannot be read here (a translation under inch units G70/G700 is not simulated)");
+      return NcValue::frame(*chain);
+    }
     if (!n.empty() && n[0] == '$') {
       std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
       if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));

@@ -94,6 +94,8 @@ inline bool has_jump(std::string_view s) {
 // binary64 value (ties to even on its exact binary value).
 inline std::string grid_text(const NcValue& v, int line, std::size_t at) {
   if (v.type == NcValue::Type::kString) return "\"" + v.text + "\"";
+  if (v.type == NcValue::Type::kFrame)
+    throw InputError(line, static_cast<int>(at) + 1, "a number is needed here, not a frame");
   if (!std::isfinite(v.number)) throw InputError(line, static_cast<int>(at) + 1, "the value is not a finite number");
   if (std::fabs(v.number) >= 1e12)
     throw InputError(line, static_cast<int>(at) + 1,
@@ -146,6 +148,7 @@ inline std::optional<NcValue::Type> value_type(std::string_view type) {
   if (type == "INT" || type == "CHAR") return NcValue::Type::kInt;
   if (type == "BOOL") return NcValue::Type::kBool;
   if (type == "STRING" || type == "AXIS") return NcValue::Type::kString;
+  if (type == "FRAME") return NcValue::Type::kFrame;  // NC-PARAM-FRAME-1
   return std::nullopt;
 }
 

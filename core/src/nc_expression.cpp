@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "cutcom/reader.hpp"
+#include "interpreter_text.hpp"
 #include "word_lexer.hpp"
 
 namespace cutcom {
@@ -25,6 +26,8 @@ double as_number(const NcValue& v, int line, std::size_t at) {
   if (v.type == NcValue::Type::kString)
     throw InputError(line, static_cast<int>(at) + 1,
                      fmt::format("a number is needed here, not the string \"{}\"", v.text));
+  if (v.type == NcValue::Type::kFrame)
+    throw InputError(line, static_cast<int>(at) + 1, "a number is needed here, not a frame");
   return v.number;
 }
 bool truth(const NcValue& v, int line, std::size_t at) { return as_number(v, line, at) != 0; }
@@ -68,9 +71,90 @@ bool ExpressionParser::symbol(std::string_view k) {
 NcValue ExpressionParser::parse() {
   // Nesting (parentheses, arguments, indices) is bounded: no program exhausts the stack.
   if (++depth_ > kMaxDepth) fail(fmt::format("the expression is nested more than {} levels deep", kMaxDepth));
-  NcValue v = comparison();
+  NcValue v = chain();
   --depth_;
   return v;
+}
+
+// NC-PARAM-FRAME-1: frame : frame chains the frames in the programmed order (the second in the
+// system of the first), as the additive frame instructions do one after another. Only a frame
+// is followed by ':' (a label's colon never stands in an expression).
+NcValue ExpressionParser::chain() {
+  NcValue a = comparison();
+  while (a.type == NcValue::Type::kFrame) {
+    skip_space();
+    std::size_t at = i_;
+    if (!symbol(":")) break;
+    NcValue b = comparison();
+    if (b.type != NcValue::Type::kFrame)
+      throw InputError(line_, static_cast<int>(at) + 1, "':' chains frames: a frame is needed after it");
+    if (a.text.size() + b.text.size() > kMaxChain)
+      throw InputError(line_, static_cast<int>(at) + 1, "the frame chain is too long");
+    if (!b.text.empty()) a.text += (a.text.empty() ? "" : "\n") + b.text;
+  }
+  return a;
+}
+
+// NC-PARAM-FRAME-1: CTRANS(axis, value, …), CROT(axis, angle, …), CSCALE(axis, factor, …),
+// CMIRROR(axis, …) and CRPL(plane, angle) as the additive frame blocks they stand for, the values
+// on the grid (NC-PARAM-GRID-1). Only geometry axes X, Y, Z are frame axes in cutcom.
+NcValue ExpressionParser::frame_function(const std::string& n, std::size_t at) {
+  bool mirror = n == "CMIRROR";
+  std::string words;
+  skip_space();
+  if (n == "CRPL") {
+    std::vector<NcValue> a = arguments(')');
+    if (a.size() != 2) throw InputError(line_, static_cast<int>(at) + 1, "CRPL takes 2 arguments");
+    double plane = as_number(a[0], line_, at);
+    static constexpr std::string_view kAxis[] = {"RPL=", "Z", "Y", "X"};
+    if (plane != 0 && plane != 1 && plane != 2 && plane != 3)
+      throw InputError(line_, static_cast<int>(at) + 1,
+                       "CRPL: the plane is 0 (the working plane), 1 (Z), 2 (Y) or 3 (X)");
+    std::string angle = interpreter_text::grid_text(a[1], line_, at);
+    return NcValue::frame(angle == "0" ? "" : fmt::format("AROT {}{}", kAxis[static_cast<int>(plane)], angle));
+  }
+  if (i_ < s_.size() && s_[i_] == ')') {  // CTRANS(): the identity
+    ++i_;
+    return NcValue::frame("");
+  }
+  while (true) {
+    skip_space();
+    std::size_t axis_at = i_;
+    std::string axis = name();
+    if (lookup_.is_variable(axis)) {  // an AXIS variable holding the axis' name
+      NcValue held = lookup_.read(axis, {}, axis_at);
+      axis = held.type == NcValue::Type::kString ? held.text : std::string();
+      for (char& c : axis) c = upper(c);
+    }
+    if (axis != "X" && axis != "Y" && axis != "Z")
+      throw InputError(line_, static_cast<int>(axis_at) + 1,
+                       fmt::format("{}: an axis X, Y or Z is expected{}", n, axis.empty() ? "" : ", not " + axis));
+    words += " " + axis;
+    if (mirror) {
+      words += "0";
+    } else {
+      if (!symbol(",")) fail(fmt::format("{} needs axis, value pairs", n));
+      std::size_t value_at = i_;
+      NcValue v = parse();
+      if (n == "CSCALE" && as_number(v, line_, value_at) == 0)
+        throw InputError(line_, static_cast<int>(value_at) + 1, fmt::format("CSCALE {}: a scale factor of 0", axis));
+      words += interpreter_text::grid_text(v, line_, value_at);
+    }
+    if (symbol(")")) break;
+    if (!symbol(",")) fail(fmt::format("',' or ')' expected in {}", n));
+  }
+  std::string_view block = n == "CTRANS" ? "ATRANS" : n == "CROT" ? "AROT" : n == "CSCALE" ? "ASCALE" : "AMIRROR";
+  if (n == "CROT") {  // one AROT per axis: a rotation's axes are turned in the order written
+    std::string out;
+    for (std::size_t k = 1; k < words.size();) {
+      std::size_t e = words.find(' ', k);
+      if (e == std::string::npos) e = words.size();
+      out += (out.empty() ? "" : "\n") + std::string(block) + " " + words.substr(k, e - k);
+      k = e + 1;
+    }
+    return NcValue::frame(out);
+  }
+  return NcValue::frame(std::string(block) + words);
 }
 
 // Level 11: == <> > < >= <= (lowest priority).
@@ -94,6 +178,8 @@ NcValue ExpressionParser::comparison() {
       op = 6;
     if (!op) return a;
     NcValue b = concatenation();
+    if (a.type == NcValue::Type::kFrame || b.type == NcValue::Type::kFrame)
+      throw InputError(line_, static_cast<int>(at) + 1, "frames are not compared");
     bool r;
     if (a.type == NcValue::Type::kString || b.type == NcValue::Type::kString) {
       if (a.type != b.type) throw InputError(line_, static_cast<int>(at) + 1, "a string is compared with a number");
@@ -119,6 +205,7 @@ NcValue ExpressionParser::concatenation() {
   NcValue a = logical_or();
   while (symbol("<<")) {
     NcValue b = logical_or();
+    if (a.type == NcValue::Type::kFrame || b.type == NcValue::Type::kFrame) fail("a frame is not text");
     a = NcValue::string(text_of(a) + text_of(b));
   }
   return a;
@@ -305,6 +392,7 @@ NcValue ExpressionParser::primary() {
   bool indexed = i_ < s_.size() && s_[i_] == '[';
   if (call) {
     ++i_;
+    if (n == "CTRANS" || n == "CROT" || n == "CSCALE" || n == "CMIRROR" || n == "CRPL") return frame_function(n, at);
     std::vector<NcValue> args = arguments(')');
     return function(n, args, at);
   }

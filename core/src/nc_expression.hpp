@@ -31,6 +31,7 @@ class ExpressionParser {
   void skip_space();
   bool keyword(std::string_view k);
   bool symbol(std::string_view k);
+  NcValue chain();
   NcValue comparison();
   NcValue concatenation();
   NcValue logical_or();
@@ -46,10 +47,12 @@ class ExpressionParser {
   NcValue number();
   std::string name();
   std::vector<NcValue> arguments(char close);
+  NcValue frame_function(const std::string& name, std::size_t at);
   NcValue function(const std::string& name, const std::vector<NcValue>& args, std::size_t at);
   static std::string text_of(const NcValue& v);
 
   static constexpr int kMaxDepth = 64;
+  static constexpr std::size_t kMaxChain = 1 << 16;  // characters of a frame chain
   int depth_ = 0, unary_depth_ = 0;
   std::string_view s_;
   std::size_t i_;

@@ -77,11 +77,9 @@ void JsonWriter::decision(const Decision& d) {
 }
 
 void JsonWriter::alarm(const Alarm& a) {
-  append(alarms_, json{{"number", a.number},
-                       {"line", a.line},
-                       {"block", block_ref(a.block)},
-                       {"clause", a.clause},
-                       {"text", a.text}});
+  json j{{"number", a.number}, {"line", a.line}, {"block", block_ref(a.block)}, {"clause", a.clause}, {"text", a.text}};
+  if (a.source != 0 && sources_) j["source"] = sources_(a.source);  // NC-PARAM-SUB-3
+  append(alarms_, j);
 }
 
 void JsonWriter::notice(const Notice& n) {

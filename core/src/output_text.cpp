@@ -108,7 +108,9 @@ void TextWriter::decision(const Decision& d) {
 }
 
 void TextWriter::alarm(const Alarm& a) {
-  buffer_ += fmt::format("ALARM {} {} [{}]\n", a.number, a.text, a.clause);
+  buffer_ += fmt::format("ALARM {} {}", a.number, a.text);
+  if (a.source != 0 && sources_) buffer_ += " (in " + sources_(a.source) + ")";  // NC-PARAM-SUB-3
+  buffer_ += fmt::format(" [{}]\n", a.clause);
   written();
 }
 

@@ -174,6 +174,31 @@ bool ProgramReader::write_settable_offset(const std::string& assignment) {
   return true;
 }
 
+// NC-PARAM-FRAME-1: the programmable frame as additive blocks that build it again: the shift (in the
+// program's unit), the rotation, then the factors (a mirror is a factor -1), the order in
+// which NC-FRAME-2 applies them. Empty for a shift an inch program cannot write exactly.
+std::optional<std::string> ProgramReader::programmable_frame() {
+  std::string out;
+  for (std::size_t a = 0; a < 3; ++a) {
+    Decimal v = frame_.shift[a];
+    if (units_ == Units::kG70 || units_ == Units::kG700) {
+      bool exact = true;
+      v = v.scaled(10, 254, &exact);
+      if (!exact) return std::nullopt;
+    }
+    if (!v.is_zero()) out += fmt::format(" {}{}", "XYZ"[a], v.to_string());
+  }
+  if (!out.empty()) out = "ATRANS" + out;  // additive: the frame may be chained after another
+  if (frame_.rotated())
+    out +=
+        fmt::format("{}AROT {}{}", out.empty() ? "" : "\n", "XYZ"[frame_.rotation_axis], frame_.rotation.to_string());
+  std::string scale;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (frame_.factor[a] != Decimal::from_int(1)) scale += fmt::format(" {}{}", "XYZ"[a], frame_.factor[a].to_string());
+  if (!scale.empty()) out += (out.empty() ? "ASCALE" : "\nASCALE") + scale;
+  return out;
+}
+
 void ProgramReader::save_modal_state() {
   saved_.push_back({state_, units_, diameter_, offset_index_, frame_, circle_definition_});
 }

@@ -15,8 +15,7 @@ inline bool arc_is_consistent(const Block& b, const MachineData& md, Trace& trac
       b.centre ? circle_end_point(b, md, MarginText::kDouble) : cr_circle_reach(b, MarginText::kDouble);
   trace.decide(d, b.words.line);
   bool ok = d.branch == (b.centre ? "within" : "circle");
-  if (!ok)
-    trace.raise(14040, b.words.line, b.words.number, b.centre ? std::string_view{} : std::string_view{"ARC-CR-1"});
+  if (!ok) trace.raise(14040, b.words, b.centre ? std::string_view{} : std::string_view{"ARC-CR-1"});
   return ok;
 }
 

@@ -140,11 +140,11 @@ void Compensation::cut(const BlockCopy& m, const Entry& en, int record, const Pi
   const Vec2 x = c.point;
   double margin = std::min(c.slack, -near);  // lowered to a nearer miss before it
   decide("TRC-CD-3", m.line, "cut", margin);
-  if (!cut_at(record, x, c.along, m.line, m.number)) return;
+  if (!cut_at(record, x, c.along, BlockPlace::of(m))) return;
   continue_entry(m, en, c.entry_piece, x);
 }
 
-bool Compensation::cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number) {
+bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at) {
   int last_run = -1;  // the last block (BlockCopy::block) run again from held records
   if (record >= 0) {
     const HeldRecord crossed = held[static_cast<std::size_t>(record)];
@@ -175,7 +175,7 @@ bool Compensation::cut_at(int record, Vec2 x, double along, int line_no, std::op
     if (open.block != crossed.owner_block && open.block != last_run) skip_at(open, x);
   } else {
     looking = false;
-    if (!close_open(x, line_no, number)) return false;
+    if (!close_open(x, at)) return false;
   }
   for (BlockCopy& k : skipped) skip_at(k, x);
   skipped.clear();
@@ -222,7 +222,7 @@ bool Compensation::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
     near = std::max(near, c.near_miss);
     if (c.entry_piece < 0) continue;
     decide("TRC-CD-5", d.line, "earlier-block", std::min(c.slack, -near));
-    if (!cut_at(static_cast<int>(i), c.point, c.along, d.line, d.number)) return true;
+    if (!cut_at(static_cast<int>(i), c.point, c.along, BlockPlace::of(d))) return true;
     retraction_line(d, c.point);
     return true;
   }

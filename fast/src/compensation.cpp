@@ -15,17 +15,17 @@ namespace cutcom::fast {
 
 void Compensation::compensation_off(const Block& b) {
   if (b.state.side != Side::kOff) {
-    if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
+    if (b.is_arc()) return raise(10753, b.words);  // TRC-SEL-2
     if (!b.programs_plane_axis()) {
       decide("TRC-SEL-4", b.words.line, "no-plane-axis");
     } else if (b.state.tool == 0) {
-      return raise(10750, b.words.line, b.words.number);  // TRC-SEL-6
+      return raise(10750, b.words);  // TRC-SEL-6
     } else if (b.state.edge == 0) {
       decide("TRC-SEL-5", b.words.line, "d0");
       if (!d0_noticed) sink.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
       d0_noticed = true;
     } else if (!b.state.edge_defined) {
-      return raise(17181, b.words.line, b.words.number);  // TRC-SEL-7
+      return raise(17181, b.words);  // TRC-SEL-7
     } else {
       return select(b);
     }
@@ -39,14 +39,14 @@ void Compensation::compensation_off(const Block& b) {
 }
 
 void Compensation::change_side(const Block& b) {
-  if (b.is_arc()) return raise(10753, b.words.line, b.words.number);  // TRC-SEL-2
+  if (b.is_arc()) return raise(10753, b.words);  // TRC-SEL-2
   if (!b.programs_plane_axis()) {
     decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
     return hold_back(b);
   }
   decide("TRC-SIDE-1", b.words.line, "side-change");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, b.words.line, b.words.number, true)) return;
+  if (!close_open(end, BlockPlace::of(b.words), true)) return;
   run_held_back(end);
   PathPoint tool = xyz(end, h(copy_of(b).start));
   select(b);
@@ -78,13 +78,13 @@ void Compensation::select(const Block& b) {
 bool Compensation::still_compensable(const Block& b) {
   if (b.state.side == Side::kOff) {
     if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
-      raise(10754, b.words.line, b.words.number);
+      raise(10754, b.words);
       return false;
     }
     return true;
   }
   if (b.state.plane != plane) {  // TRC-PLANE-1
-    raise(10757, b.words.line, b.words.number);
+    raise(10757, b.words);
     return false;
   }
   if (b.state.side != side) return true;  // TRC-SIDE-1, handled by the caller
@@ -93,7 +93,7 @@ bool Compensation::still_compensable(const Block& b) {
 }
 
 void Compensation::hold_back(const Block& b) {
-  if (dummy_count == md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
+  if (dummy_count == md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words);
   dummies[static_cast<std::size_t>(dummy_count++)] = copy_of(b);
 }
 
@@ -113,8 +113,8 @@ void Compensation::run_held_back_uncompensated() {
   dummy_count = 0;
 }
 
-bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block,
-                              bool at_normal_end, const Candidate* candidate) {
+bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool at_normal_end,
+                              const Candidate* candidate) {
   const Element& e = open_el;
   double margin;
   double turn = 0;  // arcs: the angle the trimmed element turns
@@ -133,7 +133,7 @@ bool Compensation::close_open(Vec2 end_point, int alarm_line, std::optional<std:
     if (kont_first && candidate)
       throw UnsupportedError(  // TRC-EDGE-7 (planned)
           selection.line, "KONT approach from behind the contour before a too-short first block");
-    raise(10751, alarm_line, alarm_block);
+    raise(10751, alarm_at);
     return false;
   }
   decide(clause, open.line, margin == 0 ? "vanishes" : "fits", margin);
@@ -263,7 +263,7 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
     decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", carrier_gap(cu, cv));
     if (!found && c.kind == Corner::Kind::kOuter)
       return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
-    if (!found) return raise(10751, b.words.line, b.words.number);
+    if (!found) return raise(10751, b.words);
   }
   if (c.kind != Corner::Kind::kTangent) {
     // TRC-LOOK-1: the next equidistant must reach the intersection before its own end (at a
@@ -274,7 +274,7 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
     if (too_short) return start_look_ahead(b);
   }
   Candidate cand{&copy, &next, next_radius};
-  if (!close_open(x, b.words.line, b.words.number, c.kind == Corner::Kind::kTangent, &cand)) return;
+  if (!close_open(x, BlockPlace::of(b.words), c.kind == Corner::Kind::kTangent, &cand)) return;
   run_held_back(x);
   open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
 }
@@ -309,7 +309,7 @@ void Compensation::skip(const BlockCopy& c) {
 
 void Compensation::pass_over(const BlockCopy& c) {
   skip(c);
-  if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, c.line, c.number);
+  if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, c);
 }
 
 void Compensation::start_look_ahead(const Block& too_short) {
@@ -318,17 +318,17 @@ void Compensation::start_look_ahead(const Block& too_short) {
   skip(copy_of(too_short));
   examined = 1, dummy_run = 0;
   looking = true;
-  if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, too_short.words.line, too_short.words.number);
+  if (examined >= md.cutcom_maxnum_check_blocks) raise(10751, too_short.words);
 }
 
 void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
   if (b.state.side != side && b.state.side != Side::kOff) {  // the contour ends before an intersection
     decide("TRC-LOOK-2", b.words.line, "none");
-    return raise(10751, b.words.line, b.words.number);
+    return raise(10751, b.words);
   }
   if (!b.moves_in_plane()) {
-    if (++dummy_run > md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words.line, b.words.number);
+    if (++dummy_run > md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words);
     return skip(copy_of(b));
   }
   dummy_run = 0;
@@ -352,7 +352,7 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   if (!valid) return pass_over(c);
   looking = false;
   Candidate candidate{&c, &cand, radius};
-  if (!close_open(y, b.words.line, b.words.number, false, &candidate)) return;
+  if (!close_open(y, BlockPlace::of(b.words), false, &candidate)) return;
   for (BlockCopy& d : skipped) skip_at(d, y);
   skipped.clear();
   open_element(c, cand, y, radius);
@@ -365,7 +365,7 @@ void Compensation::skip_at(BlockCopy& k, Vec2 at) {
 
 void Compensation::transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
   Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
-  if (!close_open(from, b.line, b.number, true)) return;
+  if (!close_open(from, BlockPlace::of(b), true)) return;
   run_held_back(from);
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
   Origin corner = origin(open, OriginKind::kTransitionCircle);

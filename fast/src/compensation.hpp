@@ -24,6 +24,17 @@
 
 namespace cutcom::fast {
 
+// The block an alarm names: its line, N number and place in a subprogram (NC-PARAM-SUB-3).
+struct BlockPlace {
+  int line = 0;
+  std::optional<std::int64_t> number;
+  std::uint32_t source = 0;
+  template <class B>  // a block's words or a BlockCopy
+  static BlockPlace of(const B& b) {
+    return {b.line, b.number, b.source};
+  }
+};
+
 class Compensation {
  public:
   Compensation(const MachineData& m, PathSink& out, Trace& t, CollisionWindow& window)
@@ -123,6 +134,10 @@ class Compensation {
     trace.decide(clause, line, branch, margin);
   }
   void decide(const ProgrammedDecision& d, int line) { trace.decide(d, line); }
+  template <class At>  // a block's words or a BlockCopy (NC-PARAM-SUB-3: the alarm names its place)
+  void raise(int number, const At& at, std::string_view clause = {}) {
+    trace.raise(number, at, clause);
+  }
   void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
     trace.raise(number, line, block, clause);
   }
@@ -169,7 +184,7 @@ class Compensation {
     double radius;
   };
   // at_normal_end: end_point is the normal end by construction (as ref's close_open).
-  bool close_open(Vec2 end_point, int alarm_line, std::optional<std::int64_t> alarm_block, bool at_normal_end = false,
+  bool close_open(Vec2 end_point, const BlockPlace& alarm_at, bool at_normal_end = false,
                   const Candidate* candidate = nullptr);
 
   // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
@@ -324,7 +339,7 @@ class Compensation {
   // TRC-CD-4: cuts the held-back path at x on `record` (-1: on the open element), `along` it from
   // its start; the blocks after it lose their plane motion and run at x (TRC-LOOK-3). False: an
   // alarm stopped the run.
-  bool cut_at(int record, Vec2 x, double along, int line_no, std::optional<std::int64_t> number);
+  bool cut_at(int record, Vec2 x, double along, const BlockPlace& at);
 
   // TRC-CD-4: block m goes on from the crossing along its entry.
   void continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x);

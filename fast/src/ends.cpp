@@ -27,7 +27,7 @@ void Compensation::approach(const Block& b) {
   has_prev = true;
   Element e = element_of(first);
   double radius = 0;
-  if (!equidistant_exists(b, e, radius)) return raise(10751, b.words.line, b.words.number);
+  if (!equidistant_exists(b, e, radius)) return raise(10751, b.words);
   if (selection.kont) {
     // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
     Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt, std::nullopt};
@@ -94,7 +94,7 @@ bool Compensation::kont_behind(const BlockCopy& at_block, const Kont& k, Vec2 ta
   double gap = std::max(std::fabs(distance - r), std::numeric_limits<double>::denorm_min());
   double margin = room == 0 ? 0.0 : room > 0 ? gap : -gap;
   decide("TRC-KONT-2", at_block.line, inside ? "inside" : "room", margin);
-  if (inside) raise(alarm, at_block.line, at_block.number, "TRC-KONT-2");
+  if (inside) raise(alarm, at_block, "TRC-KONT-2");
   return !inside;
 }
 
@@ -169,9 +169,9 @@ void Compensation::retract_edge(const Block& b) {
   bool found = edge_hit(curve, open_el, open_radius, s * r, &open_start, false, hit, margin);
   decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
   if (d.cdon && search_further_back(d, curve)) return;
-  if (!found) return raise(10751, d.line, d.number);
+  if (!found) return raise(10751, d);
   looking = false;
-  if (!close_open(hit, d.line, d.number)) return;
+  if (!close_open(hit, BlockPlace::of(d))) return;
   for (BlockCopy& k : skipped) skip_at(k, hit);
   skipped.clear();
   retraction_line(d, hit);
@@ -193,10 +193,10 @@ void Compensation::retract_edge_around(BlockCopy& d, const BlockCopy& last_block
     line.bound = EdgeCurve::Bound::kSegment, line.carrier.point = rp, line.carrier.direction = k.point - rp;
     bool found = edge_hit(line, open_el, open_radius, s * r, &open_start, false, x, margin);
     decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
-    if (!found) return raise(10751, d.line, d.number);
+    if (!found) return raise(10751, d);
   }
   looking = false;
-  if (!close_open(x, d.line, d.number)) return;
+  if (!close_open(x, BlockPlace::of(d))) return;
   for (BlockCopy& k2 : skipped) skip_at(k2, x);
   skipped.clear();
   if (!on_circle) return retraction_line(d, x);
@@ -216,7 +216,7 @@ void Compensation::approach_edge(const Candidate& c) {
   double margin = 0;
   bool found = edge_hit(curve, *c.element, c.radius, s * r, nullptr, true, hit, margin);
   decide("TRC-EDGE-5", selection.line, found ? "hit" : "none", margin);
-  if (!found) return raise(10751, c.block->line, c.block->number);
+  if (!found) return raise(10751, *c.block);
   approach_pending = false;
   line(selection, selection.start, xyz(hit, h(selection.end)), OriginKind::kApproach, selection.rapid);
   for (int i = 0; i < approach_dummy_count; ++i) skip_at(approach_dummies[static_cast<std::size_t>(i)], hit);
@@ -252,7 +252,7 @@ bool Compensation::approach_further_ahead(const Block& b, const BlockCopy& m) {
   if (!found) return false;
   for (std::size_t i = 0; i < held.size(); ++i) {
     if (!held[i].is_element || held[i].element.origin.kind != OriginKind::kApproach) continue;
-    if (!cut_at(static_cast<int>(i), hit, std::numeric_limits<double>::infinity(), m.line, m.number)) return true;
+    if (!cut_at(static_cast<int>(i), hit, std::numeric_limits<double>::infinity(), BlockPlace::of(m))) return true;
     open_element(m, e, hit, radius);
     return true;
   }
@@ -272,7 +272,7 @@ void Compensation::deselect(const Block& b) {
     if (trace.stopped()) return;
   }
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, last.line, last.number, true)) return;
+  if (!close_open(end, BlockPlace::of(last), true)) return;
   run_held_back(end);
   retraction_line(last, end);
 }
@@ -282,7 +282,7 @@ void Compensation::deselect(const Block& b) {
 void Compensation::deselect_in_place(const Block& b) {
   decide("TRC-DESEL-3", b.words.line, "in-place");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, b.words.line, b.words.number, true)) return;
+  if (!close_open(end, BlockPlace::of(b.words), true)) return;
   run_held_back(end);
   retract_from = end;
   phase = Phase::kRetracting;
@@ -290,14 +290,14 @@ void Compensation::deselect_in_place(const Block& b) {
 }
 
 void Compensation::retraction_pending(const Block& b) {
-  if (b.state.plane != plane) return raise(10757, b.words.line, b.words.number);  // TRC-PLANE-1
+  if (b.state.plane != plane) return raise(10757, b.words);  // TRC-PLANE-1
   BlockCopy c = copy_of(b);
   if (!b.programs_plane_axis()) {
     line(c, xyz(retract_from, h(c.start)), xyz(retract_from, h(c.end)), OriginKind::kRetraction, c.rapid);
     return;
   }
   if (b.state.side == Side::kOff) {
-    if (b.is_arc()) return raise(10754, b.words.line, b.words.number);  // TRC-DESEL-2
+    if (b.is_arc()) return raise(10754, b.words);  // TRC-DESEL-2
     decide("TRC-DESEL-3", b.words.line, "retraction");
     return retraction_line(c, retract_from);
   }
@@ -331,14 +331,14 @@ void Compensation::retract_around(BlockCopy& last, const Kont& k) {
     Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
     Origin corner = origin(open, OriginKind::kTransitionCircle);
     corner.next_line = last.line, corner.next_block = last.number, corner.next_insert = last.insert;
-    if (!close_open(from, last.line, last.number, true)) return;
+    if (!close_open(from, BlockPlace::of(last), true)) return;
     run_held_back(from);
     double hv = h(last.start);
     if (r > 0) arc(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
     return retraction_line(last, rp);
   }
   decide("TRC-KONT-4", last.line, "intersection");
-  if (!close_open(x, last.line, last.number)) return;
+  if (!close_open(x, BlockPlace::of(last))) return;
   run_held_back(x);
   retraction_line(last, x);
 }
@@ -347,7 +347,7 @@ void Compensation::end_of_program() {
   if (looking) {  // the program ends before an intersection was found
     const BlockCopy& last = skipped.back();
     decide("TRC-LOOK-2", last.line, "none");
-    return raise(10751, last.line, last.number);
+    return raise(10751, last);
   }
   if (phase == Phase::kApproach) {
     decide("TRC-END-1", selection.line, "no-contour");
@@ -358,7 +358,7 @@ void Compensation::end_of_program() {
     decide("TRC-END-1", open.line, "active-at-end");
     sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-    if (!close_open(end, open.line, open.number, true)) return;
+    if (!close_open(end, BlockPlace::of(open), true)) return;
     run_held_back(end);
   }
   phase = Phase::kOff;

@@ -87,7 +87,7 @@ int SarExpansion::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, c
   double distance = cross(t, *p0 - p4);  // SAR-SIDE-2 (t is a unit vector)
   trace_.decide("SAR-SIDE-2", line_no, distance > 0 ? "left" : distance < 0 ? "right" : "on-tangent", distance);
   if (distance == 0) {
-    trace_.raise(10744, line_no, b.words.number, "SAR-SIDE-2");
+    trace_.raise(10744, line_no, b.words.number, "SAR-SIDE-2", b.words.source);
     return 0;
   }
   return distance > 0 ? 1 : -1;
@@ -96,7 +96,7 @@ int SarExpansion::sar_side(const Block& b, const SarTrc& trc, Vec2 t, Vec2 p4, c
 bool SarExpansion::sar_size(const Block& b, const SarTrc& trc, int sd, double& size) {
   SarSize z = cutcom::sar_size(b, trc, sd);  // SAR-DISR-1/2 (decided in core)
   trace_.decide(z.decision, b.words.line);
-  if (!z.size) return trace_.raise(10742, b.words.line, b.words.number, z.decision.clause), false;
+  if (!z.size) return trace_.raise(10742, b.words, z.decision.clause), false;
   size = z.size->to_double();
   return true;
 }
@@ -108,9 +108,7 @@ bool SarExpansion::sar_levels(const Block& b, SarLevels& h, SarEndCase end_case,
   if (check.retraction_plane) trace_.decide(*check.retraction_plane, b.words.line);
   if (check.reversal) trace_.decide(*check.reversal, b.words.line);
   if (check.alarm)
-    return trace_.raise(check.alarm, b.words.line, b.words.number,
-                        check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"),
-           false;
+    return trace_.raise(check.alarm, b.words, check.alarm == 10748 ? "SAR-DISRP-2" : "SAR-DISCL-3"), false;
   set_p3_level(b, h);  // SAR-SEG-1 / SAR-SEG-2
   return true;
 }

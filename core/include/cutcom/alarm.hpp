@@ -27,7 +27,8 @@ struct Alarm {
   int line = 0;                       // 1-based source line of the block that raised it
   std::optional<std::int64_t> block;  // its N number, if programmed
   std::string_view clause;
-  std::string text;  // catalogue text, completed with the block
+  std::string text;          // catalogue text, completed with the block
+  std::uint32_t source = 0;  // NC-PARAM-SUB-3: where in a subprogram the block stands (0: the line)
 };
 
 // `clause` names the raising clause where the catalogue's (the usual one) is not it.

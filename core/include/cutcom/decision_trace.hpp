@@ -45,13 +45,21 @@ class Trace {
   }
 
   // ALARM-1: what was decided before the alarm is output first.
-  void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {}) {
+  void raise(int number, int line, std::optional<std::int64_t> block, std::string_view clause = {},
+             std::uint32_t source = 0) {
     if (before_alarm_) before_alarm_();
-    sink_.alarm(make_alarm(number, line, block, clause));
+    Alarm a = make_alarm(number, line, block, clause);
+    a.source = source;  // NC-PARAM-SUB-3
+    sink_.alarm(a);
     stopped_ = true;
   }
   void raise(int number, const Block& at, std::string_view clause = {}) {
-    raise(number, at.words.line, at.words.number, clause);
+    raise(number, at.words.line, at.words.number, clause, at.words.source);
+  }
+  // At a block's words or an engine's copy of a block: anything with line, number and source.
+  template <class At>
+  void raise(int number, const At& at, std::string_view clause = {}) {
+    raise(number, at.line, at.number, clause, at.source);
   }
   // An alarm whose clause is the catalogue's.
   void raise_catalogued(int number, const Block& at) {

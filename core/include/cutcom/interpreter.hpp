@@ -21,15 +21,19 @@ namespace cutcom {
 
 class InterpreterLookup;
 
-// A value of the NC language: REAL (binary64, as the control computes), INT, BOOL or STRING.
+// A value of the NC language: REAL (binary64, as the control computes), INT, BOOL, STRING or
+// FRAME.
 struct NcValue {
-  enum class Type { kReal, kInt, kBool, kString } type = Type::kReal;
+  enum class Type { kReal, kInt, kBool, kString, kFrame } type = Type::kReal;
   double number = 0;  // REAL, INT (whole), BOOL (0 or 1)
-  std::string text;   // STRING, and AXIS names
+  // STRING, AXIS names; FRAME: its chain as the reader's additive frame blocks, one per line
+  // ("ATRANS X10", "AROT Z30", …; empty: the identity), NC-PARAM-FRAME-1.
+  std::string text;
   static NcValue real(double v) { return {Type::kReal, v, {}}; }
   static NcValue integer(double v) { return {Type::kInt, v, {}}; }
   static NcValue boolean(bool v) { return {Type::kBool, v ? 1.0 : 0.0, {}}; }
   static NcValue string(std::string s) { return {Type::kString, 0, std::move(s)}; }
+  static NcValue frame(std::string chain) { return {Type::kFrame, 0, std::move(chain)}; }
 };
 
 // What the interpreter reads from the machine's state (system variables, NC-PARAM-SYS-1):
@@ -46,6 +50,9 @@ class SystemValues {
   // NC-PARAM-SYS-2: "$P_UIFR[n]=CTRANS(X,10,Y,20)" or "$P_UIFR[n,X,TR]=10" with values on the
   // grid; false: not taken. Throws InputError (column 1) for a wrong assignment.
   virtual bool write_settable_offset(const std::string& /*assignment*/) { return false; }
+  // NC-PARAM-FRAME-1: the programmable frame in force, as frame blocks the reader reads back to
+  // the same frame ("TRANS X1 Y2\nAROT Z30\nASCALE X-1"); empty if not known.
+  virtual std::optional<std::string> programmable_frame() { return std::nullopt; }
   virtual void restore_modal_state() {}
 };
 
@@ -222,6 +229,12 @@ class Interpreter {
   SystemValues* system_;
   InterpreterLimits limits_;
   std::string raw_;
+  // Blocks one line yields beyond its own (a $P_PFRAME assignment: NC-PARAM-FRAME-1), with the
+  // line they stand for; handed out before the next line is read.
+  std::vector<std::string> pending_;
+  std::size_t pending_next_ = 0;
+  int pending_line_ = 0;
+  void programmable_frame_assignment(std::string_view line, std::size_t at, std::size_t value);
   std::vector<Context> stack_;
   std::map<int, double> r_;  // R parameters: global
   std::map<std::string, Variable> globals_;

@@ -104,6 +104,7 @@ class ProgramReader : private SystemValues {
   static bool polar_move(const BlockWords& w);
   // NC-PARAM-SUB-4: PROC … SAVE.
   bool write_settable_offset(const std::string& assignment) override;
+  std::optional<std::string> programmable_frame() override;  // NC-PARAM-FRAME-1
   void save_modal_state() override;
   void restore_modal_state() override;
   struct SavedState {
