@@ -333,6 +333,11 @@ CampaignSummary run_campaign(const CampaignOptions& o) {
   auto take = [&](const CaseRecord& r) {
     s.add(r);
     ++done_cases;
+    if (o.live) {
+      ++o.live->cases;
+      if (r.verdict == "knife-edge" || r.verdict == "knife-edge-ends-differ") ++o.live->knife_edges;
+      if (r.verdict == "over-budget") ++o.live->over_budget;
+    }
     if (results.is_open())
       results << nlohmann::json{{"case", r.k},
                                 {"source", r.source},
@@ -353,9 +358,11 @@ CampaignSummary run_campaign(const CampaignOptions& o) {
         what += " -> " + file;
       }
       s.divergences.push_back(what);
+      if (o.live) ++o.live->divergences, o.live->stop = true;  // the parallel shards stop too
       if (o.progress) std::cerr << "\nunexplained divergence: " << what << "\n";
       return true;
     }
+    if (o.live && o.live->stop) return true;
     if (o.progress && std::chrono::steady_clock::now() - last_print > std::chrono::milliseconds(500)) {
       last_print = std::chrono::steady_clock::now();
       double done = o.cases ? static_cast<double>(done_cases) / static_cast<double>(o.cases)

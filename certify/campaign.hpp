@@ -3,6 +3,7 @@
 // coverage per clause and branch and the measured distribution of fast's coordinate error.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,13 @@
 #include "cutcom/machine_data.hpp"
 
 namespace cutcom::props {
+
+// Counts a shard shares with the other shards of a campaign run in parallel (`--jobs`), in
+// memory all of them see: progress for the parent, and a stop at the first divergence.
+struct LiveCounts {
+  std::atomic<long> cases{0}, knife_edges{0}, over_budget{0}, divergences{0};
+  std::atomic<bool> stop{false};
+};
 
 struct CampaignOptions {
   long cases = 1000;       // cases to run in this shard (0: until `seconds`)
@@ -26,6 +34,7 @@ struct CampaignOptions {
   // run in a child process; a case over budget is killed, recorded as "over-budget" (not
   // compared) and the shard goes on with the next one. A crash in a case stops the shard.
   double budget = 0;
+  LiveCounts* live = nullptr;  // shared with parallel shards (nullptr: alone)
 };
 
 // One case's result, as the campaign counts it.

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "campaign.hpp"
 #include "cutcom/fast/engine.hpp"
@@ -22,6 +23,7 @@
 #include "cutcom/ref/engine.hpp"
 #include "knife_edge_watch.hpp"
 #include "neighbours.hpp"
+#include "parallel_campaign.hpp"
 
 namespace {
 
@@ -296,6 +298,7 @@ struct CertifyOptions {
     return c;
   }();
   std::string shard = "0/1";
+  int jobs = 0;  // parallel shards on this machine (0: one per core)
   std::string summary, report, histogram, spec = "spec";
   std::string knife_baseline, write_knife_baseline;  // PROP-KNIFE-1
   std::vector<std::string> merge, replay, from;
@@ -400,6 +403,8 @@ int certify_command(CertifyOptions& o) {
     return kDone;
   }
   CampaignSummary s;
+  double wall = 0;
+  int used_jobs = 1;
   if (!o.merge.empty()) {
     for (const auto& f : o.merge) {
       std::ifstream in(f);
@@ -413,7 +418,10 @@ int certify_command(CertifyOptions& o) {
     if (!(sh >> i >> slash >> n) || slash != '/' || n < 1 || i < 0 || i >= n)
       throw cutcom::MachineDataError(fmt::format("--shard wants I/N with 0 <= I < N, not '{}'", o.shard));
     o.campaign.shard = i, o.campaign.shards = n;
-    s = cutcom::props::run_campaign(o.campaign);
+    int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    cutcom::props::ParallelRun run = cutcom::props::run_campaign_jobs(o.campaign, jobs);
+    s = std::move(run.summary);
+    wall = run.wall_seconds, used_jobs = run.jobs;
   }
   if (!o.summary.empty()) std::ofstream(o.summary) << s.to_json().dump(1) << "\n";
   if (!o.write_knife_baseline.empty())
@@ -441,11 +449,15 @@ int certify_command(CertifyOptions& o) {
   long knife = s.verdicts.count("knife-edge") ? s.verdicts.at("knife-edge") : 0;
   long ends_differ = s.verdicts.count("knife-edge-ends-differ") ? s.verdicts.at("knife-edge-ends-differ") : 0;
   long unsupported = s.verdicts.count("not-supported") ? s.verdicts.at("not-supported") : 0;
+  // s.seconds sums the shards' times: cases per second per core.
+  std::string time =
+      used_jobs > 1 ? fmt::format("{:.1f} s on {} jobs", wall, used_jobs) : fmt::format("{:.1f} s", s.seconds);
   std::cout << fmt::format(
-      "{} cases in {:.1f} s ({:.0f}/s): {} agree, {} knife edges (after {} of them the runs end differently), {} not "
+      "{} cases in {} ({:.0f}/s per core): {} agree, {} knife edges (after {} of them the runs end differently), {} "
+      "not "
       "supported, {} over budget, {} unexplained divergences; largest coordinate error {:.3g} mm ({:.3g} of the "
       "tolerance)\n",
-      s.cases, s.seconds, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife + ends_differ,
+      s.cases, time, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife + ends_differ,
       ends_differ, unsupported, s.over_budget.size(), s.divergences.size(), s.max_error, s.max_ratio);
   for (const auto& c : s.over_budget) std::cout << "over budget: case " << c << "\n";
   for (const auto& d : s.divergences) std::cout << "unexplained divergence: " << d << "\n";
@@ -507,6 +519,10 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   certify->add_option("--seed", co.campaign.seed, "campaign seed (case k is the same program in any sharding)");
   certify->add_option("--shard", co.shard, "I/N: run cases k = I, I+N, I+2N, ... of the campaign");
+  certify
+      ->add_option("--jobs", co.jobs,
+                   "run the cases in N processes on this machine and merge them (default: one per core)")
+      ->check(CLI::Range(1, 1024));
   certify->add_option("--results", co.campaign.results, "JSON lines, one per case");
   certify->add_option("--corpus", co.campaign.corpus, "directory for an unexplained divergence (tests/corpus)");
   certify->add_option("--summary", co.summary, "write the shard's summary (JSON) for --merge");

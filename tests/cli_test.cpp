@@ -2,12 +2,14 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -221,6 +223,37 @@ nlohmann::json summary_of(const std::string& file) {
   nlohmann::json j = nlohmann::json::parse(in);
   j.erase("seconds");
   return j;
+}
+
+// covers: CLI-2
+TEST(Cli, CertifyJobsRunTheSameCasesInParallelProcesses) {
+  const std::string dir = CUTCOM_BINARY_DIR;
+  Result one = sh(kCli + " certify --cases 31 --seed 9 --no-progress --jobs 1 --summary " + dir +
+                  "/jobs1.json --results " + dir + "/jobs1.jsonl");
+  Result three = sh(kCli + " certify --cases 31 --seed 9 --no-progress --jobs 3 --summary " + dir +
+                    "/jobs3.json --results " + dir + "/jobs3.jsonl");
+  ASSERT_EQ(one.status, 0) << one.out;
+  ASSERT_EQ(three.status, 0) << three.out;
+  EXPECT_NE(three.out.find("31 cases in "), std::string::npos) << three.out;
+  EXPECT_NE(three.out.find(" on 3 jobs ("), std::string::npos) << three.out;
+  EXPECT_NE(three.out.find("/s per core)"), std::string::npos) << three.out;
+  nlohmann::json a = summary_of(dir + "/jobs1.json"), b = summary_of(dir + "/jobs3.json");
+  EXPECT_EQ(a["shards"], nlohmann::json::array({"0/1"}));
+  EXPECT_EQ(b["shards"], nlohmann::json::array({"0/3", "1/3", "2/3"}));
+  a.erase("shards"), b.erase("shards");
+  EXPECT_EQ(a, b);  // the same 31 cases, counted alike
+  // Every case once in the results, whatever process ran it.
+  auto cases_in = [](const std::string& file) {
+    std::ifstream in(file);
+    std::vector<long> k;
+    for (std::string line; std::getline(in, line);) k.push_back(nlohmann::json::parse(line)["case"].get<long>());
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<long> all(31);
+  for (long k = 0; k < 31; ++k) all[static_cast<std::size_t>(k)] = k;
+  EXPECT_EQ(cases_in(dir + "/jobs1.jsonl"), all);
+  EXPECT_EQ(cases_in(dir + "/jobs3.jsonl"), all);
 }
 
 // covers: CLI-2
