@@ -1,6 +1,9 @@
 #include <fmt/format.h>
 
+#include <charconv>
+#include <cmath>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "cutcom/output.hpp"
 
@@ -26,37 +29,112 @@ JsonWriter::JsonWriter(std::ostream& out, std::string engine, bool with_trace) :
        << ",\n  \"unit\": \"mm\",\n  \"path\": [";
 }
 
+// A path element written straight into the buffer, byte for byte as nlohmann::json's dump()
+// of the same object would write it (keys in its sorted order, numbers by its own shortest
+// round-trip formatter), without building a json object per element: the writer emits
+// millions of them (issue "Performance").
+namespace {
+void append_number(std::string& out, double v) {
+  if (!std::isfinite(v)) {
+    out += "null";
+    return;
+  }
+  char digits[64];
+  char* end = nlohmann::detail::to_chars(digits, digits + sizeof digits, clean(v));
+  out.append(digits, end);
+}
+void append_integer(std::string& out, std::int64_t v) {
+  char digits[24];
+  auto r = std::to_chars(digits, digits + sizeof digits, v);
+  out.append(digits, r.ptr);
+}
+void append_point(std::string& out, const PathPoint& p) {
+  out += '[';
+  append_number(out, p.x);
+  out += ',';
+  append_number(out, p.y);
+  out += ',';
+  append_number(out, p.z);
+  out += ']';
+}
+// A JSON string: printable ASCII directly, anything else (escapes, UTF-8 checks) by nlohmann.
+void append_string(std::string& out, std::string_view s) {
+  for (char c : s)
+    if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
+      out += json(std::string(s)).dump();
+      return;
+    }
+  out += '"';
+  out.append(s);
+  out += '"';
+}
+void append_key(std::string& out, std::string_view key) {  // "key": after a comma where needed
+  if (out.back() != '{') out += ',';
+  out += '"';
+  out.append(key);
+  out += "\":";
+}
+}  // namespace
+
 void JsonWriter::element(const PathElement& e) {
-  json j;
-  j["type"] = e.type == ElementType::kLine ? "line" : "arc";
-  j["rapid"] = e.rapid;
-  j["start"] = point(e.start);
-  j["end"] = point(e.end);
-  if (e.type == ElementType::kArc) {
-    j["center"] = point(e.center);
-    j["ccw"] = e.ccw;
-  }
-  j["line"] = e.origin.line;
-  j["block"] = block_ref(e.origin.block);
-  json o;
-  o["kind"] = origin_kind_name(e.origin.kind);
-  o["line"] = e.origin.line;
-  if (e.origin.kind == OriginKind::kTransitionCircle) o["next_line"] = e.origin.next_line;
-  if (e.origin.sar != SarMove::kNone) o["sar"] = sar_move_name(e.origin.sar);
-  if (e.origin.insert.kind != InsertKind::kNone) {  // NC-CONTOUR-*: an element the reader inserted
-    o["inserted"] = insert_kind_name(e.origin.insert.kind);
-    if (e.origin.insert.kind == InsertKind::kTurn)
-      o["turn"] = e.origin.insert.turn;
-    else
-      o["corner_next_line"] = e.origin.insert.next_line;
-  }
-  o["text"] = describe(e.origin);
-  if (e.origin.source != 0 && sources_) o["source"] = sources_(e.origin.source);  // NC-PARAM-SUB-3
-  j["origin"] = o;
-  if (!e.rapid) j["feed"] = e.feed.to_string();
-  if (!e.rapid && e.feed_type == FeedType::kG95) j["feed_type"] = "G95";
-  out_ << (first_ ? "\n    " : ",\n    ") << j.dump();
+  std::string& b = buffer_;
+  b += first_ ? "\n    {" : ",\n    {";
   first_ = false;
+  const Origin& o = e.origin;
+  append_key(b, "block");
+  if (o.block)
+    append_integer(b, *o.block);
+  else
+    b += "null";
+  bool arc = e.type == ElementType::kArc;
+  if (arc) {
+    append_key(b, "ccw");
+    b += e.ccw ? "true" : "false";
+    append_key(b, "center");
+    append_point(b, e.center);
+  }
+  append_key(b, "end");
+  append_point(b, e.end);
+  if (!e.rapid) {
+    append_key(b, "feed");
+    append_string(b, e.feed.to_string());
+    if (e.feed_type == FeedType::kG95) append_key(b, "feed_type"), b += "\"G95\"";
+  }
+  append_key(b, "line");
+  append_integer(b, o.line);
+  append_key(b, "origin");
+  b += '{';
+  bool inserted = o.insert.kind != InsertKind::kNone;  // NC-CONTOUR-*: an element the reader inserted
+  if (inserted && o.insert.kind != InsertKind::kTurn)
+    append_key(b, "corner_next_line"), append_integer(b, o.insert.next_line);
+  if (inserted) append_key(b, "inserted"), append_string(b, insert_kind_name(o.insert.kind));
+  append_key(b, "kind");
+  append_string(b, origin_kind_name(o.kind));
+  append_key(b, "line");
+  append_integer(b, o.line);
+  if (o.kind == OriginKind::kTransitionCircle) append_key(b, "next_line"), append_integer(b, o.next_line);
+  if (o.sar != SarMove::kNone) append_key(b, "sar"), append_string(b, sar_move_name(o.sar));
+  if (o.source != 0 && sources_) append_key(b, "source"), append_string(b, sources_(o.source));  // NC-PARAM-SUB-3
+  text_.clear();
+  append_description(text_, o);
+  append_key(b, "text");
+  append_string(b, text_);
+  if (inserted && o.insert.kind == InsertKind::kTurn) append_key(b, "turn"), append_integer(b, o.insert.turn);
+  b += '}';
+  append_key(b, "rapid");
+  b += e.rapid ? "true" : "false";
+  append_key(b, "start");
+  append_point(b, e.start);
+  append_key(b, "type");
+  b += arc ? "\"arc\"" : "\"line\"";
+  b += '}';
+  written();
+}
+
+void JsonWriter::written() {
+  if (buffer_.size() < (std::size_t{1} << 16)) return;
+  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  buffer_.clear();
 }
 
 void JsonWriter::action(const ActionEvent& a) {
@@ -95,6 +173,8 @@ void JsonWriter::sar_variables(const SarVariables& v) {
 }
 
 void JsonWriter::finish() {
+  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  buffer_.clear();
   out_ << (first_ ? "]" : "\n  ]");
   auto list = [&](const char* key, const std::string& items) {
     out_ << ",\n  \"" << key << "\": [" << (items.empty() ? "" : "\n    " + items + "\n  ") << "]";

@@ -29,10 +29,13 @@ class JsonWriter : public PathSink {
   void set_sources(SourceNames names) { sources_ = std::move(names); }
 
  private:
+  void written();  // writes the element buffer out once it is large
+
   std::ostream& out_;
   SourceNames sources_;
   bool with_trace_;
   bool first_ = true;
+  std::string buffer_, text_;  // path elements not yet written; an origin's text (reused)
   std::string actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
 };
 
