@@ -242,25 +242,43 @@ int run_command(const RunOptions& o) {
 
   bool ok = true;
   if (o.format == "svg") {
-    // The picture needs the programmed contour too: read the text once, use it twice.
-    std::string text = read_all(*in);
-    std::istringstream first(text), second(text);
-    cutcom::ProgramReader reader(first, md.initial_state());
-    control.into(reader);
-    cutcom::CollectingSink sink;
-    ok = run_engine(o.engine, reader, md, sink, o);
-    cutcom::ProgramReader again(second, md.initial_state());
-    control.into(again);
-    std::vector<cutcom::Block> blocks;
-    cutcom::Block b;
-    cutcom::Plane plane = cutcom::Plane::kG17;
-    while (again.next(b)) {
-      if (b.state.side != cutcom::Side::kOff) plane = b.state.plane;
-      blocks.push_back(b);
+    // The picture needs the programmed contour too: the program is read twice, from the file
+    // (standard input is kept in a temporary file), the picture in bounded memory.
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> spool(nullptr, std::fclose);
+    std::string path = o.program;
+    if (o.program == "-") {
+      spool.reset(std::tmpfile());
+      if (!spool) throw std::runtime_error("cannot create a temporary file for standard input");
+      std::string chunk(1 << 16, '\0');
+      while (std::cin.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || std::cin.gcount() > 0)
+        std::fwrite(chunk.data(), 1, static_cast<std::size_t>(std::cin.gcount()), spool.get());
+      std::fflush(spool.get());
+      path = fmt::format("/proc/self/fd/{}", fileno(spool.get()));
     }
+    cutcom::SvgPicture picture;
+    {
+      std::ifstream first(path);
+      cutcom::ProgramReader again(first, md.initial_state());
+      control.into(again);
+      cutcom::Block b;
+      cutcom::Plane plane = cutcom::Plane::kG17;
+      try {
+        while (again.next(b)) {
+          if (b.state.side != cutcom::Side::kOff) plane = b.state.plane;
+          picture.programmed(b);
+        }
+      } catch (const cutcom::InputError&) {
+        // the contour up to the error is drawn; the engine's run below reports the error
+      }
+      picture.set_plane(plane);
+    }
+    std::ifstream second(path);
+    cutcom::ProgramReader reader(second, md.initial_state());
+    control.into(reader);
+    ok = run_engine(o.engine, reader, md, picture, o);
     std::string title = fmt::format("cutcom — {} — engine {}", o.program == "-" ? "stdin" : o.program, o.engine);
-    cutcom::write_svg(*out, cutcom::programmed_contour(blocks), sink.result, plane, title);
-    for (const auto& a : sink.result.alarms) std::cerr << fmt::format("ALARM {} {}\n", a.number, a.text);
+    picture.write(*out, title);
+    for (const auto& a : picture.alarms()) std::cerr << fmt::format("ALARM {} {}\n", a.number, a.text);
   } else if (o.format == "json") {
     cutcom::JsonWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());

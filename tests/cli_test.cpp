@@ -113,6 +113,32 @@ TEST(Cli, StdinMachineDataAndSvg) {
   EXPECT_NE(t.out.find("TRC-CORNER-1"), std::string::npos);
 }
 
+// A long program's picture keeps polylines within a stated bound (memory bounded); a short one
+// is drawn element by element.
+// covers: CLI-1
+TEST(Cli, ALongProgramsPictureIsReducedAndSaysSo) {
+  const std::string dir = CUTCOM_BINARY_DIR;
+  {
+    std::ofstream p(dir + "/long-picture.mpf");
+    p << "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.5\nT1 D1 F1000\nG0 X0 Y-5\nG1 G41 X0 Y0\n";
+    for (int k = 0; k < 12000; ++k)  // a zigzag along X with half circles: 24,000 blocks
+      p << "G1 X" << 4 * k + 2 << " Y0\nG3 X" << 4 * k + 4 << " Y0 CR=1\n";
+    p << "G40 G1 X" << 4 * 12000 + 5 << " Y-5\nM30\n";
+  }
+  Result s = sh(kCli + " run " + dir + "/long-picture.mpf --format svg");
+  ASSERT_EQ(s.status, 0);
+  EXPECT_NE(s.out.find("detail reduced for a long program: 48002 path elements and 24003 programmed segments<"),
+            std::string::npos)
+      << s.out.substr(0, 2000);
+  EXPECT_NE(s.out.find("mm of the exact path"), std::string::npos);
+  EXPECT_NE(s.out.find("the label of one programmed segment in 128"), std::string::npos);
+  EXPECT_EQ(s.out.find("<title>"), std::string::npos);  // no per-element titles
+  EXPECT_LT(s.out.size(), 8u << 20);
+  Result small = sh(kCli + " run " + kExample + " --format svg");
+  EXPECT_EQ(small.out.find("detail reduced"), std::string::npos);
+  EXPECT_NE(small.out.find("<title>"), std::string::npos);
+}
+
 }  // namespace
 
 namespace {

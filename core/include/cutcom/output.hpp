@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -73,9 +74,47 @@ struct ProgrammedSegment {
   std::string label;  // its N number where the program has one ("N40"), else its line ("L12")
 };
 
-void write_svg(std::ostream& out, const std::vector<ProgrammedSegment>& programmed, const RunResult& result,
-               Plane plane, const std::string& title);
+// The programmed contour of a program, block by block (a SAR block's contour is generated: drawn
+// as path).
+class ProgrammedContour {
+ public:
+  void add(const Block& b, std::vector<ProgrammedSegment>& out);
 
-std::vector<ProgrammedSegment> programmed_contour(const std::vector<Block>& blocks);
+ private:
+  bool p4_pending_ = false;  // SAR-P4-2: the next traversing block's motion is the SAR element
+};
+
+// Bounds of what a picture keeps (issue "Performance" item 6).
+struct PictureLimits {
+  std::size_t full_elements = 20000;  // path elements (and programmed segments) drawn one by one
+  std::size_t points = 200000;        // beyond: polylines of at most this many points in all
+  std::size_t labels = 200;           // block labels kept in a reduced picture (every k-th)
+  std::size_t markers = 2000;         // SAR P3/P4 markers drawn
+};
+
+// The SVG picture in memory bounded by PictureLimits, whatever the program length: up to
+// `full_elements` every element is drawn with its arrow and title; beyond, the picture keeps
+// polylines simplified within a bound it states on the picture (nothing is left out).
+class SvgPicture : public PathSink {
+ public:
+  explicit SvgPicture(PictureLimits limits = {});
+  ~SvgPicture() override;
+  SvgPicture(const SvgPicture&) = delete;
+  SvgPicture& operator=(const SvgPicture&) = delete;
+  void programmed(const Block& b);  // the programmed contour, block by block, before the path
+  void set_plane(Plane plane);      // the picture's plane (arcs of the path turn in it)
+  void element(const PathElement& e) override;
+  void alarm(const Alarm& a) override;
+  void sar_variables(const SarVariables& v) override;
+  void write(std::ostream& out, const std::string& title) const;
+  const std::vector<Alarm>& alarms() const;
+  bool reduced() const;
+  double bound() const;  // mm: how far a drawn point may lie from the exact path (0: full detail)
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace cutcom
