@@ -2,11 +2,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -281,6 +283,20 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "the properties (PROP-): " << other.size() << " clauses.\n";
   md << "\n## Generators and alarms\n\n| generator style | cases |\n|---|---|\n";
   for (const auto& [k, n] : s.styles) md << fmt::format("| {} | {} |\n", k, n);
+  // PROP-HAIR-1: each exact situation, exactly and a nanometre to either side.
+  std::map<std::string, std::array<long, 3>> exact;
+  for (const auto& [k, n] : s.styles) {
+    if (k.rfind("exact/", 0) != 0) continue;
+    std::size_t slash = k.rfind('/');
+    std::string which = k.substr(slash + 1);
+    auto& row = exact[k.substr(6, slash - 6)];
+    row[which == "exactly" ? 0 : which == "a-hair-above" ? 1 : 2] += n;
+  }
+  md << "\n## Exact situations\n\nPROP-HAIR-1: the boundaries spec rules distinguish, generated exactly and a\n"
+     << "nanometre (the program grid) to either side.\n\n"
+     << "| situation | exactly | a nanometre above | a nanometre below |\n|---|---|---|---|\n";
+  for (const auto& [k, row] : exact) md << fmt::format("| {} | {} | {} | {} |\n", k, row[0], row[1], row[2]);
+  if (exact.empty()) md << "| (none in this campaign) | | | |\n";
   md << "\n| alarm | cases |\n|---|---|\n";
   for (const auto& [k, n] : s.alarms) md << fmt::format("| {} | {} |\n", k, n);
   std::ofstream(markdown_path) << md.str();

@@ -71,14 +71,21 @@ double radius_of(const PathElement& e) {
 }  // namespace
 
 namespace {
-// A corner of deflection cosine `cosine`: kappa, and chi where a circle makes it a crossing of
+// A corner between two directions: kappa, and chi where a circle makes it a crossing of
 // carriers. A reversal or tangency within rounding (4 u) builds no intersection (a circle, or the
 // common normal point): it does not count. Were the engines to intersect there after all, the
 // tolerance is too tight and the campaign reports it -- the safe side.
-void count_corner(Conditioning& c, double cosine, bool circle) {
-  if (!std::isfinite(cosine)) return;
-  if (1 + cosine > 4 * kUnitRoundoff) c.corner = std::max(c.corner, 1 / (1 + cosine));
-  double sine = std::sqrt(std::max(0.0, 1 - cosine * cosine));
+// A corner between directions a and b (not normalised).
+void count_corner(Conditioning& c, double aa, double ab, double ba, double bb, bool circle) {
+  double norms = std::hypot(aa, ab) * std::hypot(ba, bb);
+  double cosine = (aa * ba + ab * bb) / norms, sine = std::fabs(aa * bb - ab * ba) / norms;
+  if (!std::isfinite(cosine) || !std::isfinite(sine)) return;
+  // 1 + cos from the sine where the directions nearly reverse: 1 + cos in double is 0 there for
+  // turns within 1e-8 of a half turn that are not exact (programmed decimals tell them apart, and
+  // the equidistants then meet far out, PROP-HAIR-1).
+  double one_plus_cos = cosine < 0 ? sine * sine / (1 - cosine) : 1 + cosine;
+  if (one_plus_cos > 4 * kUnitRoundoff || (cosine < 0 && sine > 4 * kUnitRoundoff))
+    c.corner = std::max(c.corner, 1 / one_plus_cos);
   if (circle && sine > 4 * kUnitRoundoff) c.crossing = std::max(c.crossing, 1 / sine);
 }
 }  // namespace
@@ -147,9 +154,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
       // multiples of each other): they do not count.
       if (std::isfinite(sine) && sine > 4 * kUnitRoundoff) c.crossing = std::max(c.crossing, 1 / sine);
     }
-    if (have_prev)
-      count_corner(c, (prev_a * ta + prev_b * tb) / (std::hypot(prev_a, prev_b) * std::hypot(ta, tb)),
-                   b.is_arc() || prev_arc);
+    if (have_prev) count_corner(c, prev_a, prev_b, ta, tb, b.is_arc() || prev_arc);
     prev_a = ua, prev_b = ub, have_prev = true, prev_arc = b.is_arc();
     recent.emplace_back(ua, ub);
     if (static_cast<int>(recent.size()) > window + 1) recent.erase(recent.begin());
@@ -195,8 +200,7 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     if (!lead || !first) continue;
     auto [da, db] = tangent(*lead, ax, false);
     auto [ta, tb] = lead_after ? tangent(*last, ax, true) : tangent(*first, ax, false);
-    count_corner(c, (da * ta + db * tb) / (std::hypot(da, db) * std::hypot(ta, tb)),
-                 (lead_after ? last : first)->type == ElementType::kArc);
+    count_corner(c, da, db, ta, tb, (lead_after ? last : first)->type == ElementType::kArc);
   }
   // Carriers that nearly touch (a gap g, mm) cross at about sqrt(2 |g| / R), R <= L: the corner's
   // deflection may be large while the intersection is as ill-conditioned as a tangency. A gap

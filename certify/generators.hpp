@@ -8,7 +8,7 @@
 
 namespace cutcom::props {
 
-rc::Gen<ContourCase> any_contour();    // all styles below, weighted
+rc::Gen<ContourCase> any_contour();  // all styles below, weighted
 // Contours of the other styles with roundings and chamfers (RND CHR CHF) at their corners, straight
 // blocks in polar coordinates and a rotated frame (NC-CONTOUR-1, NC-POLAR-2, NC-FRAME-4).
 rc::Gen<ContourCase> contour_definitions();
@@ -23,6 +23,7 @@ rc::Gen<ContourCase> around_ends();          // start/end in front of, behind, o
 rc::Gen<ContourCase> bottleneck();           // walls with recesses narrower/wider than 2r, CDON (TRC-CD-*)
 rc::Gen<ContourCase> sar_contour();          // SAR approach/retraction on any contour (SAR-*)
 rc::Gen<ContourCase> sar_approach_only();    // a SAR approach, its DISCL at the MD20204 boundary in half of them
+rc::Gen<ContourCase> exact_situations();     // PROP-HAIR-1: exact boundaries of spec rules and a nanometre off
 rc::Gen<ContourCase> circles_near_radius();  // circles whose radius is the tool radius within a few um          //
                                              // slots of width exactly 2r: elements of length 0
 

@@ -66,6 +66,9 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefNearReversals, ()) { check_agreemen
 // covers: PROP-DIFF-1 TRC-ELEMENT-1
 RC_GTEST_PROP(Differential, FastAgreesWithRefOnVanishingElements, ()) { check_agreement(*notch()); }
 
+// covers: PROP-HAIR-1 PROP-DIFF-1 TRC-CORNER-3 TRC-CORNER-4 TRC-KONT-1 TRC-KONT-2 TRC-ARC-CORNER-1 TRC-ELEMENT-1
+RC_GTEST_PROP(Differential, FastAgreesWithRefInExactSituations, ()) { check_agreement(*exact_situations()); }
+
 // covers: PROP-DIFF-1 TRC-ARC-EQ-1 TRC-ARC-CORNER-1 TRC-ARC-CORNER-2 TRC-ARC-ELEMENT-1 ARC-CENTRE-1
 RC_GTEST_PROP(Differential, FastAgreesWithRefWithCircles, ()) { check_agreement(*with_circles()); }
 

@@ -1,10 +1,9 @@
 // Metamorphic properties (PROP-META-*), decided exactly in ref: moving, turning, mirroring or
 // scaling a program, or writing it in another plane, moves the exact tool-centre path the same
 // way and changes no decision.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
-
-#include <fmt/format.h>
 
 #include "cutcom/ref/exact_checks.hpp"
 #include "generators.hpp"
@@ -78,6 +77,9 @@ ref::AffineMap workpiece_map(const PlaneMap& f, int plane, int decimals) {
 }
 
 void check_image(const ContourCase& c, const PlaneMap& f) {
+  // The image needs as many decimals more as 1/den has: they must fit the nine of the program
+  // grid (PROP-HAIR-1 cases are written with nine already).
+  RC_PRE(c.decimals + extra_digits(f.den) <= 9);
   RC_TAG(c.style);
   ContourCase image = apply(c, f);
   // Line 4 is the selection block: the first move (line 3) starts at the implicit X0 Y0 Z0.
@@ -121,8 +123,9 @@ RC_GTEST_PROP(Metamorphic, TransFrameEqualsTranslatedCoordinates, ()) {
   PlaneMap f;
   f.ta = *rc::gen::inRange<std::int64_t>(-50000, 50001);
   f.tb = *rc::gen::inRange<std::int64_t>(-50000, 50001);
-  check_frame(c, fmt::format("TRANS {}{} {}{}", abscissa(c.plane), fixed(f.ta, c.decimals), ordinate(c.plane),
-                             fixed(f.tb, c.decimals)),
+  check_frame(c,
+              fmt::format("TRANS {}{} {}{}", abscissa(c.plane), fixed(f.ta, c.decimals), ordinate(c.plane),
+                          fixed(f.tb, c.decimals)),
               f);
 }
 
@@ -146,6 +149,7 @@ RC_GTEST_PROP(Metamorphic, QuarterTurnFrameEqualsTheTurnedProgram, ()) {
 // covers: PROP-META-7 NC-UNIT-1
 RC_GTEST_PROP(Metamorphic, InchProgramEqualsTheProgramInMm, ()) {
   ContourCase c = *any_contour();
+  RC_PRE(c.decimals < 9);  // one decimal more must fit the nine of the program grid (PROP-HAIR-1 cases do not)
   c.sar = {}, c.variant = 0;
   for (Step& s : c.steps) s.dummies = 0;  // their Z words would be inches too
   PlaneMap f;
