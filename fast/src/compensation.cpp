@@ -160,6 +160,14 @@ bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool a
     double reads = signed_rotation(u, v, e.sense);
     bool just_past = reads > 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius);
     if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end));
+    // And a circle that turns less than half a turn, its end a rounding from its start (an
+    // equidistant cut between two intersections of touching carriers), whose points cannot be
+    // read or read as nearly a whole turn: it is its chord, a line a rounding long.
+    bool just_before = reads <= 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius);
+    if (turn < std::numbers::pi && (just_before || unreadable)) {
+      line(open, from, to, OriginKind::kOffset, open.rapid);
+      return true;
+    }
     arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
   }
   return true;

@@ -1,6 +1,8 @@
 #include "plane_geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace cutcom::fast {
@@ -117,6 +119,9 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
 // The sign is that of the quantity carrier_intersections decides on (PROP-BOUNDARY-1: the
 // branch "meet" or "miss" must agree with the margin traced), the size the distance in mm.
 double carrier_gap(const Carrier& u, const Carrier& v) {
+  // A margin that rounds to 0 (or underflows) keeps the sign of the decision: carriers that miss
+  // by less than the doubles can show have a positive gap, the smallest there is.
+  auto missing = [](double g) { return g > 0 ? g : std::numeric_limits<double>::denorm_min(); };
   if (u.circle != v.circle) {
     const Carrier& l = u.circle ? v : u;
     const Carrier& c = u.circle ? u : v;
@@ -124,18 +129,19 @@ double carrier_gap(const Carrier& u, const Carrier& v) {
     Vec2 foot = l.point + dot(c.point - l.point, d) * d;
     double dist2 = dot(foot - c.point, foot - c.point);
     double half2 = c.radius * c.radius - dist2;
-    return -half2 / (c.radius + std::sqrt(dist2));  // = distance of the centre - radius
+    double g = -half2 / (c.radius + std::sqrt(dist2));  // = distance of the centre - radius
+    return half2 < 0 ? missing(g) : std::min(g, 0.0);
   }
   Vec2 d = v.point - u.point;
   double dd = dot(d, d);
-  if (dd == 0) return std::fabs(u.radius - v.radius);  // concentric: never meet (or the same circle)
+  if (dd == 0) return missing(std::fabs(u.radius - v.radius));  // concentric: never meet (or the same circle)
   double along = (u.radius * u.radius - v.radius * v.radius + dd) / (2 * dd);
   double across2 = u.radius * u.radius / dd - along * along;
   double dist = std::sqrt(dd);
   double gap = std::max(dist - (u.radius + v.radius), std::fabs(u.radius - v.radius) - dist);
-  if ((across2 < 0) == (gap > 0)) return gap;
   // Within rounding of touching the two formulas may disagree: the deciding one's sign, its size.
-  return -across2 * dd / (u.radius + std::fabs(along) * dist);
+  if ((across2 < 0) != (gap > 0)) gap = -across2 * dd / (u.radius + std::fabs(along) * dist);
+  return across2 < 0 ? missing(gap) : std::min(gap, 0.0);
 }
 
 double signed_rotation(Vec2 from, Vec2 to, int sense) { return sense * std::atan2(cross(from, to), dot(from, to)); }
