@@ -120,25 +120,26 @@ def sinumerik_program(moves, cdon=False):
         "N1 G17 G90 G71 G450 T1 D1 F1000" + (" CDON" if cdon else ""),
         f"G0 X{sx} Y{sy}",
         "G42 G1 X0 Y0",
+        *contour_blocks(moves),
+        "G40 G1 X-10 Y-5",
+        "M30",
     ]
+    return "\n".join(out) + "\n"
+
+
+def contour_blocks(moves):
+    """The contour's blocks, the same words in both dialects (G1, G2/G3 with I J)."""
     for m in moves:
         if m[0] == "line":
-            out.append(f"G1 X{fmt(m[1])} Y{fmt(m[2])}")
+            yield f"G1 X{fmt(m[1])} Y{fmt(m[2])}"
         else:
-            out.append(f"{'G3' if m[5] else 'G2'} X{fmt(m[1])} Y{fmt(m[2])} I{fmt(m[3])} J{fmt(m[4])}")
-    out += ["G40 G1 X-10 Y-5", "M30"]
-    return "\n".join(out) + "\n"
+            yield f"{'G3' if m[5] else 'G2'} X{fmt(m[1])} Y{fmt(m[2])} I{fmt(m[3])} J{fmt(m[4])}"
 
 
 def linuxcnc_program(moves):
     sx, sy = approach_start(moves)
-    out = ["G21 G17 G90 G64 F1000", f"G0 X{sx} Y{sy}", f"G42.1 D{fmt(2 * RADIUS)} G1 X0 Y0"]
-    for m in moves:
-        if m[0] == "line":
-            out.append(f"G1 X{fmt(m[1])} Y{fmt(m[2])}")
-        else:
-            out.append(f"{'G3' if m[5] else 'G2'} X{fmt(m[1])} Y{fmt(m[2])} I{fmt(m[3])} J{fmt(m[4])}")
-    out += ["G40 G1 X-10 Y-5", "M2"]
+    out = ["G21 G17 G90 G64 F1000", f"G0 X{sx} Y{sy}", f"G42.1 D{fmt(2 * RADIUS)} G1 X0 Y0", *contour_blocks(moves),
+           "G40 G1 X-10 Y-5", "M2"]
     return "\n".join(out) + "\n"
 
 
