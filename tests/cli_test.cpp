@@ -131,7 +131,7 @@ TEST(Cli, ALongProgramsPictureIsReducedAndSaysSo) {
             std::string::npos)
       << s.out.substr(0, 2000);
   EXPECT_NE(s.out.find("mm of the exact path"), std::string::npos);
-  EXPECT_NE(s.out.find("the label of one programmed segment in 128"), std::string::npos);
+  EXPECT_NE(s.out.find("the label of one programmed segment in 128 where labels do not cover one another"), std::string::npos);
   EXPECT_EQ(s.out.find("<title>"), std::string::npos);  // no per-element titles
   EXPECT_LT(s.out.size(), 8u << 20);
   Result small = sh(kCli + " run " + kExample + " --format svg");

@@ -400,10 +400,18 @@ void draw_reduced(std::ostream& out, const View& v, const Sketch& sketch,
                                                    : "stroke=\"#1f5fbf\" stroke-width=\"2\"";
     out << fmt::format("<path d=\"{}\" fill=\"none\" {}/>\n", d, style);
   }
-  if (!v.side)
-    for (const auto& [p, text] : labels)
-      out << fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#666\" font-size=\"10\">{}</text>\n", v.sx(p) + 3,
-                         v.sy(p) - 3, text);
+  // Labels where they do not cover one another: none within 40 px of one already drawn.
+  std::vector<std::pair<double, double>> drawn;
+  for (const auto& [p, text] : labels) {
+    if (v.side) break;
+    double x = v.sx(p), y = v.sy(p);
+    bool clear = std::none_of(drawn.begin(), drawn.end(),
+                              [&](const auto& q) { return std::hypot(q.first - x, q.second - y) < 40; });
+    if (!clear) continue;
+    drawn.emplace_back(x, y);
+    out << fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#666\" font-size=\"10\">{}</text>\n", x + 3, y - 3,
+                       text);
+  }
   for (const auto& var : variables)
     for (const auto& [p, name] : {std::pair{var.p_apr, "P3"}, std::pair{var.p_aep, "P4"}})
       out << fmt::format(
@@ -478,8 +486,7 @@ void SvgPicture::write(std::ostream& out, const std::string& title) const {
         v.pad, total - 30, m.sketch.points, m.sketch.bound());
     out << fmt::format(
         "<text x=\"{}\" y=\"{:.0f}\" fill=\"#b22222\">no arrows or element titles; the label of one programmed segment "
-        "in {}"
-        "{}.</text>\n",
+        "in {} where labels do not cover one another{}.</text>\n",
         v.pad, total - 14, m.label_stride,
         m.markers_dropped
             ? fmt::format("; {} SAR markers beyond the first {} not drawn", m.markers_dropped, m.limits.markers)
