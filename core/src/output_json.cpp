@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "cutcom/output.hpp"
+#include "text_append.hpp"
 
 namespace cutcom {
 
@@ -43,11 +44,6 @@ void append_number(std::string& out, double v) {
   char* end = nlohmann::detail::to_chars(digits, digits + sizeof digits, clean(v));
   out.append(digits, end);
 }
-void append_integer(std::string& out, std::int64_t v) {
-  char digits[24];
-  auto r = std::to_chars(digits, digits + sizeof digits, v);
-  out.append(digits, r.ptr);
-}
 void append_point(std::string& out, const PathPoint& p) {
   out += '[';
   append_number(out, p.x);
@@ -83,7 +79,7 @@ void JsonWriter::element(const PathElement& e) {
   const Origin& o = e.origin;
   append_key(b, "block");
   if (o.block)
-    append_integer(b, *o.block);
+    text::append_integer(b, *o.block);
   else
     b += "null";
   bool arc = e.type == ElementType::kArc;
@@ -101,25 +97,25 @@ void JsonWriter::element(const PathElement& e) {
     if (e.feed_type == FeedType::kG95) append_key(b, "feed_type"), b += "\"G95\"";
   }
   append_key(b, "line");
-  append_integer(b, o.line);
+  text::append_integer(b, o.line);
   append_key(b, "origin");
   b += '{';
   bool inserted = o.insert.kind != InsertKind::kNone;  // NC-CONTOUR-*: an element the reader inserted
   if (inserted && o.insert.kind != InsertKind::kTurn)
-    append_key(b, "corner_next_line"), append_integer(b, o.insert.next_line);
+    append_key(b, "corner_next_line"), text::append_integer(b, o.insert.next_line);
   if (inserted) append_key(b, "inserted"), append_string(b, insert_kind_name(o.insert.kind));
   append_key(b, "kind");
   append_string(b, origin_kind_name(o.kind));
   append_key(b, "line");
-  append_integer(b, o.line);
-  if (o.kind == OriginKind::kTransitionCircle) append_key(b, "next_line"), append_integer(b, o.next_line);
+  text::append_integer(b, o.line);
+  if (o.kind == OriginKind::kTransitionCircle) append_key(b, "next_line"), text::append_integer(b, o.next_line);
   if (o.sar != SarMove::kNone) append_key(b, "sar"), append_string(b, sar_move_name(o.sar));
   if (o.source != 0 && sources_) append_key(b, "source"), append_string(b, sources_(o.source));  // NC-PARAM-SUB-3
   text_.clear();
   append_description(text_, o);
   append_key(b, "text");
   append_string(b, text_);
-  if (inserted && o.insert.kind == InsertKind::kTurn) append_key(b, "turn"), append_integer(b, o.insert.turn);
+  if (inserted && o.insert.kind == InsertKind::kTurn) append_key(b, "turn"), text::append_integer(b, o.insert.turn);
   b += '}';
   append_key(b, "rapid");
   b += e.rapid ? "true" : "false";

@@ -46,25 +46,39 @@ std::string arc_path(const View& v, const PathPoint& s, const PathPoint& e, cons
                      sweep > M_PI ? 1 : 0, ccw ? 0 : 1, v.sx(e), v.sy(e));
 }
 
-// A circle of the plane (a helix if the applicate moves) seen from the side: sampled.
-std::string helix_path(const View& v, const PathElement& e) {
-  const PlaneAxes& p = v.plane;
-  auto at = [&](const PathPoint& q, int i) { return View::pick(q, i); };
-  double ca = at(e.center, p.abscissa), cb = at(e.center, p.ordinate);
-  double a0 = std::atan2(at(e.start, p.ordinate) - cb, at(e.start, p.abscissa) - ca);
-  double a1 = std::atan2(at(e.end, p.ordinate) - cb, at(e.end, p.abscissa) - ca);
-  double r = std::hypot(at(e.start, p.ordinate) - cb, at(e.start, p.abscissa) - ca);
-  double sweep = e.ccw ? a1 - a0 : a0 - a1;
-  while (sweep <= 1e-12) sweep += 2 * M_PI;
-  double h0 = at(e.start, p.applicate), h1 = at(e.end, p.applicate);
-  std::string d = fmt::format("M {:.3f} {:.3f}", v.sx(e.start), v.sy(e.start));
-  const int n = 48;
-  for (int k = 1; k <= n; ++k) {
-    double f = static_cast<double>(k) / n, ang = a0 + (e.ccw ? 1 : -1) * sweep * f;
+// A circle of a plane (a helix if the applicate moves), as points along it.
+struct PlaneArc {
+  PlaneAxes p;
+  double ca, cb, a0, r, sweep, h0, h1;
+  bool ccw;
+  PlaneArc(const PathPoint& s, const PathPoint& e, const PathPoint& centre, bool counter, PlaneAxes axes)
+      : p(axes), ccw(counter) {
+    auto at = View::pick;
+    ca = at(centre, p.abscissa), cb = at(centre, p.ordinate);
+    a0 = std::atan2(at(s, p.ordinate) - cb, at(s, p.abscissa) - ca);
+    double a1 = std::atan2(at(e, p.ordinate) - cb, at(e, p.abscissa) - ca);
+    r = std::hypot(at(s, p.ordinate) - cb, at(s, p.abscissa) - ca);
+    sweep = ccw ? a1 - a0 : a0 - a1;
+    while (sweep <= 1e-12) sweep += 2 * M_PI;
+    h0 = at(s, p.applicate), h1 = at(e, p.applicate);
+  }
+  PathPoint at(double f) const {  // f in [0, 1] of the sweep
+    double ang = a0 + (ccw ? 1 : -1) * sweep * f;
     PathPoint q;
     double* c[3] = {&q.x, &q.y, &q.z};
     *c[p.abscissa] = ca + r * std::cos(ang), *c[p.ordinate] = cb + r * std::sin(ang),
     *c[p.applicate] = h0 + (h1 - h0) * f;
+    return q;
+  }
+};
+
+// A circle of the plane (a helix if the applicate moves) seen from the side: sampled.
+std::string helix_path(const View& v, const PathElement& e) {
+  PlaneArc arc(e.start, e.end, e.center, e.ccw, v.plane);
+  std::string d = fmt::format("M {:.3f} {:.3f}", v.sx(e.start), v.sy(e.start));
+  const int n = 48;
+  for (int k = 1; k <= n; ++k) {
+    PathPoint q = arc.at(static_cast<double>(k) / n);
     d += fmt::format(" L {:.3f} {:.3f}", v.sx(q), v.sy(q));
   }
   return d;
@@ -73,18 +87,18 @@ std::string helix_path(const View& v, const PathElement& e) {
 }  // namespace
 
 // The programmed contour, block by block (the SAR contour is generated, so drawn as path).
-void ProgrammedContour::add(const Block& b, std::vector<ProgrammedSegment>& out) {
+std::optional<ProgrammedSegment> ProgrammedContour::add(const Block& b) {
   if (b.is_sar_block()) {  // its contour is generated, not programmed (drawn as path)
     p4_pending_ = !b.programs_plane_axis() &&
                   (*b.words.sar_contour == SarContour::kG147 || *b.words.sar_contour == SarContour::kG247 ||
                    *b.words.sar_contour == SarContour::kG347);
-    return;
+    return std::nullopt;
   }
   if (p4_pending_ && b.moves_in_plane()) {  // SAR-P4-2: the next traversing block's motion is the SAR element
     p4_pending_ = false;
-    return;
+    return std::nullopt;
   }
-  if (b.start == b.end && !(b.is_arc() && b.centre)) return;
+  if (b.start == b.end && !(b.is_arc() && b.centre)) return std::nullopt;
   ProgrammedSegment s;
   s.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
   s.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
@@ -96,7 +110,7 @@ void ProgrammedContour::add(const Block& b, std::vector<ProgrammedSegment>& out)
     s.ccw = b.state.motion == Motion::kArcCcw;
     s.center = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
   }
-  out.push_back(std::move(s));
+  return s;
 }
 
 namespace {
@@ -225,26 +239,12 @@ struct Sketch {
            Plane plane) {
     if (!centre) return add_point(channel, style, s, e);
     // An arc of the plane (a helix if the applicate moves): points whose chords stay within tau.
-    PlaneAxes pa = plane_axes(plane);
-    auto at = [](const PathPoint& q, int i) { return i == 0 ? q.x : i == 1 ? q.y : q.z; };
-    double ca = at(*centre, pa.abscissa), cb = at(*centre, pa.ordinate);
-    double a0 = std::atan2(at(s, pa.ordinate) - cb, at(s, pa.abscissa) - ca);
-    double a1 = std::atan2(at(e, pa.ordinate) - cb, at(e, pa.abscissa) - ca);
-    double r = std::hypot(at(s, pa.ordinate) - cb, at(s, pa.abscissa) - ca);
-    double sweep = ccw ? a1 - a0 : a0 - a1;
-    while (sweep <= 1e-12) sweep += 2 * M_PI;
-    double step = r > tau ? 2 * std::acos(1 - tau / r) : sweep;
-    int n = static_cast<int>(std::clamp(std::ceil(sweep / std::max(step, 1e-9)), 1.0, 4096.0));
-    double h0 = at(s, pa.applicate), h1 = at(e, pa.applicate);
+    PlaneArc arc(s, e, *centre, ccw, plane_axes(plane));
+    double step = arc.r > tau ? 2 * std::acos(1 - tau / arc.r) : arc.sweep;
+    int n = static_cast<int>(std::clamp(std::ceil(arc.sweep / std::max(step, 1e-9)), 1.0, 4096.0));
     PathPoint from = s;
     for (int k = 1; k <= n; ++k) {
-      PathPoint q = e;
-      if (k < n) {
-        double f = static_cast<double>(k) / n, ang = a0 + (ccw ? 1 : -1) * sweep * f;
-        double* c3[3] = {&q.x, &q.y, &q.z};
-        *c3[pa.abscissa] = ca + r * std::cos(ang), *c3[pa.ordinate] = cb + r * std::sin(ang),
-        *c3[pa.applicate] = h0 + (h1 - h0) * f;
-      }
+      PathPoint q = k < n ? arc.at(static_cast<double>(k) / n) : e;
       add_point(channel, style, from, q);
       from = strokes[static_cast<std::size_t>(open[static_cast<std::size_t>(channel)])].points.back();
     }
@@ -328,18 +328,13 @@ SvgPicture::~SvgPicture() = default;
 
 void SvgPicture::programmed(const Block& b) {
   Impl& m = *impl_;
-  std::vector<ProgrammedSegment> added;
-  m.contour.add(b, added);
-  for (auto& s : added) {
-    ++m.segments;
-    if (m.reduced) {
-      m.add_programmed(s, b.state.plane);
-      continue;
-    }
-    m.programmed.push_back(std::move(s));
-    m.planes.push_back(b.state.plane);
-    if (m.programmed.size() > m.limits.full_elements) m.reduce();
-  }
+  std::optional<ProgrammedSegment> s = m.contour.add(b);
+  if (!s) return;
+  ++m.segments;
+  if (m.reduced) return m.add_programmed(*s, b.state.plane);
+  m.programmed.push_back(std::move(*s));
+  m.planes.push_back(b.state.plane);
+  if (m.programmed.size() > m.limits.full_elements) m.reduce();
 }
 
 void SvgPicture::element(const PathElement& e) {

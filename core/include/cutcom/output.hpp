@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -78,7 +79,7 @@ struct ProgrammedSegment {
 // as path).
 class ProgrammedContour {
  public:
-  void add(const Block& b, std::vector<ProgrammedSegment>& out);
+  std::optional<ProgrammedSegment> add(const Block& b);  // none: the block draws nothing
 
  private:
   bool p4_pending_ = false;  // SAR-P4-2: the next traversing block's motion is the SAR element
