@@ -341,6 +341,51 @@ std::string folder_with(const std::string& name, const std::vector<std::pair<std
   return dir.string();
 }
 
+// covers: NC-PARAM-EXPR-4
+TEST(Parametric, RecordedLinesRunAsTheirText) {
+  // Loop passes and calls run their lines from what the first run recorded: the same blocks, in a
+  // subprogram called with other arguments and repeated (P), as when every line is read again.
+  std::string dir = folder_with("recorded", {{"STEP.SPF",
+                                              "PROC STEP(REAL WW, INT NN)\nDEF INT KS\nDEF REAL HH=WW/2\n"
+                                              "WHILE KS<NN\n  KS=KS+1\n  HH=HH*(-1)\n  G1 X=AC(WW*KS) Y=HH+KS MOD 2\n  "
+                                              "R5=R5-KS DIV 2\nENDWHILE\nRET\n"}});
+  const std::string program =
+      "DEF INT KK\nDEF REAL XX=0.1\nDEF BOOL BB\nN10 G1 X0 Y0 F100\n"
+      "WHILE KK<4\n  KK=KK+1.5\n  XX=XX+0.2\n  BB=XX>=0.5\n  G1 X=-XX*3 Y=KK Z=BB ; comment\n"
+      "  Y=R5\nENDWHILE\nSTEP(2.5, 3)\nSTEP(4, 2) P2\nFOR KK=1 TO 3\n  X=KK*KK-1\nENDFOR\nM30\n";
+  auto blocks = [&](const std::string& text, std::size_t cache) {
+    std::istringstream in(text);
+    ProgramReader reader(in);
+    InterpreterLimits limits;
+    limits.line_cache_bytes = cache;
+    reader.set_limits(limits);
+    reader.set_search_path({dir});
+    std::vector<std::string> ends;
+    Block b;
+    try {
+      while (reader.next(b))
+        ends.push_back(std::to_string(b.words.line) + ":" + b.end.x.to_string() + "," + b.end.y.to_string() + "," +
+                       b.end.z.to_string());
+    } catch (const InputError& e) {
+      ends.push_back(std::string("error ") + e.what());
+    }
+    return ends;
+  };
+  std::vector<std::string> recorded = blocks(program, InterpreterLimits{}.line_cache_bytes);
+  // N10; two WHILE passes (INT KK: 1.5 and 3.5 round to 2 and 4) of two blocks; STEP three times;
+  // STEP twice, run twice (P2); three FOR passes; M30.
+  EXPECT_EQ(recorded.size(), 1u + 2 * 2 + 3 + 2 * 2 + 3 + 1);
+  EXPECT_EQ(recorded[3], "9:-1.5,4,1");  // XX = 0.5 exactly: BB TRUE
+  EXPECT_EQ(recorded[7], "12:7.5,-0.25,1");
+  EXPECT_EQ(recorded, blocks(program, 0));
+  // An error in a later pass is the error of the text: a division by zero in the third pass.
+  const std::string failing = "DEF INT KK\nWHILE KK<5\n  KK=KK+1\n  G1 X=10/(3-KK) F100\nENDWHILE\nM30\n";
+  std::vector<std::string> stopped = blocks(failing, InterpreterLimits{}.line_cache_bytes);
+  ASSERT_EQ(stopped.size(), 3u);
+  EXPECT_NE(stopped.back().find("division by zero"), std::string::npos) << stopped.back();
+  EXPECT_EQ(stopped, blocks(failing, 0));
+}
+
 RunResult run_in(const std::string& engine, const std::string& text, const std::string& dir, bool* ok) {
   std::istringstream in(text);
   MachineData md;

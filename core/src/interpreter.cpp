@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "interpreter_lookup.hpp"
+#include "interpreter_record.hpp"
 #include "interpreter_text.hpp"
 #include "nc_expression.hpp"
 
@@ -26,12 +27,16 @@ Interpreter::Interpreter(std::istream& in, SystemValues* system, InterpreterLimi
   cx().stream_at = cx().offset;
 }
 
+void LineRecordDeleter::operator()(LineRecord* r) const { delete r; }
+
 bool Interpreter::getline(std::string& text) {
   Context& c = cx();
+  last_cached_ = nullptr;
   c.line_start = c.offset;
   if (!c.cache->lines.empty()) {
     auto hit = c.cache->lines.find(c.offset);
     if (hit != c.cache->lines.end()) {
+      last_cached_ = &hit->second;
       text = hit->second.text;
       c.offset = hit->second.next;
       ++c.line;
@@ -57,7 +62,7 @@ bool Interpreter::getline(std::string& text) {
   ++c.line;
   if ((control_flow_ || stack_.size() > 1) && cached_bytes_ + text.size() <= limits_.line_cache_bytes) {
     cached_bytes_ += text.size() + sizeof(CachedLine) + 32;  // with the table's own cost
-    c.cache->lines.emplace(c.line_start, CachedLine{text, c.offset});
+    last_cached_ = &c.cache->lines.emplace(c.line_start, CachedLine{text, c.offset, nullptr}).first->second;
   }
   return true;
 }
@@ -118,13 +123,22 @@ bool Interpreter::next(std::string& text, int& line) {
         end_section_pass();
         continue;
       }
-      if (!getline(raw_)) {
+      bool read = getline(raw_);
+      current_cached_ = last_cached_;
+      if (!read) {
         if (!cx().frames.empty())
           throw InputError(cx().line, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");
         if (!cx().open_ifs.empty()) throw InputError(cx().open_ifs.back(), 1, "IF without its ENDIF");
         if (stack_.size() == 1) return false;
         leave_subprogram();  // NC-PARAM-SUB-2: the end of the file returns
         continue;
+      }
+      // NC-PARAM-EXPR-4: a line of assignments and words that ran before runs from its plan.
+      if (current_cached_ && current_cached_->record && current_cached_->record->plan &&
+          run_plan(*current_cached_->record, text)) {
+        if (text.empty()) continue;
+        line = stack_.size() == 1 ? cx().line : stack_.front().line;
+        return true;
       }
       if (stack_.size() == 1 && !maybe_parametric(raw_)) {
         text.swap(raw_);
@@ -160,6 +174,14 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
   }
   std::size_t rest;
   std::string first = first_word(s, rest);
+  // NC-PARAM-EXPR-4: the first run of a cached line records its plan, if it has one.
+  std::optional<LinePlan> plan;
+  LineRecord* record = nullptr;
+  if (current_cached_ && &s == &raw_ && label.empty() && first != "MCALL") {
+    record = &record_of(*current_cached_);
+    if (!record->plan_tried) plan.emplace();
+    record->plan_tried = true;
+  }
   if (statement(first, s, rest)) {  // a statement line yields no block
     out.clear();
     return;
@@ -207,6 +229,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     // MSG(expression): the message as the operator would read it.
     if (n == "MSG" && after < s.size() && s[after] == '(' && skip_space(s, after + 1) < s.size() &&
         s[skip_space(s, after + 1)] != ')') {
+      plan.reset();
       ExpressionParser p(s, after + 1, cx().line, lookup);
       NcValue text = p.parse();
       std::size_t e = skip_space(s, p.position());
@@ -222,6 +245,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     }
     // Jumps end a block's words (NC-PARAM-FLOW-1).
     if (n == "GOTOF" || n == "GOTOB" || n == "GOTO" || n == "GOTOC") {
+      plan.reset();
       std::size_t t = skip_space(s, j);
       std::size_t te = name_end(s, t);
       std::string target = upper_text(s.substr(t, te - t));
@@ -237,6 +261,8 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     bool indexed = k < s.size() && s[k] == '[';
     bool r_indexed = indexed && n == "R";
     bool variable = is_r_parameter(n) || r_indexed || find_variable(n) != nullptr;
+    if (indexed || n[0] == '$') plan.reset();
+    if (plan && !variable) plan->words.push_back(n);
     if (n == "$P_UIFR" && after < s.size() && s[after] == '[') {  // NC-PARAM-SYS-2
       i = settable_offset(s, after);
       continue;
@@ -304,8 +330,20 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     }
     std::size_t v = skip_space(s, k + 1);
     if (variable) {  // NC-PARAM-VAR-*: an assignment, run now; the reader never sees it
-      ExpressionParser p(s, v, cx().line, lookup);
-      NcValue value = p.parse();
+      std::size_t value_end;
+      int recorded;
+      NcValue value = expression(s, v, lookup, value_end, &recorded);
+      if (recorded < 0 || r_indexed || (is_r_parameter(n) && r_number(n) >= kRParameters)) plan.reset();
+      if (plan) {
+        bool r = is_r_parameter(n);
+        plan->steps.push_back({r ? LinePlan::Step::Kind::kAssignR : LinePlan::Step::Kind::kAssignVariable,
+                               recorded,
+                               r ? r_number(n) : 0,
+                               {},
+                               start,
+                               v});
+        if (!r) plan->names.push_back(n);
+      }
       if (r_indexed) {
         r_[lookup.r_index(indices[0], start)] = value.type == NcValue::Type::kString ? 0 : value.number;
         if (value.type == NcValue::Type::kString)
@@ -321,7 +359,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
         Variable& var = *find_variable(n);
         store(var, lookup.offset(n, var, indices, start), value, start);
       }
-      i = p.position();
+      i = value_end;
       continue;
     }
     // An address with a value: a literal is copied as written (exact); an expression is
@@ -354,20 +392,40 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       out += wrapper.empty() ? value : wrapper + "(" + value + ")";
       end = wrapper.empty() ? *lit : skip_space(s, *lit) + 1;
     } else {
-      ExpressionParser p(s, v, cx().line, lookup);
-      NcValue value = p.parse();
-      end = p.position();
+      int recorded;
+      NcValue value = expression(s, v, lookup, end, &recorded);
       if (!wrapper.empty()) {
         end = skip_space(s, end);
         if (end >= s.size() || s[end] != ')') throw InputError(cx().line, static_cast<int>(end) + 1, "')' expected");
         ++end;
       }
       std::string t = grid_text(value, cx().line, v);
+      if (recorded < 0) plan.reset();
+      if (plan) {
+        std::size_t at = out.size() + (wrapper.empty() ? 0 : wrapper.size() + 1);
+        plan->steps.push_back({LinePlan::Step::Kind::kValue, recorded, 0, {}, start, v, at, t.size()});
+      }
       out += wrapper.empty() ? t : wrapper + "(" + t + ")";
     }
     i = end;
   }
   if (!words) out.clear();
+  if (plan) {  // the block's text without its values, and where they go
+    std::size_t from = 0;
+    for (LinePlan::Step& step : plan->steps) {
+      if (step.kind != LinePlan::Step::Kind::kValue) continue;
+      plan->text.append(out, from, step.text_at - from);
+      from = step.text_at + step.length;
+      step.text_at = plan->text.size();
+    }
+    plan->text.append(out, from, std::string::npos);
+    std::size_t bytes = sizeof(LinePlan) + plan->text.size() + plan->steps.size() * sizeof(LinePlan::Step) +
+                        32 * (plan->names.size() + plan->words.size());
+    if (cached_bytes_ + bytes <= limits_.line_cache_bytes) {
+      cached_bytes_ += bytes;
+      record->plan = std::move(plan);
+    }
+  }
 }
 
 // expr, expr, … up to `close`, from i (just after the opening bracket); i ends after `close`.

@@ -233,6 +233,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
 
 void Interpreter::enter(const std::string& file, std::vector<std::optional<NcValue>> args,
                         std::vector<std::string> names, int passes, std::size_t word) {
+  ++variables_epoch_;  // NC-PARAM-EXPR-4: records resolve their names again
   if (stack_.size() >= kMaxLevels)
     throw InputError(
         cx().line, static_cast<int>(word) + 1,
@@ -328,6 +329,7 @@ void Interpreter::load_definitions(std::istream& in) {
 // given the call's values (left out: 0); a VAR parameter is written back to the caller's variable
 // when the subprogram returns.
 void Interpreter::procedure(std::string_view s, std::size_t i) {
+  ++variables_epoch_;  // NC-PARAM-EXPR-4: records resolve their names again
   std::size_t e = name_end(s, skip_space(s, i));
   i = skip_space(s, e);
   struct Parameter {
@@ -489,6 +491,7 @@ void Interpreter::procedure(std::string_view s, std::size_t i) {
 }
 
 void Interpreter::leave_subprogram() {
+  ++variables_epoch_;  // NC-PARAM-EXPR-4: records resolve their names again
   Context& c = cx();
   // VAR parameters: the caller's variables take the values.
   std::vector<std::pair<std::string, Variable>> results;

@@ -15,6 +15,7 @@ using namespace interpreter_text;
 
 // NC-PARAM-VAR-2: DEF type name[dims][=value], …
 void Interpreter::define(std::string_view s, std::size_t i, std::map<std::string, Variable>& into) {
+  ++variables_epoch_;  // NC-PARAM-EXPR-4: records resolve their names again
   InterpreterLookup lookup(*this, cx().line);
   i = skip_space(s, i);
   std::size_t e = name_end(s, i);

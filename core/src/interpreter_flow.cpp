@@ -17,9 +17,8 @@ using namespace interpreter_text;
 bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t rest) {
   InterpreterLookup lookup(*this, cx().line);
   auto condition = [&](std::size_t from, std::size_t& end) {
-    ExpressionParser p(s, from, cx().line, lookup);
-    NcValue v = p.parse();
-    end = skip_space(s, p.position());
+    NcValue v = expression(s, from, lookup, end);
+    end = skip_space(s, end);
     if (v.type == NcValue::Type::kString)
       throw InputError(cx().line, static_cast<int>(from) + 1, "a condition must be a number or BOOL, not a string");
     return v.number != 0;

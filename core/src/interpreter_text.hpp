@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -100,9 +101,11 @@ inline std::string grid_text(const NcValue& v, int line, std::size_t at) {
   if (std::fabs(v.number) >= 1e12)
     throw InputError(line, static_cast<int>(at) + 1,
                      fmt::format("the value {} is out of the range of a position", v.number));
-  std::string t = fmt::format("{:.9f}", v.number);
-  while (t.back() == '0') t.pop_back();
-  if (t.back() == '.') t.pop_back();
+  char buffer[40];  // |value| < 1e12: at most 13 digits, the point and nine places
+  char* e = std::to_chars(buffer, buffer + sizeof buffer, v.number, std::chars_format::fixed, 9).ptr;
+  while (e[-1] == '0') --e;
+  if (e[-1] == '.') --e;
+  std::string t(buffer, e);
   if (t == "-0") t = "0";
   return t;
 }

@@ -85,6 +85,7 @@ NcValue ExpressionParser::chain() {
     skip_space();
     std::size_t at = i_;
     if (!symbol(":")) break;
+    beyond_record();
     NcValue b = comparison();
     if (b.type != NcValue::Type::kFrame)
       throw InputError(line_, static_cast<int>(at) + 1, "':' chains frames: a frame is needed after it");
@@ -149,7 +150,8 @@ NcValue ExpressionParser::frame_function(const std::string& n, std::size_t at) {
     for (std::size_t k = 1; k < words.size();) {
       std::size_t e = words.find(' ', k);
       if (e == std::string::npos) e = words.size();
-      out += (out.empty() ? "" : "\n") + std::string(block) + " " + words.substr(k, e - k);
+      if (!out.empty()) out += '\n';
+      out.append(block).append(" ").append(words, k, e - k);
       k = e + 1;
     }
     return NcValue::frame(out);
@@ -178,32 +180,38 @@ NcValue ExpressionParser::comparison() {
       op = 6;
     if (!op) return a;
     NcValue b = concatenation();
-    if (a.type == NcValue::Type::kFrame || b.type == NcValue::Type::kFrame)
-      throw InputError(line_, static_cast<int>(at) + 1, "frames are not compared");
-    bool r;
-    if (a.type == NcValue::Type::kString || b.type == NcValue::Type::kString) {
-      if (a.type != b.type) throw InputError(line_, static_cast<int>(at) + 1, "a string is compared with a number");
-      int c = a.text.compare(b.text);
-      r = op == 1 ? c == 0 : op == 2 ? c != 0 : op == 3 ? c >= 0 : op == 4 ? c <= 0 : op == 5 ? c > 0 : c < 0;
-    } else {
-      // NC-PARAM-EXPR-3: equality of REALs is relative, to 1e-12 of the larger (PGA19 p.444).
-      double x = a.number, y = b.number;
-      bool equal = x == y || std::fabs(x - y) <= 1e-12 * std::max(std::fabs(x), std::fabs(y));
-      r = op == 1   ? equal
-          : op == 2 ? !equal
-          : op == 3 ? (equal || x > y)
-          : op == 4 ? (equal || x < y)
-          : op == 5 ? (!equal && x > y)
-                    : (!equal && x < y);
-    }
-    a = NcValue::boolean(r);
+    a = nc_compare(a, b, op, line_, at);
+    emit({CompiledExpression::Code::kCompare, op, at, 0, {}});
   }
+}
+
+NcValue nc_compare(const NcValue& a, const NcValue& b, int op, int line, std::size_t at) {
+  if (a.type == NcValue::Type::kFrame || b.type == NcValue::Type::kFrame)
+    throw InputError(line, static_cast<int>(at) + 1, "frames are not compared");
+  bool r;
+  if (a.type == NcValue::Type::kString || b.type == NcValue::Type::kString) {
+    if (a.type != b.type) throw InputError(line, static_cast<int>(at) + 1, "a string is compared with a number");
+    int c = a.text.compare(b.text);
+    r = op == 1 ? c == 0 : op == 2 ? c != 0 : op == 3 ? c >= 0 : op == 4 ? c <= 0 : op == 5 ? c > 0 : c < 0;
+  } else {
+    // NC-PARAM-EXPR-3: equality of REALs is relative, to 1e-12 of the larger (PGA19 p.444).
+    double x = a.number, y = b.number;
+    bool equal = x == y || std::fabs(x - y) <= 1e-12 * std::max(std::fabs(x), std::fabs(y));
+    r = op == 1   ? equal
+        : op == 2 ? !equal
+        : op == 3 ? (equal || x > y)
+        : op == 4 ? (equal || x < y)
+        : op == 5 ? (!equal && x > y)
+                  : (!equal && x < y);
+  }
+  return NcValue::boolean(r);
 }
 
 // Level 10: << joins strings (numbers are written as text).
 NcValue ExpressionParser::concatenation() {
   NcValue a = logical_or();
   while (symbol("<<")) {
+    beyond_record();
     NcValue b = logical_or();
     if (a.type == NcValue::Type::kFrame || b.type == NcValue::Type::kFrame) fail("a frame is not text");
     a = NcValue::string(text_of(a) + text_of(b));
@@ -223,6 +231,7 @@ NcValue ExpressionParser::logical_or() {
   while (true) {
     std::size_t at = i_;
     if (!keyword("OR")) return a;
+    beyond_record();
     NcValue b = logical_xor();
     a = NcValue::boolean(truth(a, line_, at) || truth(b, line_, at));
   }
@@ -232,6 +241,7 @@ NcValue ExpressionParser::logical_xor() {
   while (true) {
     std::size_t at = i_;
     if (!keyword("XOR")) return a;
+    beyond_record();
     NcValue b = logical_and();
     a = NcValue::boolean(truth(a, line_, at) != truth(b, line_, at));
   }
@@ -241,6 +251,7 @@ NcValue ExpressionParser::logical_and() {
   while (true) {
     std::size_t at = i_;
     if (!keyword("AND")) return a;
+    beyond_record();
     NcValue b = bit_or();
     a = NcValue::boolean(truth(a, line_, at) && truth(b, line_, at));
   }
@@ -250,6 +261,7 @@ NcValue ExpressionParser::bit_or() {
   while (true) {
     std::size_t at = i_;
     if (!keyword("B_OR")) return a;
+    beyond_record();
     NcValue b = bit_xor();
     a = NcValue::integer(static_cast<double>(as_int(a, line_, at) | as_int(b, line_, at)));
   }
@@ -259,6 +271,7 @@ NcValue ExpressionParser::bit_xor() {
   while (true) {
     std::size_t at = i_;
     if (!keyword("B_XOR")) return a;
+    beyond_record();
     NcValue b = bit_and();
     a = NcValue::integer(static_cast<double>(as_int(a, line_, at) ^ as_int(b, line_, at)));
   }
@@ -268,6 +281,7 @@ NcValue ExpressionParser::bit_and() {
   while (true) {
     std::size_t at = i_;
     if (!keyword("B_AND")) return a;
+    beyond_record();
     NcValue b = sum();
     a = NcValue::integer(static_cast<double>(as_int(a, line_, at) & as_int(b, line_, at)));
   }
@@ -288,9 +302,14 @@ NcValue ExpressionParser::sum() {
     bool plus = symbol("+");
     if (!plus && !symbol("-")) return a;
     NcValue b = product();
-    double x = as_number(a, line_, at), y = as_number(b, line_, at);
-    a = arithmetic(a, b, plus ? x + y : x - y);
+    a = nc_sum(a, b, plus, line_, at);
+    emit({CompiledExpression::Code::kSum, plus ? 1 : 0, at, 0, {}});
   }
+}
+
+NcValue nc_sum(const NcValue& a, const NcValue& b, bool plus, int line, std::size_t at) {
+  double x = as_number(a, line, at), y = as_number(b, line, at);
+  return arithmetic(a, b, plus ? x + y : x - y);
 }
 
 NcValue ExpressionParser::product() {
@@ -300,20 +319,25 @@ NcValue ExpressionParser::product() {
     int op = symbol("*") ? 1 : symbol("/") ? 2 : keyword("DIV") ? 3 : keyword("MOD") ? 4 : 0;
     if (!op) return a;
     NcValue b = unary();
-    double x = as_number(a, line_, at), y = as_number(b, line_, at);
-    if (op == 1) {
-      a = arithmetic(a, b, x * y);
-      continue;
-    }
-    // NC-PARAM-ERR-1: division by zero stops the program (alarm 14051 on the control).
-    if (y == 0) throw InputError(line_, static_cast<int>(at) + 1, "division by zero");
-    if (op == 2)
-      a = NcValue::real(x / y);
-    else if (op == 3)
-      a = NcValue::integer(std::trunc(x / y));  // DIV: the whole part
-    else
-      a = arithmetic(a, b, std::fmod(x, y));  // MOD: the remainder
+    a = nc_product(a, b, op, line_, at);
+    emit({CompiledExpression::Code::kProduct, op, at, 0, {}});
   }
+}
+
+NcValue nc_product(const NcValue& a, const NcValue& b, int op, int line, std::size_t at) {
+  double x = as_number(a, line, at), y = as_number(b, line, at);
+  if (op == 1) return arithmetic(a, b, x * y);
+  // NC-PARAM-ERR-1: division by zero stops the program (alarm 14051 on the control).
+  if (y == 0) throw InputError(line, static_cast<int>(at) + 1, "division by zero");
+  if (op == 2) return NcValue::real(x / y);
+  if (op == 3) return NcValue::integer(std::trunc(x / y));  // DIV: the whole part
+  return arithmetic(a, b, std::fmod(x, y));                 // MOD: the remainder
+}
+
+NcValue nc_negate(NcValue v, int line, std::size_t at) {
+  v.number = -as_number(v, line, at);
+  if (v.type == NcValue::Type::kBool) v.type = NcValue::Type::kInt;
+  return v;
 }
 
 NcValue ExpressionParser::unary() {
@@ -323,12 +347,11 @@ NcValue ExpressionParser::unary() {
     int& d;
     ~Leave() { --d; }
   } leave{unary_depth_};
-  if (keyword("NOT")) return NcValue::boolean(!truth(unary(), line_, at));
-  if (keyword("B_NOT")) return NcValue::integer(static_cast<double>(~as_int(unary(), line_, at)));
+  if (keyword("NOT")) return beyond_record(), NcValue::boolean(!truth(unary(), line_, at));
+  if (keyword("B_NOT")) return beyond_record(), NcValue::integer(static_cast<double>(~as_int(unary(), line_, at)));
   if (symbol("-")) {
-    NcValue v = unary();
-    v.number = -as_number(v, line_, at);
-    if (v.type == NcValue::Type::kBool) v.type = NcValue::Type::kInt;
+    NcValue v = nc_negate(unary(), line_, at);
+    emit({CompiledExpression::Code::kNegate, 0, at, 0, {}});
     return v;
   }
   if (symbol("+")) return unary();
@@ -378,18 +401,24 @@ NcValue ExpressionParser::primary() {
     return v;
   }
   if (c == '"') {
+    beyond_record();
     std::size_t end = s_.find('"', i_ + 1);
     if (end == std::string_view::npos) fail("the string has no closing '\"'");
     NcValue v = NcValue::string(std::string(s_.substr(i_ + 1, end - i_ - 1)));
     i_ = end + 1;
     return v;
   }
-  if (is_digit(c) || c == '.') return number();
+  if (is_digit(c) || c == '.') {
+    NcValue v = number();
+    emit({CompiledExpression::Code::kConstant, 0, at, 0, v});
+    return v;
+  }
   if (!is_letter(c) && c != '$' && c != '_') fail(fmt::format("unexpected character '{}'", c));
   std::string n = name();
   skip_space();
   bool call = i_ < s_.size() && s_[i_] == '(';
   bool indexed = i_ < s_.size() && s_[i_] == '[';
+  if (call || indexed) beyond_record();
   if (call) {
     ++i_;
     if (n == "CTRANS" || n == "CROT" || n == "CSCALE" || n == "CMIRROR" || n == "CRPL") return frame_function(n, at);
@@ -421,9 +450,66 @@ NcValue ExpressionParser::primary() {
       indices = arguments(']');
     }
   }
-  if (n == "TRUE") return NcValue::boolean(true);
-  if (n == "FALSE") return NcValue::boolean(false);
-  return lookup_.read(n, indices, at);
+  if (n == "TRUE" || n == "FALSE") {
+    NcValue v = NcValue::boolean(n == "TRUE");
+    emit({CompiledExpression::Code::kConstant, 0, at, 0, v});
+    return v;
+  }
+  NcValue v = lookup_.read(n, indices, at);
+  if (record_ && !indexed) {
+    if (n[0] == '$') {
+      beyond_record();
+    } else if (interpreter_text::is_r_parameter(n)) {  // read() raised the error of a number too large
+      emit({CompiledExpression::Code::kRParameter, 0, at, interpreter_text::r_number(n), {}});
+    } else {
+      record_->names.push_back(n);
+      emit({CompiledExpression::Code::kVariable, 0, at, static_cast<int>(record_->names.size() - 1), {}});
+    }
+  }
+  return v;
+}
+
+NcValue CompiledExpression::evaluate(const NcValue* const* variables, const std::map<int, double>& r, int line) const {
+  // A stack as deep as the expression; most loop expressions need a few entries.
+  NcValue small[8];
+  std::vector<NcValue> large;
+  NcValue* stack = small;
+  if (ops.size() > 8) {
+    large.resize(ops.size());
+    stack = large.data();
+  }
+  std::size_t top = 0;
+  for (const Op& op : ops) {
+    switch (op.code) {
+      case Code::kConstant:
+        stack[top++] = op.constant;
+        break;
+      case Code::kVariable:
+        stack[top++] = *variables[op.index];
+        break;
+      case Code::kRParameter: {
+        auto it = r.find(op.index);
+        stack[top++] = NcValue::real(it == r.end() ? 0.0 : it->second);
+        break;
+      }
+      case Code::kNegate:
+        stack[top - 1] = nc_negate(std::move(stack[top - 1]), line, op.at);
+        break;
+      case Code::kSum:
+        stack[top - 2] = nc_sum(stack[top - 2], stack[top - 1], op.operation == 1, line, op.at);
+        --top;
+        break;
+      case Code::kProduct:
+        stack[top - 2] = nc_product(stack[top - 2], stack[top - 1], op.operation, line, op.at);
+        --top;
+        break;
+      case Code::kCompare:
+        stack[top - 2] = nc_compare(stack[top - 2], stack[top - 1], op.operation, line, op.at);
+        --top;
+        break;
+    }
+  }
+  return std::move(stack[0]);
 }
 
 // Numbers: digits with a decimal point, an exponent written EX (10EX-5).

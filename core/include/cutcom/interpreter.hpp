@@ -20,6 +20,10 @@
 namespace cutcom {
 
 class InterpreterLookup;
+struct LineRecord;  // interpreter_record.hpp
+struct LineRecordDeleter {
+  void operator()(LineRecord* r) const;
+};
 
 // A value of the NC language: REAL (binary64, as the control computes), INT, BOOL, STRING or
 // FRAME.
@@ -103,12 +107,13 @@ class Interpreter {
   // Exposed for tests: evaluates an expression in the current variables.
   NcValue evaluate(std::string_view expression, int line = 0);
 
- private:
   struct Variable {
     NcValue::Type type = NcValue::Type::kReal;
     std::vector<int> dims;  // empty: a scalar
     std::vector<NcValue> values;
   };
+
+ private:
   struct Frame {  // an open loop (NC-PARAM-FLOW-3/4)
     enum class Kind { kWhile, kFor, kLoop, kRepeat } kind;
     std::streamoff body;   // where its body starts (WHILE: its own line, decided again)
@@ -130,7 +135,26 @@ class Interpreter {
   struct CachedLine {
     std::string text;
     std::streamoff next;  // offset of the line after it
+    // NC-PARAM-EXPR-4: its expressions as recorded when the line first ran, and, for a line of
+    // assignments and words, its plan (interpreter_record.hpp).
+    std::unique_ptr<LineRecord, LineRecordDeleter> record;
   };
+  CachedLine* last_cached_ = nullptr;     // the cached line getline() returned last (or null)
+  CachedLine* current_cached_ = nullptr;  // the line next() runs, if it is cached
+  LineRecord& record_of(CachedLine& line);
+  // An expression of the line being run, from `from`: evaluated from its record when the line
+  // ran before, else parsed (and recorded when the line is cached). `end`: where it ends;
+  // `recorded`: its index in the line's record, or -1.
+  NcValue expression(std::string_view s, std::size_t from, InterpreterLookup& lookup, std::size_t& end,
+                     int* recorded = nullptr);
+  // The values of a recorded expression's variables, each a scalar of the running level or a
+  // global; false if one is not (the line then runs from its text).
+  bool resolve(const std::vector<std::string>& names, std::vector<Variable*>& into);
+  // Changes whenever a variable is made or dropped (DEF, a call's parameters, a return): what
+  // records resolved before is looked up again.
+  std::uint64_t variables_epoch_ = 0;
+  // Runs the line from its plan; false if the plan does not apply (nothing has been done then).
+  bool run_plan(const LineRecord& record, std::string& out);
   struct LineCache {
     std::unordered_map<std::streamoff, CachedLine> lines;
   };
