@@ -50,6 +50,13 @@ struct BlockCopy {
 
   static BlockCopy of(const Block& b) {
     BlockCopy c;
+    c.assign(b);
+    return c;
+  }
+  // The same in place: a slot kept from block to block reuses its actions' text (no allocation
+  // and no string destruction per block); actions past aux_count are stale and never read.
+  void assign(const Block& b) {
+    BlockCopy& c = *this;
     c.line = b.words.line;
     c.source = b.words.source;
     c.block = b.index;
@@ -60,8 +67,10 @@ struct BlockCopy {
     c.arc = b.is_arc();
     c.sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
     c.has_centre = b.centre.has_value();
-    if (b.centre) c.centre = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
-    if (b.words.cr) c.cr = b.words.cr->to_double(), c.cr_units = b.words.cr->units();
+    c.centre =
+        b.centre ? PathPoint{b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()} : PathPoint{};
+    c.cr = b.words.cr ? b.words.cr->to_double() : 0;
+    c.cr_units = b.words.cr ? b.words.cr->units() : 0;
     c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
     c.feed = b.state.feed;
     std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
@@ -75,7 +84,7 @@ struct BlockCopy {
     c.insert = b.insert;
     c.moves = b.moves_in_plane();
     c.exact = b.sar.move == SarMove::kNone;
-    return c;
+    c.seq = 0, c.actions_done = false, c.tangent_after = c.tangent_before = false;
   }
 };
 

@@ -227,7 +227,7 @@ void Compensation::compensation_active(const Block& b) {
   const BlockCopy* current = nullptr;  // a traversing block, converted once
   if (b.state.side == side && b.moves_in_plane()) {
     int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
-    prev_blocks[static_cast<std::size_t>(slot)] = copy_of(b);
+    copy_into(prev_blocks[static_cast<std::size_t>(slot)], b);
     const BlockCopy& before = prev_blocks[static_cast<std::size_t>(prev_slot)];
     bool had_prev = has_prev;
     prev_slot = slot, has_prev = true;

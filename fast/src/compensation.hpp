@@ -107,6 +107,11 @@ class Compensation {
     if (&b == over_block) over.apply(c);
     return c;
   }
+  void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
+    c.assign(b);
+    c.seq = held.seq();
+    if (&b == over_block) over.apply(c);
+  }
 
   // The block being stepped and its override (SAR-SUB-1, SAR-END-3), as the SAR expansion gave it.
   PlaneOverride over;

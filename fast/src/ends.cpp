@@ -22,7 +22,7 @@ void Compensation::approach(const Block& b) {
         b.words.line, "change of compensation side G41/G42 before the first contour block");
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   prev_slot ^= 1;
-  prev_blocks[static_cast<std::size_t>(prev_slot)] = copy_of(b);
+  copy_into(prev_blocks[static_cast<std::size_t>(prev_slot)], b);
   const BlockCopy& first = prev_blocks[static_cast<std::size_t>(prev_slot)];
   has_prev = true;
   Element e = element_of(first);
