@@ -240,6 +240,7 @@ def main():
     ap.add_argument("--rs274", default="rs274")
     ap.add_argument("--memory-blocks", default="10000,200000,2000000",
                     help="program lengths at which cutcom's peak memory is measured (flat: the same at all)")
+    ap.add_argument("--bench-engines", default="build/bench/bench_engines")
     ap.add_argument("--write-docs", action="store_true", help="write docs/performance.md and its chart")
     a = ap.parse_args()
     rs274 = shutil.which(a.rs274)
@@ -301,17 +302,60 @@ def main():
         memory.append((n, kb, svg_kb, svg_s))
         print(f"peak memory, lines+arcs with CDON, {n} blocks: text {mb(kb)}, SVG {mb(svg_kb)} ({svg_s:.2f} s)")
         os.remove(spf)
+    pocket = parametric_rows(a, tmp)
+    engines = engine_rows(a)
+    for name, median, best in engines:
+        print(f"{name:40} median {median / 1e6:.2f} M blocks/s, best {best / 1e6:.2f}")
     if a.write_docs:
-        write_docs(rows, memory, a)
+        write_docs(rows, memory, pocket, engines, a)
     shutil.rmtree(tmp, ignore_errors=True)
     sys.exit(0 if ok else 1)
+
+
+def while_pocket(passes, loop):
+    """The pocket of issue "Parametric programs", item 9: passes of four blocks under G41, as a
+    WHILE loop computing its coordinates, or the same blocks written out."""
+    head = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.2\nN10 G0 X-10 Y0 T1 D1\nN20 G1 G41 X0 Y0 F1000\n"
+    if loop:
+        body = (f"WHILE KK<{passes}\n  XX=KK*2\n  G1 Y50\n  X=XX+1\n  Y0\n  X=XX+2\n  KK=KK+1\nENDWHILE\n")
+        return "DEF INT KK=0\nDEF REAL XX\n" + head + body + "G40 G1 X=XX+20 Y-10\nM30\n"
+    body = "".join(f"G1 Y50\nX{2 * k + 1}\nY0\nX{2 * k + 2}\n" for k in range(passes))
+    return head + body + f"G40 G1 X{2 * (passes - 1) + 20} Y-10\nM30\n"
+
+
+def parametric_rows(a, tmp):
+    rows = []
+    passes = 25000  # 100,000 blocks
+    for loop in (True, False):
+        path = os.path.join(tmp, f"pocket_{'while' if loop else 'plain'}.mpf")
+        with open(path, "w") as f:
+            f.write(while_pocket(passes, loop))
+        cmd = [a.cutcom, "run", path, "-o", "/dev/null"]
+        t = statistics.median(timed(cmd) for _ in range(a.runs))
+        rows.append(("WHILE loop" if loop else "written out", 4 * passes + 3, t))
+        print(f"pocket, {rows[-1][0]:12} {4 * passes + 3} blocks  {t:.3f} s  {(4 * passes + 3) / t / 1e6:.2f} M blocks/s")
+    return rows
+
+
+def engine_rows(a):
+    """The in-process benchmarks (reader + engine, no output) of bench_engines, if built."""
+    if not os.access(a.bench_engines, os.X_OK):
+        return []
+    out = subprocess.run([a.bench_engines, "--benchmark_filter=FastPocket|ReaderLongProgram|FastLongProgram/.*/100000$",
+                          f"--benchmark_repetitions={a.runs}", "--benchmark_format=json"],
+                         capture_output=True, text=True, check=True).stdout
+    runs = {}
+    for b in json.loads(out)["benchmarks"]:
+        if b.get("run_type") == "iteration":
+            runs.setdefault(b["run_name"], []).append(b["items_per_second"])
+    return [(name, statistics.median(v), max(v)) for name, v in runs.items()]
 
 
 def mb(kb):
     return f"{kb / 1024:.1f} MB" if kb else "not measured"
 
 
-def write_docs(rows, memory, a):
+def write_docs(rows, memory, pocket, engines, a):
     here = os.path.dirname(os.path.abspath(__file__))
     docs = os.path.join(here, "..", "docs")
     with open(os.path.join(docs, "performance-peer.svg"), "w") as f:
@@ -348,6 +392,18 @@ def write_docs(rows, memory, a):
               "20,000 of them, then polylines within a bound it states (at most 200,000 points).", "",
               "| blocks | peak memory, text output | peak memory, SVG picture | SVG time (s) |", "|---|---|---|---|"]
     lines += [f"| {n} | {mb(kb)} | {mb(svg_kb)} | {svg_s:.2f} |" for n, kb, svg_kb, svg_s in memory]
+    lines += ["", "## A parametric program", "",
+              "A pocket of 25,000 passes of four blocks under G41, once as a WHILE loop that computes its "
+              "coordinates, once written out block by block (`cutcom run FILE -o /dev/null`, whole process, "
+              "text output). A loop's lines run from what their first pass recorded (NC-PARAM-EXPR-4).", "",
+              "| program | blocks | time (s) | blocks/s |", "|---|---|---|---|"]
+    lines += [f"| {name} | {n} | {t:.3f} | {n / t / 1e6:.2f} M |" for name, n, t in pocket]
+    if engines:
+        lines += ["", "## In process", "",
+                  f"`bench/bench_engines` (Google Benchmark), reader and fast engine without output, "
+                  f"{a.runs} repetitions; the machine is shared, so the best run is given beside the median.", "",
+                  "| benchmark | median blocks/s | best blocks/s |", "|---|---|---|"]
+        lines += [f"| {name} | {m / 1e6:.2f} M | {b / 1e6:.2f} M |" for name, m, b in engines]
     lines.append("")
     with open(os.path.join(docs, "performance.md"), "w") as f:
         f.write("\n".join(lines))
