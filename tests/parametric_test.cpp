@@ -341,6 +341,30 @@ std::string folder_with(const std::string& name, const std::vector<std::pair<std
   return dir.string();
 }
 
+// covers: NC-PARAM-SYS-3
+TEST(Parametric, RunModeActiveEdgeAndGivenParameters) {
+  // A normal run: the block-search branch is not taken.
+  EXPECT_EQ(end_x("IF $P_SEARCH OR $P_ISTEST OR $P_DRYRUN OR $P_SEARCHL GOTOF SKIP\nG1 X7 F100\nSKIP: G1 Y1\n"), "7");
+  // $P_AD[6]: the radius of the edge in force (T2 D3), 0 with D0.
+  EXPECT_EQ(end_x("$TC_DP6[2,3]=4.5\nT2 D3\nG1 X=$P_AD[6]*2 F100\nD0\nX=$P_AD[6]+1\n"), "1");
+  EXPECT_EQ(end_x("$TC_DP6[2,3]=4.5\n$TC_DP1[2,3]=120\nT2 D3\nG1 X=$P_AD[6]*2+$P_AD[1] F100\n"), "129");
+  EXPECT_EQ(error_line("G1 X0 F100\nT5 D1\nR1=$P_AD[6]\n", "$P_AD is not one cutcom knows"), 3);
+  // $P_SUBPAR: which arguments the call gave.
+  std::string dir = folder_with("subpar", {{"GIVEN.SPF",
+                                            "PROC GIVEN(REAL AA, REAL BB)\n"
+                                            "G1 X=$P_SUBPAR[1]*10+$P_SUBPAR[2] F100\nRET\n"}});
+  for (auto [call, x] : {std::pair{"GIVEN(1, 2)", "11"}, std::pair{"GIVEN(, 2)", "1"}, std::pair{"GIVEN(1)", "10"}}) {
+    std::istringstream in(std::string(call) + "\nM30\n");
+    ProgramReader reader(in);
+    reader.set_search_path({dir});
+    Block b, last;
+    while (reader.next(b)) last = b;
+    EXPECT_EQ(last.end.x.to_string(), x) << call;
+  }
+  EXPECT_EQ(end_x("G1 X=$P_SUBPAR[1]+3 F100\n"), "3");
+  EXPECT_EQ(error_line("R1=$P_SUBPAR[0]\n", "$P_SUBPAR takes one index"), 1);
+}
+
 // covers: NC-PARAM-EXPR-4
 TEST(Parametric, RecordedLinesRunAsTheirText) {
   // Loop passes and calls run their lines from what the first run recorded: the same blocks, in a

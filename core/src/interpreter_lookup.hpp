@@ -31,6 +31,14 @@ class InterpreterLookup : public ExpressionParser::Lookup {
       if (!chain) fail(at, "$P_PFRAME cannot be read here (a translation under inch units G70/G700 is not simulated)");
       return NcValue::frame(*chain);
     }
+    if (n == "$P_SUBPAR") {  // NC-PARAM-SYS-3: was parameter k given in the call?
+      if (idx.size() != 1 || idx[0].type == NcValue::Type::kString || idx[0].number < 1 ||
+          idx[0].number != std::trunc(idx[0].number))
+        fail(at, "$P_SUBPAR takes one index, the parameter's number from 1");
+      std::size_t k = static_cast<std::size_t>(idx[0].number) - 1;
+      const auto& args = it_.cx().args;
+      return NcValue::boolean(k < args.size() && args[k].has_value());
+    }
     if (!n.empty() && n[0] == '$') {
       std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
       if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));

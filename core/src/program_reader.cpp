@@ -96,13 +96,23 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
     return in_units(coord(programmed_, axis));
   }
   if (n == "$P_GG" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) return g_group_value(idx[0].number);
-  if (n.substr(0, 6) == "$TC_DP" && idx.size() == 2) {
+  // NC-PARAM-SYS-3: cutcom simulates a normal run: no block search, no program test, no dry run.
+  if (idx.empty() && (n == "$P_SEARCH" || n == "$P_SEARCHL" || n == "$P_ISTEST" || n == "$P_DRYRUN")) return 0.0;
+  bool active = n == "$P_AD" && idx.size() == 1;  // the active edge's parameter: $TC_DPn[T, D]
+  if ((n.substr(0, 6) == "$TC_DP" && idx.size() == 2) || active) {
     int k = 0;
-    for (char c : n.substr(6)) {
+    if (active) {
+      if (idx[0].type == NcValue::Type::kString || idx[0].number != std::trunc(idx[0].number)) return std::nullopt;
+      k = static_cast<int>(idx[0].number);
+      if (k < 1 || k > 25) return std::nullopt;
+      if (state_.edge == 0) return 0.0;  // D0: no offset in force
+    }
+    for (char c : active ? std::string_view() : n.substr(6)) {
       if (c < '0' || c > '9') return std::nullopt;
       k = k * 10 + (c - '0');
     }
-    const EdgeData* e = tools_.find(std::llround(idx[0].number), std::llround(idx[1].number));
+    const EdgeData* e = active ? tools_.find(state_.tool, state_.edge)
+                               : tools_.find(std::llround(idx[0].number), std::llround(idx[1].number));
     if (!e || k < 1 || k > 25) return std::nullopt;
     return k == 1    ? e->type.to_double()
            : k == 2  ? e->position.to_double()
