@@ -106,7 +106,8 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
   }
   if (f == FrameWord::kAtrans && frame_.rotated()) {
     // NC-FRAME-4: the translation is in the rotated system: turn its plane part (NC-GRID-1).
-    auto [p, q] = rotation_plane(frame_.rotation_axis);
+    // Plain variables, not a structured binding: the lambda below captures them (clang 14).
+    const std::size_t p = rotation_plane(frame_.rotation_axis).first, q = rotation_plane(frame_.rotation_axis).second;
     Decimal tp = w.axis[p].present ? length(w.axis[p].value).times(frame_.factor[p]) : Decimal{};
     Decimal tq = w.axis[q].present ? length(w.axis[q].value).times(frame_.factor[q]) : Decimal{};
     auto v = grid::to_grid<2>([&] {
@@ -144,7 +145,7 @@ void ProgramReader::refresh_programmed() {
   ProgrammableFrame f = frame_;
   std::array<Decimal, 3> base{position_.x - off.x - f.shift[0], position_.y - off.y - f.shift[1],
                               position_.z - off.z - f.shift[2]};
-  auto [p, q] = rotation_plane(f.rotation_axis);
+  const std::size_t p = rotation_plane(f.rotation_axis).first, q = rotation_plane(f.rotation_axis).second;
   auto v = grid::to_grid<3>([&] {
     std::array<Interval, 3> b{Interval(base[0]), Interval(base[1]), Interval(base[2])};
     if (f.rotated()) {  // turn back by the rotation
