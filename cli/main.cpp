@@ -420,6 +420,13 @@ int certify_command(CertifyOptions& o) {
               << program;
     return kDone;
   }
+  // The report's coverage table lists the spec's clauses: the folder must be there (run from the
+  // repository, or name it), checked before a campaign runs.
+  if (!o.report.empty() && !std::filesystem::is_directory(o.spec)) {
+    std::cerr << fmt::format(
+        "cutcom: --report needs the spec folder for its clause list: '{}' is not a folder (give --spec DIR)\n", o.spec);
+    return kBadInput;
+  }
   CampaignSummary s;
   double wall = 0;
   int used_jobs = 1;

@@ -283,6 +283,27 @@ TEST(Cli, CertifyJobsRunTheSameCasesInParallelProcesses) {
 }
 
 // covers: CLI-2
+TEST(Cli, CertifyRunsAsASlurmJobArray) {
+  // Where a Slurm cluster answers (e.g. scripts/slurm-one-node.sh): the campaign as an array of
+  // three tasks, merged by its own job, counts the cases of one process.
+  if (sh("timeout 5 sinfo -h -N -o %T 2>/dev/null | grep -Eq 'idle|mixed'").status != 0)
+    GTEST_SKIP() << "no Slurm cluster answers here";
+  const std::string dir = std::string(CUTCOM_BINARY_DIR) + "/slurm-campaign";
+  std::filesystem::remove_all(dir);
+  Result array = sh("bash " CUTCOM_SOURCE_DIR "/scripts/slurm-campaign.sh --seed 9 --cases 31 --tasks 3 --out " + dir +
+                    " --cutcom " + kCli + " --spec " CUTCOM_SOURCE_DIR "/spec --wait");
+  ASSERT_EQ(array.status, 0) << array.out;
+  EXPECT_NE(array.out.find("33 cases in 3 array tasks of 11"), std::string::npos) << array.out;
+  Result one = sh(kCli + " certify --cases 33 --seed 9 --no-progress --jobs 1 --summary " + dir + "/one.json");
+  ASSERT_EQ(one.status, 0) << one.out;
+  nlohmann::json a = summary_of(dir + "/one.json"), b = summary_of(dir + "/merged.json");
+  EXPECT_EQ(b["shards"], nlohmann::json::array({"0/3", "1/3", "2/3"}));
+  a.erase("shards"), b.erase("shards");
+  EXPECT_EQ(a, b);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/certification.md"));
+}
+
+// covers: CLI-2
 TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
   const std::string dir = CUTCOM_BINARY_DIR;
   Result child = sh(kCli + " certify --cases 40 --seed 5 --no-progress --summary " + dir + "/budget60.json");
