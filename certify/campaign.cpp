@@ -40,6 +40,7 @@ struct Outcome {
   std::string clause;   // knife edge: the parting clause
   std::string explanation;
   double error = 0, ratio = 0;
+  bool compared_after = false;  // a knife edge compared on after it (PROP-DIFF-2)
   CaseRuns runs;
 };
 
@@ -50,6 +51,7 @@ Outcome judge(CaseRuns runs) {
   const CaseRuns& r = o.runs;
   Verdict v = compare(r.ref, r.fast, r.tolerance);
   o.explanation = v.explanation;
+  o.compared_after = v.compared_after;
   if (r.ref_unsupported || r.fast_unsupported) {
     if (r.ref_unsupported == r.fast_unsupported) return o.verdict = "not-supported", o;
     if (v.kind != Verdict::Kind::kKnifeEdge) return o.verdict = "diverge", o;
@@ -218,6 +220,7 @@ CaseRecord run_one(const CampaignOptions& o, long k) {
     if (out.verdict == "agree") r.error = out.error, r.ratio = out.ratio;
     r.evidence = evidence_of(ref);
     if (c.variant) r.evidence.insert(std::string("variant:") + kVariantNames[c.variant]);
+    if (out.compared_after && out.verdict != "diverge") r.evidence.insert("knife-edge-compared-after");
   } catch (const std::exception& e) {  // an engine must alarm or reject, never throw anything else
     r.verdict = "crash", r.explanation = std::string("exception: ") + e.what();
   }

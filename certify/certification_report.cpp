@@ -206,9 +206,12 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "the same program whatever the sharding (its seed depends on the campaign seed and k only).\n\n";
   md << "## Verdicts\n\n| verdict | cases | share |\n|---|---|---|\n";
   for (const auto& [v, n] : s.verdicts) md << fmt::format("| {} | {} | {} |\n", v, n, percent(n, s.cases));
+  auto resumed = s.evidence.find("knife-edge-compared-after");
   md << "\n*agree*: same decisions, coordinates within the tolerance. *knife-edge*: a decision parted the\n"
-     << "runs where ref's exact margin lies inside the clause's documented band (the rest is not\n"
-     << "compared); *knife-edge-ends-differ*: such a case after which one engine ends clean and the\n"
+     << "runs where ref's exact margin lies inside the clause's documented band; where the runs take the\n"
+     << "same branch again after the next MD20240 + 1 blocks, they are compared on from there (PROP-DIFF-2: "
+     << (resumed == s.evidence.end() ? 0 : resumed->second) << " of the knife edges were, and agree after it);\n"
+     << "*knife-edge-ends-differ*: such a case after which one engine ends clean and the\n"
      << "other with an alarm or a rejection, or with other alarms. *not-supported*: both engines rejected the program "
         "naming the same line (TRC-UNSUP-1).\n"
      << "*over-budget*: the case ran longer than `--budget` seconds and was stopped, not compared (listed\n"

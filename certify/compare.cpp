@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -92,6 +93,7 @@ void count_corner(Conditioning& c, double aa, double ab, double ba, double bb, b
 
 Conditioning conditioning_of(const std::vector<Block>& program, int window, const RunResult* generated) {
   Conditioning c;
+  c.window = window;
   // End tangents of the last `window` traversing blocks: the look-ahead and CDON intersect a
   // block's equidistant with a later one's, however parallel (edge-cases.md: look-ahead crossing).
   std::vector<std::pair<double, double>> recent;
@@ -226,6 +228,7 @@ Tolerance Tolerance::for_program(const Conditioning& c) {
   t.sine = 16 * kUnitRoundoff * leverage;
   t.degrees = t.sine * 180 / 3.14159265358979323846;
   t.touching = std::sqrt(4 * c.size * t.coordinate) + t.coordinate;
+  t.window = std::max(c.window, 0) + 1;
   return t;
 }
 
@@ -263,9 +266,9 @@ namespace {
 // Likewise after carriers that just touch (an intersection of nearly tangent circles: the point
 // moves by up to sqrt(band L) along them, and what is built on it with it). True (a knife edge
 // in `v`) when one of ref's first `upto` decisions is such a one.
-bool parted_after_touching(const RunResult& ref, std::size_t upto, const Tolerance& tol, const std::string& where,
-                           Verdict& v) {
-  for (std::size_t k = 0; k < upto; ++k) {
+bool parted_after_touching(const RunResult& ref, std::size_t from, std::size_t upto, const Tolerance& tol,
+                           const std::string& where, Verdict& v) {
+  for (std::size_t k = from; k < upto; ++k) {
     const Decision& p = ref.decisions[k];
     bool touching_crossing =
         p.clause == "TRC-CD-3" && p.branch == "cut" && p.has_margin && std::fabs(margin_value(p)) <= tol.band(p.clause);
@@ -315,37 +318,88 @@ std::optional<std::string> broken_boundary_rule(const RunResult& run, std::strin
   return std::nullopt;
 }
 
+namespace {
+// The path's elements follow the program's lines (a program without loops or subprograms called
+// twice): only then does "a later block" mean the same block in both runs (PROP-DIFF-2).
+bool lines_ascend(const std::vector<PathElement>& path) {
+  for (std::size_t k = 1; k < path.size(); ++k)
+    if (path[k].origin.line < path[k - 1].origin.line) return false;
+  return true;
+}
+bool same_decision(const Decision& r, const Decision& f) {
+  return r.clause == f.clause && r.line == f.line && r.branch == f.branch;
+}
+}  // namespace
+
 Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& tol) {
   Verdict v;
+  // PROP-DIFF-2: after a knife edge the runs are compared again from the first later block where
+  // they take the same branch; `resumed` is the block after which they did (-1: never parted).
+  Verdict knife;
+  int resumed = -1;
   auto diverge = [&](std::string why) {
     v.kind = Verdict::Kind::kDiverge;
-    v.explanation = std::move(why);
+    v.explanation = resumed < 0 ? std::move(why)
+                                : fmt::format(
+                                      "after a knife edge ({}) the runs took the same branches again at "
+                                      "line {}, then: {}",
+                                      knife.explanation, resumed, why);
     return v;
   };
   for (auto [run, engine] : {std::pair{&fast, "fast"}, std::pair{&ref, "ref"}})
     if (std::optional<std::string> broken = broken_boundary_rule(*run, engine)) return diverge(*broken);
-  std::size_t n = std::min(ref.decisions.size(), fast.decisions.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    const Decision& r = ref.decisions[i];
-    const Decision& f = fast.decisions[i];
-    if (r.clause == f.clause && r.line == f.line && r.branch == f.branch) continue;
-    std::string where = fmt::format("decision {}: ref {} line {} {} (margin {}), fast {} line {} {} (margin {})", i,
+  // PROP-DIFF-2: after a knife edge at line L, decisions about lines up to L and the next
+  // `window` blocks are the knife edge's (also those a look-ahead takes later); the first ones
+  // after them must be the same decision.
+  const bool can_resume = lines_ascend(ref.path) && lines_ascend(fast.path);
+  int parted_upto = std::numeric_limits<int>::min();
+  auto skip = [&](const std::vector<Decision>& d, std::size_t& k) {
+    while (k < d.size() && d[k].line <= parted_upto) ++k;
+  };
+  std::size_t ir = 0, jf = 0, resumed_at = 0;
+  for (;; ++ir, ++jf) {
+    skip(ref.decisions, ir), skip(fast.decisions, jf);
+    if (ir == ref.decisions.size() || jf == fast.decisions.size()) break;
+    const Decision& r = ref.decisions[ir];
+    const Decision& f = fast.decisions[jf];
+    if (same_decision(r, f)) continue;
+    std::string where = fmt::format("{}: ref {} line {} {} (margin {}), fast {} line {} {} (margin {})",
+                                    ir == jf ? fmt::format("decision {}", ir) : fmt::format("decisions {}/{}", ir, jf),
                                     r.clause, r.line, r.branch, r.margin_exact, f.clause, f.line, f.branch, f.margin);
     // A decision without a margin never parts the runs legitimately. Where ref's margin lies in the
     // band the other branch may also show as another clause next (an element that exists in fast
     // and collapses in ref is searched first: TRC-CD-6 before TRC-ARC-EQ-1).
     if (r.has_margin && std::fabs(margin_value(r)) <= tol.band(r.clause)) {
-      v.kind = Verdict::Kind::kKnifeEdge;  // legitimate: ref's margin lies inside the band
-      v.clause = std::string(r.clause);
-      v.explanation = where + fmt::format(", band {:.3g}", tol.band(r.clause));
-      return v;
+      if (resumed < 0) {  // legitimate: ref's margin lies inside the band
+        knife.kind = Verdict::Kind::kKnifeEdge;
+        knife.clause = std::string(r.clause);
+        knife.explanation = where + fmt::format(", band {:.3g}", tol.band(r.clause));
+      }
+      if (!can_resume) return knife;
+      // Decisions about the next `window` blocks may follow from the knife edge (a corner, a
+      // look-ahead, a bottleneck check reach that far): they are the knife edge's too.
+      std::vector<int> later;
+      for (std::size_t k = ir; k < ref.decisions.size(); ++k)
+        if (ref.decisions[k].line > std::max(r.line, f.line)) later.push_back(ref.decisions[k].line);
+      std::sort(later.begin(), later.end());
+      later.erase(std::unique(later.begin(), later.end()), later.end());
+      if (later.size() <= static_cast<std::size_t>(tol.window)) return knife;
+      parted_upto = std::max(parted_upto, later[static_cast<std::size_t>(tol.window) - 1]);
+      skip(ref.decisions, ir), skip(fast.decisions, jf);
+      // The runs part for good: a knife edge, as far as they can be compared.
+      if (ir == ref.decisions.size() || jf == fast.decisions.size()) return knife;
+      if (!same_decision(ref.decisions[ir], fast.decisions[jf])) return knife;
+      resumed = ref.decisions[ir].line, resumed_at = ir;
+      continue;
     }
-    if (parted_after_touching(ref, i, tol, where, v)) return v;
+    // After a knife edge only a touching decision since the runs met again explains a parting.
+    if (parted_after_touching(ref, resumed_at, ir, tol, where, v)) return v;
     return diverge("unexplained " + where + fmt::format(", band {:.3g}", tol.band(r.clause)));
   }
-  if (ref.decisions.size() != fast.decisions.size()) {
+  if (ir != ref.decisions.size() || jf != fast.decisions.size()) {
+    if (resumed >= 0) return knife;  // one run went on after the knife edge where the other did not
     std::string where = fmt::format("ref took {} decisions, fast {}", ref.decisions.size(), fast.decisions.size());
-    if (parted_after_touching(ref, n, tol, where, v)) return v;  // one run went on where the other did not
+    if (parted_after_touching(ref, 0, ir, tol, where, v)) return v;  // one run went on where the other did not
     return diverge(where);
   }
   // A bottleneck crossing at a knife edge (touching a piece's end, or tangent: TRC-CD-3 margin in
@@ -359,6 +413,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       if (ref.alarms.size() != fast.alarms.size()) return diverge("different alarms after a touching crossing");
       return v;
     }
+  if (resumed >= 0 && ref.alarms.size() != fast.alarms.size()) return knife;  // the runs end differently
   if (ref.alarms.size() != fast.alarms.size()) return diverge("different alarms");
   for (std::size_t i = 0; i < ref.alarms.size(); ++i)
     if (ref.alarms[i].number != fast.alarms[i].number || ref.alarms[i].line != fast.alarms[i].line)
@@ -381,7 +436,18 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       if (!sliver(e)) out.push_back(&e);
     return out;
   };
-  const std::vector<const PathElement*> rp = without_slivers(ref.path), fp = without_slivers(fast.path);
+  std::vector<const PathElement*> rp = without_slivers(ref.path), fp = without_slivers(fast.path);
+  if (resumed >= 0) {  // PROP-DIFF-2: the paths from the block after the one where the runs met again
+    auto after = [&](std::vector<const PathElement*>& path) {
+      path.erase(path.begin(), std::find_if(path.begin(), path.end(),
+                                            [&](const PathElement* e) { return e->origin.line > resumed; }));
+    };
+    after(rp), after(fp);
+    v = knife;
+    v.compared_after = true;
+    v.explanation +=
+        fmt::format("; the runs took the same branches again at line {} and are compared after it", resumed);
+  }
   if (rp.size() != fp.size()) return diverge(fmt::format("ref output {} elements, fast {}", rp.size(), fp.size()));
   const Decision* touch = nullptr;  // the first touching decision: coordinates within `touching`
   for (const Decision& d : ref.decisions)

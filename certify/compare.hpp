@@ -21,6 +21,7 @@ struct Conditioning {
   double crossing = 1;  // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
                         // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
   double reach = 0;     // largest coordinate magnitude of ref's path, mm (0: not read)
+  int window = 3;       // MD20240: blocks the look-ahead and CDON see ahead
 };
 // `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)
 // may intersect two blocks' equidistants.
@@ -37,6 +38,8 @@ struct Tolerance {
   // After a touching decision (TRC-EDGE-5 hit, TRC-CD-2 g451-*, TRC-ARC-CORNER-1 with the margin
   // in the band): a point on nearly tangent carriers moves along them by up to sqrt(4 L band).
   double touching;
+  // PROP-DIFF-2: blocks after a knife edge whose decisions may follow from it (MD20240 + 1).
+  int window = 4;
   static Tolerance for_program(const Conditioning& c);
   double band(std::string_view clause) const;  // the band of a clause's margin
 };
@@ -46,6 +49,7 @@ struct Verdict {
   std::string explanation;  // what differs, where, and by how much
   std::string clause;       // knife edge: the clause whose decision parted the runs
   double max_coordinate_error = 0;
+  bool compared_after = false;  // PROP-DIFF-2: a knife edge after which the runs met again and agree
 };
 
 Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& tol);

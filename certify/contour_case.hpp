@@ -68,11 +68,22 @@ struct ContourCase {
 
 // Names of ContourCase::variant: 0 "none", then one rule each (TRC-SEL-3 ... TRC-DUMMY-3,
 // SAR-DISRP-1/2, SAR-STOP-1, SAR-AGAIN-1).
-inline constexpr const char* kVariantNames[] = {
-    "none",          "one-plane-axis",   "select-without-plane-axis", "d0",
-    "no-tool",       "edge-without-data", "plane-change",             "deselect-in-circle",
-    "deselect-without-plane-axis", "disc", "too-many-dummies",        "standing-block",
-    "disrp-above",   "disrp-below",      "stopre-before-direction",   "sar-again"};
+inline constexpr const char* kVariantNames[] = {"none",
+                                                "one-plane-axis",
+                                                "select-without-plane-axis",
+                                                "d0",
+                                                "no-tool",
+                                                "edge-without-data",
+                                                "plane-change",
+                                                "deselect-in-circle",
+                                                "deselect-without-plane-axis",
+                                                "disc",
+                                                "too-many-dummies",
+                                                "standing-block",
+                                                "disrp-above",
+                                                "disrp-below",
+                                                "stopre-before-direction",
+                                                "sar-again"};
 inline constexpr int kVariants = 16;
 inline constexpr int kSarVariants = 12;  // variants from here on change a SAR approach
 

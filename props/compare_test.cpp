@@ -126,6 +126,69 @@ TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
 }
 
+// covers: PROP-DIFF-2
+TEST(Comparison, AKnifeEdgeDoesNotHideWhatFollowsIt) {
+  auto at = [](Decision d, int line) {
+    d.line = line;
+    return d;
+  };
+  auto plain = [](std::string_view clause, std::string_view branch, int line) {
+    Decision d;
+    d.clause = clause, d.branch = branch, d.line = line;
+    return d;
+  };
+  auto element = [](int origin_line, PathPoint start, PathPoint end) {
+    PathElement e = line(start, end);
+    e.origin.line = origin_line;
+    return e;
+  };
+  // The runs part at the corner of line 5 inside the band (G450 kept in ref, G451 in fast); the
+  // next block (window 1) may follow from it; from line 8 on they take the same branches again.
+  Tolerance tol = tolerance();
+  tol.window = 1;
+  RunResult ref, fast;
+  ref.decisions = {at(decision("TRC-CORNER-4", "keep-G450", 1e-13, "1e-13"), 5), plain("TRC-ELEMENT-1", "fits", 6),
+                   plain("TRC-ELEMENT-1", "kept", 8), plain("TRC-ELEMENT-1", "kept", 9)};
+  fast.decisions = {at(decision("TRC-CORNER-4", "switch-to-G451", -1e-13), 5), plain("TRC-ELEMENT-1", "vanishes", 6),
+                    plain("TRC-ELEMENT-1", "kept", 8), plain("TRC-ELEMENT-1", "kept", 9)};
+  ref.path = {element(5, {0, 0, 0}, {1, 0, 0}), element(6, {1, 0, 0}, {2, 0, 0}), element(9, {2, 0, 0}, {10, 0, 0})};
+  fast.path = {element(5, {0, 0, 0}, {1, 0.5, 0}), element(9, {2, 0, 0}, {10, 0, 0})};
+  Verdict v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;  // lines 5 and 6 are the knife edge's
+  EXPECT_NE(v.explanation.find("again at line 8 and are compared after it"), std::string::npos) << v.explanation;
+  // A path 38 mm off after the runs met again is a divergence, not hidden by the knife edge.
+  fast.path[1].end = {10, 38, 0};
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("took the same branches again at line 8, then: element 0"), std::string::npos)
+      << v.explanation;
+  // So is a later parting without a margin in the band.
+  fast.path[1].end = {10, 0, 0};
+  fast.decisions[3].branch = "vanishes";
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("then: unexplained decision 3"), std::string::npos) << v.explanation;
+  // Runs that do not take the same branch after the window stay a knife edge, compared no further;
+  // so do runs with a larger window that reaches their end.
+  fast.decisions[2].branch = "vanishes";
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
+  fast.decisions[2].branch = "kept";
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kKnifeEdge);
+  // A look-ahead's later decision about a line of the knife edge's (line 4, after line 8) is the
+  // knife edge's: it may differ.
+  fast.decisions[3].branch = "kept";
+  ref.decisions.insert(ref.decisions.begin() + 3, plain("TRC-ELEMENT-1", "fits", 4));
+  fast.decisions.insert(fast.decisions.begin() + 3, plain("TRC-ELEMENT-1", "vanishes", 4));
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge) << compare(ref, fast, tol).explanation;
+  // Runs whose path goes back to earlier lines (a loop) are not resumed: "a later block" may be
+  // another pass.
+  fast.path[1].end = {10, 38, 0};
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  ref.path.push_back(element(3, {10, 0, 0}, {0, 0, 0}));
+  fast.path.push_back(element(3, {10, 38, 0}, {0, 0, 0}));
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
+}
+
 // Every rule names a clause of the spec and a branch its engines trace.
 // covers: PROP-BOUNDARY-1
 TEST(Comparison, EveryBoundaryRuleNamesAClauseOfTheSpec) {
