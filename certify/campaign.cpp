@@ -158,8 +158,8 @@ rc::Shrinkable<ContourCase> generate(std::uint64_t seed, long k) {
 }
 }  // namespace
 
-ReplayVerdict replay(const std::string& program, const MachineData& md) {
-  Outcome o = judge(run_program(program, md));
+ReplayVerdict replay(const std::string& program, const MachineData& md, const std::string& folder) {
+  Outcome o = judge(run_program(program, md, false, folder));
   return {o.verdict, o.clause, o.explanation, o.error, o.ratio};
 }
 

@@ -106,7 +106,8 @@ struct ReplayVerdict {
   std::string explanation;
   double error = 0, ratio = 0;  // agree: largest coordinate error (mm) and its share of the tolerance
 };
-ReplayVerdict replay(const std::string& program, const MachineData& md);
+// `folder`: where the program's subprograms are (empty: it calls none; no file is looked at).
+ReplayVerdict replay(const std::string& program, const MachineData& md, const std::string& folder = {});
 
 // Case k of a campaign: its program text and machine data (NAME=VALUE lines), to replay it.
 std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k);

@@ -25,12 +25,22 @@ inline MachineData machine_data_of(const ContourCase& c) {
   return md;
 }
 
+// Subprograms of a program given as text are looked for in `folder` only (none: no file is one).
+inline void look_for_subprograms(ProgramReader& reader, const std::string& folder) {
+  if (folder.empty())
+    reader.no_subprogram_files();
+  else
+    reader.set_search_path({folder});
+}
+
 // Both engines on one program text, and the tolerance read off it.
-inline CaseRuns run_program(const std::string& text, const MachineData& md, bool exact_checks = false) {
+inline CaseRuns run_program(const std::string& text, const MachineData& md, bool exact_checks = false,
+                            const std::string& folder = {}) {
   CaseRuns out;
   {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
+    look_for_subprograms(reader, folder);
     CollectingSink sink;
     try {
       ref::run(reader, md, sink, exact_checks ? &out.exact : nullptr);
@@ -42,6 +52,7 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
   {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
+    look_for_subprograms(reader, folder);
     CollectingSink sink;
     try {
       fast::run(reader, md, sink);
@@ -52,6 +63,7 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
   }
   std::istringstream in(text);
   ProgramReader reader(in, md.initial_state());
+  look_for_subprograms(reader, folder);
   std::vector<Block> blocks;
   Block b;
   while (reader.next(b)) blocks.push_back(b);

@@ -344,13 +344,19 @@ ProgramWithData read_program_with_data(const std::string& f) {
   return p;
 }
 
+// Where a program's subprograms are looked for: its own folder.
+std::string program_folder(const std::string& file) {
+  std::string folder = std::filesystem::path(file).parent_path().string();
+  return folder.empty() ? "." : folder;
+}
+
 // `certify --replay`: each program (with its FILE.md machine data beside it, as in tests/corpus)
 // through both engines, judged as a campaign case; exit 1 on an unexplained divergence.
 int replay_programs(const std::vector<std::string>& files) {
   bool diverged = false;
   for (const auto& f : files) {
     ProgramWithData p = read_program_with_data(f);
-    cutcom::props::ReplayVerdict v = cutcom::props::replay(p.text, p.md);
+    cutcom::props::ReplayVerdict v = cutcom::props::replay(p.text, p.md, program_folder(f));
     diverged = diverged || v.verdict == "diverge";
     std::cout << fmt::format("{}: {}", f, v.verdict);
     if (!v.clause.empty()) std::cout << " (" << v.clause << ")";
@@ -377,7 +383,7 @@ int certify_from(const std::vector<std::string>& files, long count, std::uint64_
       if (k > 0) n = cutcom::props::neighbour_of(p.text, p.md, seed, k);
       cutcom::props::ReplayVerdict v;
       try {
-        v = cutcom::props::replay(n.text, n.md);
+        v = cutcom::props::replay(n.text, n.md, program_folder(f));
       } catch (const std::exception& e) {  // a neighbour the reader rejects (an unreachable CR=, say)
         if (k == 0) throw;
         ++rejected;

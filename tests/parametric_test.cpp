@@ -365,6 +365,29 @@ TEST(Parametric, RunModeActiveEdgeAndGivenParameters) {
   EXPECT_EQ(error_line("R1=$P_SUBPAR[0]\n", "$P_SUBPAR takes one index"), 1);
 }
 
+// covers: NC-PARAM-SUB-1
+TEST(Parametric, AProgramWithoutAFolderCallsNoFile) {
+  std::string dir = folder_with("nofiles", {{"LONGWAY.SPF", "G1 X5 F100\nM17\n"}});
+  auto read = [&](bool files) {
+    std::istringstream in("LONGWAY\nM30\n");
+    ProgramReader reader(in);
+    if (files)
+      reader.set_search_path({dir});
+    else
+      reader.no_subprogram_files();
+    Block b;
+    try {
+      while (reader.next(b)) {
+      }
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return b.end.x.to_string();
+  };
+  EXPECT_EQ(read(true), "5");
+  EXPECT_NE(read(false).find("'LONGWAY' is not a SINUMERIK word"), std::string::npos) << read(false);
+}
+
 // covers: NC-PARAM-EXPR-4
 TEST(Parametric, RecordedLinesRunAsTheirText) {
   // Loop passes and calls run their lines from what the first run recorded: the same blocks, in a

@@ -121,6 +121,7 @@ std::optional<std::string> Interpreter::find_subprogram(const std::string& name)
   auto known = found_.find(name);
   if (known != found_.end()) return known->second;
   std::optional<std::string>& found = found_[name];
+  if (!subprogram_files_) return found;
   std::string lower = name;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const std::string& dir : search_path_.empty() ? std::vector<std::string>{"."} : search_path_)

@@ -80,6 +80,13 @@ class Interpreter {
   // NC-PARAM-SUB-1: where subprograms are looked for (the program's folder first).
   void set_search_path(std::vector<std::string> dirs) {
     search_path_ = std::move(dirs);
+    subprogram_files_ = true;
+    found_.clear();
+  }
+  // No file is a subprogram (a program given as text, as in a campaign or a fuzz target: its
+  // words never depend on the files of the current folder).
+  void no_subprogram_files() {
+    subprogram_files_ = false;
     found_.clear();
   }
   // NC-PARAM-VAR-3: a definitions file (GUD, DEF.DIR/*.DEF): its DEF lines make variables every
@@ -265,6 +272,7 @@ class Interpreter {
   std::vector<std::string> source_names_{""};
   std::map<std::string, std::uint32_t> source_ids_;  // NC-PARAM-VAR-3: GUD from definition files
   std::vector<std::string> search_path_;
+  bool subprogram_files_ = true;
   mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
   std::int64_t backward_jumps_ = 0;
   std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded

@@ -86,6 +86,7 @@ class ProgramReader : private SystemValues {
   void set_limits(InterpreterLimits limits) { interpreter_.set_limits(limits); }
   // NC-PARAM-SUB-1: the folders subprograms are looked for in, the program's own first.
   void set_search_path(std::vector<std::string> dirs) { interpreter_.set_search_path(std::move(dirs)); }
+  void no_subprogram_files() { interpreter_.no_subprogram_files(); }
   void set_source_name(std::string name) { source_ = std::move(name); }
   // NC-PARAM-SUB-3: where a block of a subprogram stands ("INNER.SPF line 4, called from
   // OUTER.SPF line 7"), by the id its origin carries; "" for 0.
