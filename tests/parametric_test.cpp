@@ -524,7 +524,7 @@ TEST(Parametric, ModalCallRunsAfterEveryMove) {
   EXPECT_EQ(error_line("MCALL NOSUCH(1)\n", "neither a standard cycle nor a subprogram found", {}, dir), 1);
 }
 
-// covers: NC-PARAM-SUB-3
+// covers: NC-PARAM-SUB-3 TRC-END-1
 TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
   std::string dir = folder_with(
       "provenance", {{"OUTER.SPF", "N10 G1 X5 F100\nN20 INNER\nRET\n"}, {"INNER.SPF", "; inner\nN30 G1 Y5\nM17\n"}});
@@ -564,6 +564,18 @@ TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
       EXPECT_EQ(sink.result.alarms[0].number, number) << engine;
       EXPECT_EQ(reader.source_text(sink.result.alarms[0].source), where) << engine;
     }
+    // So does a notice: compensation still active at the end, its last block in LAST.SPF; D0
+    // with G41 in the main program names no subprogram.
+    std::string notices = folder_with("provenance-notices", {{"LAST.SPF", "N10 G1 X20 Y0\nN20 Y10\nM17\n"}});
+    std::istringstream in(tool + "G0 X0 Y0\nG1 G41 X10 F100\nLAST\nM30\n");
+    MachineData md;
+    ProgramReader reader(in, md.initial_state());
+    reader.set_search_path({notices});
+    CollectingSink sink;
+    EXPECT_TRUE(std::string(engine) == "ref" ? ref::run(reader, md, sink) : fast::run(reader, md, sink));
+    ASSERT_EQ(sink.result.notices.size(), 1u) << engine;
+    EXPECT_EQ(sink.result.notices[0].clause, "TRC-END-1") << engine;
+    EXPECT_EQ(reader.source_text(sink.result.notices[0].source), "LAST.SPF line 2") << engine;
   }
 }
 

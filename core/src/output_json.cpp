@@ -157,7 +157,9 @@ void JsonWriter::alarm(const Alarm& a) {
 }
 
 void JsonWriter::notice(const Notice& n) {
-  append(notices_, json{{"line", n.line}, {"clause", n.clause}, {"text", n.text}});
+  json j{{"line", n.line}, {"clause", n.clause}, {"text", n.text}};
+  if (n.source != 0 && sources_) j["source"] = sources_(n.source);  // NC-PARAM-SUB-3
+  append(notices_, j);
 }
 
 void JsonWriter::sar_variables(const SarVariables& v) {

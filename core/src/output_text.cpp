@@ -115,7 +115,9 @@ void TextWriter::alarm(const Alarm& a) {
 }
 
 void TextWriter::notice(const Notice& n) {
-  buffer_ += fmt::format("note  line {}: {} [{}]\n", n.line, n.text, n.clause);
+  buffer_ += fmt::format("note  line {}: {}", n.line, n.text);
+  if (n.source != 0 && sources_) buffer_ += " (in " + sources_(n.source) + ")";  // NC-PARAM-SUB-3
+  buffer_ += fmt::format(" [{}]\n", n.clause);
   written();
 }
 

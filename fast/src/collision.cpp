@@ -145,7 +145,11 @@ void Compensation::cut(const BlockCopy& m, const Entry& en, int record, const Pi
 }
 
 bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at) {
-  int last_run = -1;  // the last block (BlockCopy::block) run again from held records
+  // A held record's owner: the block, and for a SAR block which of its parts (its lead and its
+  // element are owners of their own, as they are blocks of their own in ref).
+  auto owner_of = [](int block, SarMove part) { return block * 8 + static_cast<int>(part); };
+  auto owner = [&](const HeldRecord& k) { return owner_of(k.owner_block, k.owner_sar); };
+  int last_run = -1;  // the last owner run again from held records
   if (record >= 0) {
     const HeldRecord crossed = held[static_cast<std::size_t>(record)];
     const PathPoint end = xyz(x, h(crossed.element.end));
@@ -154,16 +158,17 @@ bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at
     double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
     bool vanishes = along <= 64 * std::numeric_limits<double>::epsilon() * scale;
     const std::vector<HeldRecord>& dropped = held.cut(static_cast<std::size_t>(record), end, vanishes);
-    bool rest = open.block == crossed.owner_block;  // its equidistant was still open
-    for (const HeldRecord& k : dropped) rest = rest || k.owner_block == crossed.owner_block;
+    const int open_owner = owner_of(open.block, open.sar);
+    bool rest = open_owner == owner(crossed);  // its equidistant was still open
+    for (const HeldRecord& k : dropped) rest = rest || owner(k) == owner(crossed);
     if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
     for (std::size_t i = 0; i < dropped.size(); ++i) {
       const HeldRecord& k = dropped[i];
-      if (k.owner_block == crossed.owner_block) continue;
-      if (k.owner_block != last_run) {
+      if (owner(k) == owner(crossed)) continue;
+      if (owner(k) != last_run) {
         if (last_run >= 0) infeed_of(dropped[i - 1], x);
         decide("TRC-LOOK-3", k.owner_line, "skipped");
-        last_run = k.owner_block;
+        last_run = owner(k);
       }
       if (!k.is_element) {
         HeldRecord a = k;
@@ -172,7 +177,7 @@ bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at
       }
     }
     if (last_run >= 0) infeed_of(dropped.back(), x);
-    if (open.block != crossed.owner_block && open.block != last_run) skip_at(open, x);
+    if (open_owner != owner(crossed) && open_owner != last_run) skip_at(open, x);
   } else {
     looking = false;
     if (!close_open(x, at)) return false;

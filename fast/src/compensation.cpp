@@ -22,7 +22,7 @@ void Compensation::compensation_off(const Block& b) {
       return raise(10750, b.words);  // TRC-SEL-6
     } else if (b.state.edge == 0) {
       decide("TRC-SEL-5", b.words.line, "d0");
-      if (!d0_noticed) sink.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
+      if (!d0_noticed) sink.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation", b.words.source});
       d0_noticed = true;
     } else if (!b.state.edge_defined) {
       return raise(17181, b.words);  // TRC-SEL-7

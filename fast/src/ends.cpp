@@ -351,12 +351,14 @@ void Compensation::end_of_program() {
   }
   if (phase == Phase::kApproach) {
     decide("TRC-END-1", selection.line, "no-contour");
-    sink.notice({selection.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
+    sink.notice({selection.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows",
+                 selection.source});
     line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
     run_held_back_uncompensated();
   } else if (phase == Phase::kActive) {
     decide("TRC-END-1", open.line, "active-at-end");
-    sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
+    sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point",
+                 open.source});
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
     if (!close_open(end, BlockPlace::of(open), true)) return;
     run_held_back(end);

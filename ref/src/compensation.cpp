@@ -58,7 +58,7 @@ void Compensation::compensation_off(const Block& b) {
   if (b.state.tool == 0) return raise(10750, b);  // TRC-SEL-6
   if (b.state.edge == 0) {                        // TRC-SEL-5
     decide("TRC-SEL-5", b.words.line, "d0");
-    if (!d0_noticed_) sink_.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation"});
+    if (!d0_noticed_) sink_.notice({b.words.line, "TRC-SEL-5", "G41/G42 with D0: no compensation", b.words.source});
     d0_noticed_ = true;
     return run_uncompensated(b);
   }

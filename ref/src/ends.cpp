@@ -333,14 +333,15 @@ void Compensation::end_of_program() {
   }
   if (phase_ == Phase::kApproach) {
     decide("TRC-END-1", selection_->words.line, "no-contour");
-    sink_.notice(
-        {selection_->words.line, "TRC-END-1", "compensation selected but no block with motion in the plane follows"});
+    sink_.notice({selection_->words.line, "TRC-END-1",
+                  "compensation selected but no block with motion in the plane follows", selection_->words.source});
     emit_line(*selection_, selection_start(), end_of(*selection_), OriginKind::kProgrammed);
     run_held_back_uncompensated();
   } else if (phase_ == Phase::kActive) {
     decide("TRC-END-1", open_->line, "active-at-end");
-    sink_.notice(
-        {open_->line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point"});
+    sink_.notice({open_->line, "TRC-END-1",
+                  "program ends with compensation active: last block ends at its normal point",
+                  open_block_->words.source});
     Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
     if (!close_open(end, *open_block_, true)) return;
     run_held_back(end);

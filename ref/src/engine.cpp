@@ -32,7 +32,7 @@ class Pipeline {
   bool run(ProgramReader& reader) {
     Block b;
     while (!trace_.stopped() && reader.next(b)) {
-      if (!b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice});  // the reader's
+      if (!b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice, b.words.source});  // the reader's
       sar_.take(b);
       if (auto p = sar_.take_reposition()) reader.set_position(*p);  // SAR-END-1/3
     }

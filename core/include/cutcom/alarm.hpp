@@ -39,6 +39,7 @@ struct Notice {
   int line = 0;
   std::string_view clause;
   std::string text;
+  std::uint32_t source = 0;  // NC-PARAM-SUB-3, as an alarm's
 };
 
 }  // namespace cutcom
