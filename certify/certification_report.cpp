@@ -203,7 +203,8 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
   md << "Reproduce a shard: `cutcom certify --seed " << s.seed
      << " --cases N --shard I/K --summary shard.json`; merge shards and write this page:\n"
      << "`cutcom certify --merge shard*.json --report docs/certification.md`. Case k of a campaign is\n"
-     << "the same program whatever the sharding (its seed depends on the campaign seed and k only).\n\n";
+     << "the same program whatever the sharding (its seed depends on the campaign seed and k only).\n"
+     << "Every campaign run so far, its seed, its cases and what it found: [campaigns.md](campaigns.md).\n\n";
   md << "## Verdicts\n\n| verdict | cases | share |\n|---|---|---|\n";
   for (const auto& [v, n] : s.verdicts) md << fmt::format("| {} | {} | {} |\n", v, n, percent(n, s.cases));
   auto resumed = s.evidence.find("knife-edge-compared-after");

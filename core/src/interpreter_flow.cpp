@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <set>
 #include <tuple>
 
 #include "cutcom/interpreter.hpp"
@@ -223,18 +224,29 @@ void Interpreter::jump(std::string_view target, bool forward, bool backward, boo
   control_flow_ = true;
   int from_line = cx().line;
   std::streamoff from = cx().offset;
+  // A target the whole file was searched for in vain is not looked for again: a GOTOC to a
+  // missing label in a loop costs no scan of the file per pass.
+  // Likewise a forward search from this line that failed (a GOTOC back to a label behind it).
+  std::set<std::string>& absent = absent_targets_[cx().path];
+  bool known_absent = forward && backward && absent.count(std::string(target)) > 0;
+  std::string here = std::string(target) + '@' + std::to_string(from_line);
+  bool ahead_absent = forward && absent.count(here) > 0;
   Passed passed;
-  if (forward && find_forward(target, &passed)) {
+  if (known_absent || ahead_absent) {
+    // nothing to search ahead
+  } else if (forward && find_forward(target, &passed)) {
     leave_structures(passed);
     return;
   }
-  if (backward) {
+  if (forward && !known_absent && !ahead_absent) absent.insert(here);
+  if (backward && !known_absent) {
     if (forward) seek(from, from_line);
     if (find_backward(target, from_line)) {
       leave_structures_from(cx().line + 1);
       return;
     }
   }
+  if (forward && backward) absent.insert(std::string(target));
   if (!must_exist) {  // GOTOC: no target, no jump
     seek(from, from_line);
     return;

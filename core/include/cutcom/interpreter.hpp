@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -183,6 +184,8 @@ class Interpreter {
     int ifs = 0, loops = 0;
   };
   bool find_forward(std::string_view target, Passed* passed = nullptr);
+  // By file: targets no line defines, and "TARGET@line": none after that line.
+  std::map<std::string, std::set<std::string>> absent_targets_;
   void leave_structures(const Passed& passed);
   void leave_structures_from(int target_line);
   bool find_backward(std::string_view target, int before_line);
