@@ -564,8 +564,7 @@ TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
       EXPECT_EQ(sink.result.alarms[0].number, number) << engine;
       EXPECT_EQ(reader.source_text(sink.result.alarms[0].source), where) << engine;
     }
-    // So does a notice: compensation still active at the end, its last block in LAST.SPF; D0
-    // with G41 in the main program names no subprogram.
+    // So does a notice: compensation still active at the end, its last block in LAST.SPF.
     std::string notices = folder_with("provenance-notices", {{"LAST.SPF", "N10 G1 X20 Y0\nN20 Y10\nM17\n"}});
     std::istringstream in(tool + "G0 X0 Y0\nG1 G41 X10 F100\nLAST\nM30\n");
     MachineData md;

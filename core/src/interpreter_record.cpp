@@ -45,22 +45,18 @@ NcValue Interpreter::expression(std::string_view s, std::size_t from, Interprete
   // Only the text of the line next() runs has a record (not arguments, definitions files, …).
   if (current_cached_ && s.data() == raw_.data() && s.size() == raw_.size()) {
     LineRecord& rec = record_of(*current_cached_);
-    for (std::size_t k = 0; k < rec.expressions.size(); ++k) {
-      if (rec.expressions[k].first != from) continue;
+    std::size_t k = 0;
+    while (k < rec.expressions.size() && rec.expressions[k].first != from) ++k;
+    if (k < rec.expressions.size()) {  // recorded before: evaluated from the record if it applies
       const std::optional<CompiledExpression>& ce = rec.expressions[k].second;
-      if (!ce) break;
       ResolvedNames& r = rec.resolved[k];
-      if (r.epoch != variables_epoch_) {
-        if (!resolve(ce->names, r.variables)) break;
-        r.epoch = variables_epoch_;
+      if (ce && r.epoch != variables_epoch_ && resolve(ce->names, r.variables)) r.epoch = variables_epoch_;
+      if (ce && r.epoch == variables_epoch_) {
+        if (recorded) *recorded = static_cast<int>(k);
+        end = ce->end;
+        return ce->evaluate(Values(r.variables).at, r_, cx().line);
       }
-      if (recorded) *recorded = static_cast<int>(k);
-      end = ce->end;
-      return ce->evaluate(Values(r.variables).at, r_, cx().line);
-    }
-    bool known = false;
-    for (const auto& e : rec.expressions) known = known || e.first == from;
-    if (!known) {  // the first run: parsed and recorded
+    } else {  // the first run: parsed and recorded
       CompiledExpression ce;
       ExpressionParser p(s, from, cx().line, lookup);
       p.record(&ce);
@@ -82,16 +78,16 @@ NcValue Interpreter::expression(std::string_view s, std::size_t from, Interprete
   return v;
 }
 
-bool Interpreter::run_plan(const LineRecord& record, std::string& out) {
+bool Interpreter::run_plan(LineRecord& record, std::string& out) {
   const LinePlan& plan = *record.plan;
-  ResolvedNames& r = const_cast<LineRecord&>(record).plan_resolved;
+  ResolvedNames& r = record.plan_resolved;
   if (r.epoch != variables_epoch_) {
     for (const std::string& w : plan.words)  // an address word must not have become a variable
       if (find_variable(w)) return false;
     if (!resolve(plan.names, r.variables)) return false;
     for (std::size_t k = 0; k < record.expressions.size(); ++k) {
       const std::optional<CompiledExpression>& ce = record.expressions[k].second;
-      ResolvedNames& e = const_cast<LineRecord&>(record).resolved[k];
+      ResolvedNames& e = record.resolved[k];
       if (ce && !resolve(ce->names, e.variables)) return false;
       e.epoch = variables_epoch_;
     }

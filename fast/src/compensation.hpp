@@ -102,9 +102,8 @@ class Compensation {
   int approach_until = -1;
 
   BlockCopy copy_of(const Block& b) const {
-    BlockCopy c = BlockCopy::of(b);
-    c.seq = held.seq();
-    if (&b == over_block) over.apply(c);
+    BlockCopy c;
+    copy_into(c, b);
     return c;
   }
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block

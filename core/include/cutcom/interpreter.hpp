@@ -162,7 +162,7 @@ class Interpreter {
   // records resolved before is looked up again.
   std::uint64_t variables_epoch_ = 0;
   // Runs the line from its plan; false if the plan does not apply (nothing has been done then).
-  bool run_plan(const LineRecord& record, std::string& out);
+  bool run_plan(LineRecord& record, std::string& out);
   struct LineCache {
     std::unordered_map<std::streamoff, CachedLine> lines;
   };
