@@ -267,8 +267,8 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
   } else {
     // TRC-ARC-CORNER-1: the intersection of the carriers nearest to the corner.
     Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(next, next_radius);
-    bool found = nearest_intersection(cu, cv, v, next.start_tangent(), x);
-    decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", carrier_gap(cu, cv));
+    bool found = corner_intersection(cu, cv, v, next.start_tangent(), r, x);
+    decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", corner_gap(cu, cv, r));
     if (!found && c.kind == Corner::Kind::kOuter)
       return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
     if (!found) return raise(10751, b.words);

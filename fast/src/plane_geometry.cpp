@@ -116,6 +116,20 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
   return true;
 }
 
+// TRC-ARC-CORNER-1 with tool radius 0: the carriers are the programmed elements, which both pass
+// through the corner, the nearest intersection there is (at distance 0). From the carriers it
+// would land up to sqrt(u) times their size away where they nearly touch (campaign 20261129,
+// case 223714: a full circle after it became a sliver).
+bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out) {
+  if (r == 0) return out = corner, true;
+  return nearest_intersection(u, v, corner, ahead, out);
+}
+
+double corner_gap(const Carrier& u, const Carrier& v, double r) {
+  double gap = carrier_gap(u, v);
+  return r == 0 ? std::min(gap, 0.0) : gap;  // with radius 0 they meet at the corner
+}
+
 // The sign is that of the quantity carrier_intersections decides on (PROP-BOUNDARY-1: the
 // branch "meet" or "miss" must agree with the margin traced), the size the distance in mm.
 double carrier_gap(const Carrier& u, const Carrier& v) {

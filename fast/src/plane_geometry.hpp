@@ -67,6 +67,10 @@ struct Carrier {
   double radius = 0;      // circle about `point`
 };
 bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out);
+// The same at a programmed corner `corner`, the equidistants' carriers for tool radius `r`, and
+// their gap as a margin (TRC-ARC-CORNER-1).
+bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out);
+double corner_gap(const Carrier& u, const Carrier& v, double r);
 // All points common to two carriers (0, 1 or 2; tangency gives one).
 int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]);
 // <= 0 when two carriers (at least one a circle) meet: see ref's carrier_gap.
