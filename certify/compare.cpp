@@ -204,6 +204,30 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     auto [ta, tb] = lead_after ? tangent(*last, ax, true) : tangent(*first, ax, false);
     count_corner(c, da, db, ta, tb, (lead_after ? last : first)->type == ElementType::kArc);
   }
+  // TRC-KONT-4 (and the same at a side change): the approach line meets the first equidistant,
+  // the last one the retraction line, at an intersection the program does not show; nearly
+  // reversed, it lies far out (campaign 20261204, case 45849: 179.82 degrees, 2,400 mm away).
+  for (std::size_t k = 0; k + 1 < ref.path.size(); ++k) {
+    const PathElement &a = ref.path[k], &b = ref.path[k + 1];
+    bool approach = a.origin.kind == OriginKind::kApproach && a.type == ElementType::kLine &&
+                    b.origin.kind != OriginKind::kApproach;
+    bool retraction = b.origin.kind == OriginKind::kRetraction && b.type == ElementType::kLine &&
+                      a.origin.kind != OriginKind::kRetraction;
+    if (!approach && !retraction) continue;
+    if (a.origin.sar != SarMove::kNone || b.origin.sar != SarMove::kNone) continue;  // SAR: above
+    int line = (approach ? a : b).origin.line;
+    if (std::none_of(ref.decisions.begin(), ref.decisions.end(), [&](const Decision& d) {
+          return d.clause == "TRC-KONT-4" && d.branch == "intersection" && d.line == line;
+        }))
+      continue;
+    PlaneAxes ax = plane_axes(Plane::kG17);
+    for (const Block& blk : program)
+      if (blk.words.line == line) ax = plane_axes(blk.state.plane);
+    auto [da, db] = tangent(a, ax, true);
+    auto [ta, tb] = tangent(b, ax, false);
+    if (std::hypot(da, db) > 0 && std::hypot(ta, tb) > 0)
+      count_corner(c, da, db, ta, tb, a.type == ElementType::kArc || b.type == ElementType::kArc);
+  }
   // Carriers that nearly touch (a gap g, mm) cross at about sqrt(2 |g| / R), R <= L: the corner's
   // deflection may be large while the intersection is as ill-conditioned as a tangency. A gap
   // within the tolerance is a touching decision (compare: the touching tolerance) instead.

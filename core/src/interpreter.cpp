@@ -267,16 +267,17 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       i = settable_offset(s, after);
       continue;
     }
-    if (n == "$P_PFRAME" && after < s.size() && (s[after] == '=' || s[after] == '[')) {  // NC-PARAM-FRAME-1
-      if (s[after] == '[')
-        throw InputError(cx().line, static_cast<int>(start) + 1,
-                         "a component of $P_PFRAME ($P_PFRAME[axis, TR], …) is not simulated yet: assign a whole "
-                         "frame, e.g. $P_PFRAME=$P_PFRAME:CTRANS(X,10)");
-      ExpressionParser p(s, after + 1, cx().line, lookup);
-      NcValue frame = p.parse();
-      if (frame.type != NcValue::Type::kFrame)
-        throw InputError(cx().line, static_cast<int>(after) + 2, "$P_PFRAME is assigned a value that is not a frame");
-      std::size_t end = skip_space(s, p.position());
+    if (n == "$P_PFRAME" && after < s.size() && (s[after] == '=' || s[after] == '[')) {  // NC-PARAM-FRAME-1/2
+      std::size_t end = after;
+      NcValue frame = s[after] == '[' ? frame_component_assignment(s, after, end) : NcValue{};
+      if (s[after] == '=') {
+        ExpressionParser p(s, after + 1, cx().line, lookup);
+        frame = p.parse();
+        if (frame.type != NcValue::Type::kFrame)
+          throw InputError(cx().line, static_cast<int>(after) + 2, "$P_PFRAME is assigned a value that is not a frame");
+        end = p.position();
+      }
+      end = skip_space(s, end);
       if (words || (end < s.size() && s[end] != ';'))
         throw InputError(cx().line, static_cast<int>(start) + 1,
                          "a $P_PFRAME assignment must stand in a block of its own, as a frame instruction does");

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -29,16 +30,52 @@ InputError Interpreter::where(const InputError& e) const {
                     fmt::format("{} (called from line {}): {}", chain, stack_.front().line, e.detail()));
 }
 
-// NC-PARAM-SYS-2: $P_UIFR[n]=CTRANS(X,expr,Y,expr,…) or $P_UIFR[n,X,TR]=expr, from just after the
-// name (at '['); the values are evaluated and the assignment, written on the grid, goes to the
-// reader's settable offsets. Returns where the assignment ends.
+namespace {
+// NC-PARAM-SYS-2: a frame value that a settable offset can hold (translations only, NC-OFFSET-2) as
+// the CTRANS(…) of its translation; the chain's ATRANS blocks add up while nothing turns or scales.
+std::string settable_translation(const std::string& chain, int line, std::size_t at) {
+  std::array<Decimal, 3> t{};
+  for (std::size_t from = 0; from < chain.size();) {
+    std::size_t e = chain.find('\n', from);
+    if (e == std::string::npos) e = chain.size();
+    std::string_view block(chain.data() + from, e - from);
+    from = e + 1;
+    std::size_t sp = block.find(' ');
+    std::string_view word = block.substr(0, sp);
+    for (std::size_t k = sp; k != std::string_view::npos && k < block.size();) {
+      std::size_t ke = block.find(' ', k + 1);
+      std::string_view item = block.substr(k + 1, ke == std::string_view::npos ? std::string_view::npos : ke - k - 1);
+      k = ke;
+      if (item.empty()) continue;
+      auto v = Decimal::parse(item.substr(item[0] == 'R' ? 4 : 1));
+      if (!v.value) throw InputError(line, static_cast<int>(at) + 1, fmt::format("'{}' is not a frame value", item));
+      bool neutral = word == "ATRANS" || (word == "AROT" && v.value->is_zero()) ||
+                     (word == "ASCALE" && *v.value == Decimal::from_int(1));
+      if (!neutral)
+        throw InputError(line, static_cast<int>(at) + 1,
+                         fmt::format("a settable offset holds translations only: {} {} is not simulated", word, item));
+      if (word == "ATRANS") {
+        std::size_t a = static_cast<std::size_t>(item[0] - 'X');
+        t[a] = t[a] + *v.value;
+      }
+    }
+  }
+  return fmt::format("CTRANS(X,{},Y,{},Z,{})", t[0].to_string(), t[1].to_string(), t[2].to_string());
+}
+}  // namespace
+
+// NC-PARAM-SYS-2: $P_UIFR[n]=frame (CTRANS(X,expr,…), $P_UIFR[k], a chain of them) or
+// $P_UIFR[n,X,TR]=expr, from just after the name (at '['); the values are evaluated and the
+// assignment, written on the grid, goes to the reader's settable offsets. Returns where the
+// assignment ends.
 std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i) {
   InterpreterLookup lookup(*this, cx().line);
   std::size_t open = i;
   ExpressionParser index(s, i + 1, cx().line, lookup);
   std::string text = "$P_UIFR[" + grid_text(index.parse(), cx().line, i + 1);
   i = skip_space(s, index.position());
-  if (i < s.size() && s[i] == ',') {  // [n, axis, component]: names, kept as written
+  bool component = i < s.size() && s[i] == ',';
+  if (component) {  // [n, axis, component]: names, kept as written
     std::size_t close = s.find(']', i);
     if (close == std::string_view::npos) throw InputError(cx().line, static_cast<int>(open) + 1, "']' expected");
     for (char c : s.substr(i, close - i))
@@ -49,35 +86,16 @@ std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i) {
   i = skip_space(s, i + 1);
   if (i >= s.size() || s[i] != '=') throw InputError(cx().line, static_cast<int>(i) + 1, "'=' expected");
   text += "]=";
-  i = skip_space(s, i + 1);
-  std::size_t fe = name_end(s, i);
-  std::string function = upper_text(s.substr(i, fe - i));
-  std::size_t paren = skip_space(s, fe);
-  if (function == "CTRANS" && paren < s.size() && s[paren] == '(') {
-    text += "CTRANS(";
-    i = skip_space(s, paren + 1);
-    for (bool first = true; i < s.size() && s[i] != ')'; first = false) {
-      if (!first) {
-        if (s[i] != ',') throw InputError(cx().line, static_cast<int>(i) + 1, "',' or ')' expected in CTRANS");
-        i = skip_space(s, i + 1);
-        text += ',';
-      }
-      std::size_t ae = name_end(s, i);
-      text += upper_text(s.substr(i, ae - i)) + ",";
-      i = skip_space(s, ae);
-      if (i >= s.size() || s[i] != ',')
-        throw InputError(cx().line, static_cast<int>(i) + 1, "CTRANS needs axis, value pairs");
-      ExpressionParser value(s, i + 1, cx().line, lookup);
-      text += grid_text(value.parse(), cx().line, i + 1);
-      i = skip_space(s, value.position());
-    }
-    if (i >= s.size()) throw InputError(cx().line, static_cast<int>(paren) + 1, "')' expected");
-    text += ')';
-    ++i;
+  std::size_t value_at = skip_space(s, i + 1);
+  ExpressionParser value(s, value_at, cx().line, lookup);
+  NcValue v = value.parse();
+  i = value.position();
+  if (component) {
+    text += grid_text(v, cx().line, value_at);
   } else {
-    ExpressionParser value(s, i, cx().line, lookup);
-    text += grid_text(value.parse(), cx().line, i);
-    i = value.position();
+    if (v.type != NcValue::Type::kFrame)
+      throw InputError(cx().line, static_cast<int>(value_at) + 1, "$P_UIFR[n] is assigned a value that is not a frame");
+    text += settable_translation(v.text, cx().line, value_at);
   }
   bool taken = false;
   try {
@@ -88,6 +106,45 @@ std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i) {
   if (!taken) throw InputError(cx().line, static_cast<int>(open) + 1, "$P_UIFR cannot be written here");
   control_flow_ = true;
   return i;
+}
+
+NcValue Interpreter::frame_component_assignment(std::string_view s, std::size_t at, std::size_t& end) {
+  InterpreterLookup lookup(*this, cx().line);
+  auto expect_name = [&](std::size_t& k) {
+    k = skip_space(s, k);
+    std::size_t e = name_end(s, k);
+    std::string n = upper_text(s.substr(k, e - k));
+    k = skip_space(s, e);
+    return n;
+  };
+  std::size_t k = at + 1, axis_at = skip_space(s, k);
+  std::string axis = expect_name(k);
+  if (find_variable(axis)) {  // an AXIS variable holding the axis' name
+    NcValue held = lookup.read(axis, {}, axis_at);
+    axis = held.type == NcValue::Type::kString ? upper_text(held.text) : std::string();
+  }
+  if (axis != "X" && axis != "Y" && axis != "Z")
+    throw InputError(cx().line, static_cast<int>(axis_at) + 1,
+                     "$P_PFRAME[axis, component]: an axis X, Y or Z is expected");
+  if (k >= s.size() || s[k] != ',') throw InputError(cx().line, static_cast<int>(k) + 1, "',' expected");
+  ++k;
+  std::size_t comp_at = skip_space(s, k);
+  std::string comp = expect_name(k);
+  if (k >= s.size() || s[k] != ']') throw InputError(cx().line, static_cast<int>(k) + 1, "']' expected");
+  k = skip_space(s, k + 1);
+  if (k >= s.size() || s[k] != '=') throw InputError(cx().line, static_cast<int>(k) + 1, "'=' expected");
+  ExpressionParser value(s, k + 1, cx().line, lookup);
+  std::string text = grid_text(value.parse(), cx().line, k + 1);
+  end = value.position();
+  std::optional<std::string> chain;
+  try {
+    chain = system_ ? system_->programmable_frame_with(axis[0] - 'X', comp, text) : std::nullopt;
+  } catch (const InputError& e) {
+    throw InputError(cx().line, static_cast<int>(comp_at) + 1,
+                     fmt::format("$P_PFRAME[{},{}]={}: {}", axis, comp, text, e.detail()));
+  }
+  if (!chain) throw InputError(cx().line, static_cast<int>(at) + 1, "$P_PFRAME cannot be written here");
+  return NcValue::frame(*chain);
 }
 
 bool Interpreter::reader_knows(const std::string& word) {

@@ -31,6 +31,19 @@ class InterpreterLookup : public ExpressionParser::Lookup {
       if (!chain) fail(at, "$P_PFRAME cannot be read here (a translation under inch units G70/G700 is not simulated)");
       return NcValue::frame(*chain);
     }
+    // NC-PARAM-FRAME-2: a settable offset ($P_UIFR[n]) or the one in force ($P_IFRAME) as a frame.
+    if ((n == "$P_UIFR" && idx.size() == 1) || (n == "$P_IFRAME" && idx.empty())) {
+      int k = -1;
+      if (!idx.empty()) {
+        if (idx[0].type == NcValue::Type::kString || idx[0].number != std::trunc(idx[0].number) || idx[0].number < 0 ||
+            idx[0].number > 99)
+          fail(at, "$P_UIFR takes the offset's number, 0 to 99 (G54 = 1)");
+        k = static_cast<int>(idx[0].number);
+      }
+      std::optional<std::string> chain = it_.system_ ? it_.system_->settable_frame(k) : std::nullopt;
+      if (!chain) fail(at, fmt::format("{} cannot be read here", n));
+      return NcValue::frame(*chain);
+    }
     if (n == "$P_SUBPAR") {  // NC-PARAM-SYS-3: was parameter k given in the call?
       if (idx.size() != 1 || idx[0].type == NcValue::Type::kString || idx[0].number < 1 ||
           idx[0].number != std::trunc(idx[0].number))
@@ -41,6 +54,12 @@ class InterpreterLookup : public ExpressionParser::Lookup {
     }
     if (!n.empty() && n[0] == '$') {
       std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
+      bool frame = n == "$P_PFRAME" || n == "$P_UIFR" || n == "$P_IFRAME";
+      if (!v && frame)  // NC-PARAM-FRAME-2
+        fail(at, fmt::format("{} is read as a frame or by a component: {}[{}X,TR] (TR, FI, RT, SC, MI of X, Y, Z)", n,
+                             n, n == "$P_UIFR" ? "n," : ""));
+      if (!v && n.find("FRAME") != std::string::npos)
+        fail(at, fmt::format("the frame variable {} is not simulated ($P_PFRAME, $P_UIFR and $P_IFRAME are)", n));
       if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));
       return NcValue::real(*v);
     }

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -428,26 +429,43 @@ NcValue ExpressionParser::primary() {
   std::vector<NcValue> indices;
   if (indexed) {
     ++i_;
-    // An axis index ($AA_IW[X], $P_EP[Y]) is the axis' name.
-    std::size_t save = i_;
+    // An axis as an index ($AA_IW[X], $P_EP[Y]) is its name, unless a variable of that name
+    // exists; so is a frame component after one ($P_PFRAME[X,TR], $P_UIFR[1,X,TR]), always.
+    static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
+    static constexpr std::string_view kComponents[] = {"TR", "FI", "RT", "SC", "MI"};
+    bool after_axis = false;
     skip_space();
-    std::string axis;
-    if (i_ < s_.size() && is_letter(s_[i_])) {
-      std::size_t k = i_;
-      std::string a = name();
+    if (i_ < s_.size() && s_[i_] == ']') fail("an index is expected");
+    while (true) {
       skip_space();
-      if (a.size() == 1 && (a == "X" || a == "Y" || a == "Z") && i_ < s_.size() && s_[i_] == ']' &&
-          !lookup_.is_variable(a)) {
-        ++i_;
-        indices.push_back(NcValue::string(a));
-        axis = a;
+      std::size_t k = i_;
+      bool named = false;
+      if (i_ < s_.size() && is_letter(s_[i_])) {
+        std::string a = name();
+        skip_space();
+        bool ends = i_ < s_.size() && (s_[i_] == ']' || s_[i_] == ',');
+        bool axis = std::find(std::begin(kAxes), std::end(kAxes), a) != std::end(kAxes) && !lookup_.is_variable(a);
+        bool component =
+            after_axis && std::find(std::begin(kComponents), std::end(kComponents), a) != std::end(kComponents);
+        if (ends && (axis || component))
+          indices.push_back(NcValue::string(a)), named = true;
+        else
+          i_ = k;
+        after_axis = ends && axis;
       } else {
-        i_ = k;
+        after_axis = false;
       }
-    }
-    if (axis.empty()) {
-      i_ = save;
-      indices = arguments(']');
+      if (!named) indices.push_back(parse());
+      skip_space();
+      if (i_ < s_.size() && s_[i_] == ',') {
+        ++i_;
+        continue;
+      }
+      if (i_ < s_.size() && s_[i_] == ']') {
+        ++i_;
+        break;
+      }
+      fail("']' or ',' expected");
     }
   }
   if (n == "TRUE" || n == "FALSE") {

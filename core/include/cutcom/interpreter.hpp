@@ -58,6 +58,15 @@ class SystemValues {
   // NC-PARAM-FRAME-1: the programmable frame in force, as frame blocks the reader reads back to
   // the same frame ("TRANS X1 Y2\nAROT Z30\nASCALE X-1"); empty if not known.
   virtual std::optional<std::string> programmable_frame() { return std::nullopt; }
+  // NC-PARAM-FRAME-2: the programmable frame with one component (axis 0 X, 1 Y, 2 Z; "TR", "FI",
+  // "RT", "SC" or "MI") set to `value` (grid text), written as programmable_frame() writes it.
+  // Throws InputError (column 1) for a value the frame cannot hold.
+  virtual std::optional<std::string> programmable_frame_with(int /*axis*/, std::string_view /*component*/,
+                                                             std::string_view /*value*/) {
+    return std::nullopt;
+  }
+  // NC-PARAM-FRAME-2: settable offset n (0: the one in force) as a frame value; empty if unknown.
+  virtual std::optional<std::string> settable_frame(int /*n*/) { return std::nullopt; }
   virtual void restore_modal_state() {}
 };
 
@@ -268,7 +277,9 @@ class Interpreter {
   std::vector<std::string> pending_;
   std::size_t pending_next_ = 0;
   int pending_line_ = 0;
-  void programmable_frame_assignment(std::string_view line, std::size_t at, std::size_t value);
+  // NC-PARAM-FRAME-2: $P_PFRAME[axis, component]=expr from `at` ('['): the programmable frame with
+  // that component set, as a frame value; `end` is where the assignment ends.
+  NcValue frame_component_assignment(std::string_view line, std::size_t at, std::size_t& end);
   std::vector<Context> stack_;
   std::map<int, double> r_;  // R parameters: global
   std::map<std::string, Variable> globals_;

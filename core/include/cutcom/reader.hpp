@@ -106,6 +106,10 @@ class ProgramReader : private SystemValues {
   // NC-PARAM-SUB-4: PROC … SAVE.
   bool write_settable_offset(const std::string& assignment) override;
   std::optional<std::string> programmable_frame() override;  // NC-PARAM-FRAME-1
+  std::optional<std::string> programmable_frame_with(int axis, std::string_view component,
+                                                     std::string_view value) override;  // NC-PARAM-FRAME-2
+  std::optional<std::string> settable_frame(int n) override;                            // NC-PARAM-FRAME-2
+  std::optional<double> frame_component(std::string_view name, const std::vector<NcValue>& indices);
   void save_modal_state() override;
   void restore_modal_state() override;
   struct SavedState {
