@@ -348,7 +348,15 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
   Vec2 y;
   Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(cand, radius);
-  bool found = nearest_intersection(cu, cv, start, cand.start_tangent(), y);
+  // Programmed lines in the same direction have parallel equidistants, which never meet; their
+  // unit vectors in double may cross by a rounding (campaign 20261205, case 29172: the candidate
+  // ran along the open block's own line, and fast met it there).
+  bool parallel = false;
+  if (!open_el.arc && !cand.arc && open.exact && c.exact) {
+    std::optional<ExactProducts> p = exact_products(open.delta, c.delta);
+    parallel = p && p->cross == 0;
+  }
+  bool found = !parallel && nearest_intersection(cu, cv, start, cand.start_tangent(), y);
   bool valid = false;
   double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
   if (found) {
