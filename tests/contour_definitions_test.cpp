@@ -101,6 +101,19 @@ TEST(ContourDefinitions, RoundingBetweenALineAndACircle) {
   expect_point(*b[3].centre, "10", "0", "circle centre kept");
 }
 
+// A rounding lies on the grid, tangent to its neighbours only to within it. With the tool outside
+// it, N60's offset and the rounding's cross by 1e-21 mm at the corner the rounding leaves, which
+// double shows as a miss: fast raised alarm 10751 on this ordinary program. Both run it through.
+// covers: NC-CONTOUR-1 TRC-ARC-CORNER-1
+TEST(ContourDefinitions, RoundingWithTheToolOutsideRunsInBothEngines) {
+  Both r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nG17 G90 G0 X-15 Y-15 T1 D1\nG1 G41 X0 Y0 F800\nY60\n"
+      "G2 X20 Y80 CR=20\nG1 X100 Y80\nY20\nX80 Y0 RND=5\nX0\nG40 X-15 Y-15\nM30\n");
+  EXPECT_TRUE(r.ref.alarms.empty());
+  EXPECT_TRUE(r.fast.alarms.empty());
+  expect_same_path(r.ref, r.fast, 1e-6);  // the crossing of nearly tangent carriers: sqrt(u) of the size
+}
+
 // covers: NC-CONTOUR-1
 TEST(ContourDefinitions, TooLargeIsReducedToTheLargestThatFits) {
   // Line (0,0)->(0,2), then X20: a right angle, tangent length = r, so RND=5 becomes r = 2 and
@@ -158,6 +171,13 @@ TEST(ContourDefinitions, BoundaryRulesAndWhatIsNotInserted) {
   EXPECT_NE(b[1].notice.find("no element follows"), std::string::npos);
   // RND in a block without plane motion.
   EXPECT_NE(error_of("G1 Z5 RND=2 F100\n").find("without motion in the plane"), std::string::npos);
+  // A turn of 1e-7 rad and RND=0.001: the tangent points lie 5e-11 from the corner, both on the
+  // grid point (10, 0). A rounding from there to there would read as a full circle: nothing is
+  // inserted, with a notice (found by Differential.FastAgreesWithRefOnContourDefinitions).
+  b = read("G0 X0 Y0\nG1 X10 RND=0.001 F100\nX20 Y0.000001\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_NE(b[1].notice.find("shorter than 10^-9 mm"), std::string::npos);
+  expect_point(b[1].end, "10", "0", "the corner stays");
 }
 
 // covers: NC-CONTOUR-2 NC-UNIT-1

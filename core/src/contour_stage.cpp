@@ -186,6 +186,14 @@ void ProgramReader::finish_pending(Block* next) {
     } catch (const std::domain_error&) {
       fail(p.words.line, "the rounding or chamfer has no solution at this corner");
     }
+    // A cut whose two points fall on one grid point is shorter than the grid: inserted, a rounding
+    // would read as a full circle (ARC rules: start = end), so nothing is.
+    if (cut && (*cut)[0] == (*cut)[2] && (*cut)[1] == (*cut)[3]) {
+      note(p, "NC-CONTOUR-1",
+           fmt::format("{} of {}/{} not inserted: it is shorter than 10^-9 mm", rounding ? "rounding" : "chamfer",
+                       name_of(p), name_of(*next)));
+      cut.reset();
+    }
     if (cut && (*cut)[12].sign() > 0)
       note(p, "NC-CONTOUR-1",
            fmt::format("{} of {}/{} reduced to {} mm: the programmed one does not fit on the elements",
