@@ -50,21 +50,47 @@ TEST(ProgramWords, SetUpWordsAreActionsKeptAsWritten) {
       "S447 M3 M1=4 S1=800 SPOS=DC(90) H2 E5\n"
       "MSG(\"Roughing; first pass\") WORKPIECE(,\"\",,\"BOX\",0,0,-20,-80,0,0,100,100)\n"
       "GROUP_BEGIN(0,\"Contour\",0,0) CYCLE832(0.01,_ORI_ROUGH,1)\nG9 G1 X10 F100\n");
-  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"G642", "SOFT", "FFWON", "CFTCP", "COMPCAD", "G601",
-                                                      "ADIS=0.5", "G96", "LIMS=3000"}));
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"G642", "SOFT", "FFWON", "CFTCP", "COMPCAD", "G601", "ADIS=0.5",
+                                                     "G96", "LIMS=3000"}));
   EXPECT_EQ(b[0].state.feed_type, FeedType::kG95);  // G96: feed per revolution
   EXPECT_EQ(b[0].state.path_mode, PathMode::kG64);
-  EXPECT_EQ(actions(b[1]),
-            (std::vector<std::string>{"S447", "M3", "M1=4", "S1=800", "SPOS=DC(90)", "H2", "E5"}));
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"S447", "M3", "M1=4", "S1=800", "SPOS=DC(90)", "H2", "E5"}));
   // Names are read in capitals as the control reads them; quoted text keeps its case.
   auto lower = read("s1200 m3 g642 msg(\"Außen; pass 1\")\n");
   EXPECT_EQ(actions(lower[0]), (std::vector<std::string>{"S1200", "M3", "G642", "MSG(\"Außen; pass 1\")"}));
   EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"MSG(\"Roughing; first pass\")",
-                                                      "WORKPIECE(,\"\",,\"BOX\",0,0,-20,-80,0,0,100,100)"}));
+                                                     "WORKPIECE(,\"\",,\"BOX\",0,0,-20,-80,0,0,100,100)"}));
   EXPECT_EQ(actions(b[3]).size(), 2u);
   EXPECT_EQ(actions(b[4]), (std::vector<std::string>{"G9"}));
   EXPECT_FALSE(b[1].moves_in_plane());
   EXPECT_THROW(read("G64 G642\n"), InputError);  // one group, twice
+}
+
+// covers: NC-WORD-7
+TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
+  auto b = read(
+      "WAITM(1,1,2) SETM(3) CLEARM(3) WAITE(2) WAITS SBLOF DISPLOF CP FNORM\n"
+      "CTOL=0.01 OTOL=0.1 ACC[X]=50 VELOLIM[Z]=80 JERKLIM[1]=60 SPCON TOWSTD PAROTOF\n"
+      "FGROUP(X,Y) SETPIECE(1) WAITS(1,2) SBLON DISPLON G1 X10 F100\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"WAITM(1,1,2)", "SETM(3)", "CLEARM(3)", "WAITE(2)", "WAITS",
+                                                     "SBLOF", "DISPLOF", "CP", "FNORM"}));
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"CTOL=0.01", "OTOL=0.1", "ACC[X]=50", "VELOLIM[Z]=80",
+                                                     "JERKLIM[1]=60", "SPCON", "TOWSTD", "PAROTOF"}));
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"FGROUP(X,Y)", "SETPIECE(1)", "WAITS(1,2)", "SBLON", "DISPLON"}));
+  EXPECT_EQ(b[2].end.x.to_string(), "10");
+  // An indexed address word's value may be an expression (NC-PARAM-GRID-1); its index stays.
+  auto p = read("R1=5\nACC[ X ]=R1*2 SPOS[1]=DC(R1)\n");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(actions(p[0]), (std::vector<std::string>{"ACC[X]=10", "SPOS[1]=DC(5)"}));
+  // Writes to the PLC interface and synchronized-action variables: actions; reads: errors.
+  auto o = read("R1=2\n$A_DBB[3]=1 $A_OUT[2]=R1*2 $AC_MARKER[1]=0\n");
+  ASSERT_EQ(o.size(), 1u);
+  EXPECT_EQ(actions(o[0]), (std::vector<std::string>{"$A_DBB[3]=1", "$A_OUT[2]=4", "$AC_MARKER[1]=0"}));
+  EXPECT_THROW(read("R1=$A_IN[1]\n"), InputError);
+  EXPECT_THROW(read("$A_DBB[3]\n"), InputError);
+  EXPECT_THROW(read("ACC[X]\n"), InputError);   // a value needs '='
+  EXPECT_THROW(read("WAITM 1\n"), InputError);  // a call needs its arguments in (…)
 }
 
 // covers: NC-WORD-4
@@ -95,7 +121,8 @@ TEST(ProgramWords, InchIsConvertedOntoTheGrid) {
 
 // covers: NC-DIAM-1
 TEST(ProgramWords, DiameterProgramming) {
-  auto b = read("G18 DIAMON X40 Z0\nG91 X-10\nG90 DIAM90 X30\nG91 X2\nG90 DIAMOF X30\nDIAMON G3 X20 Z-5 I=AC(10) K-5\n");
+  auto b =
+      read("G18 DIAMON X40 Z0\nG91 X-10\nG90 DIAM90 X30\nG91 X2\nG90 DIAMOF X30\nDIAMON G3 X20 Z-5 I=AC(10) K-5\n");
   EXPECT_EQ(b[0].end.x, dec("20"));
   EXPECT_EQ(b[1].end.x, dec("15"));  // incremental diameter: half of it
   EXPECT_EQ(b[2].end.x, dec("15"));
@@ -141,8 +168,8 @@ TEST(ProgramWords, TranslationScaleAndMirrorFrames) {
   EXPECT_EQ(b[6].end, pt("8", "2", "0"));  // incremental values are scaled too
   EXPECT_EQ(b[8].end, pt("3", "1", "0"));
   EXPECT_EQ(b[10].end.x, dec("-3"));
-  EXPECT_EQ(b[12].end.x, dec("3"));   // mirrored twice
-  EXPECT_EQ(b[15].end.x, dec("-13"));  // ATRANS acts in the mirrored system
+  EXPECT_EQ(b[12].end.x, dec("3"));                                 // mirrored twice
+  EXPECT_EQ(b[15].end.x, dec("-13"));                               // ATRANS acts in the mirrored system
   EXPECT_THROW(read("SCALE X2 Y3\nG2 X10 Y0 CR=5\n"), InputError);  // an ellipse
   EXPECT_THROW(read("TRANS X10 G1 Y5\n"), InputError);
   EXPECT_THROW(read("G41 T1 D1\nTRANS X10\n"), InputError);
@@ -164,8 +191,8 @@ TEST(ProgramWords, AMirroredFrameEqualsTheMirroredProgram) {
   const char* tools = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\n";
   std::string framed = std::string(tools) +
                        "T1 D1\nMIRROR X0\nG0 X-10 Y-5\nG1 G41 X0 Y0 F100\nX20\nG2 X30 Y10 CR=10\nG1 Y20\nG40 X40 Y30\n";
-  std::string mirrored = std::string(tools) +
-                         "T1 D1\nG0 X10 Y-5\nG1 G42 X0 Y0 F100\nX-20\nG3 X-30 Y10 CR=10\nG1 Y20\nG40 X-40 Y30\n";
+  std::string mirrored =
+      std::string(tools) + "T1 D1\nG0 X10 Y-5\nG1 G42 X0 Y0 F100\nX-20\nG3 X-30 Y10 CR=10\nG1 Y20\nG40 X-40 Y30\n";
   Both a = run_both(framed), b = run_both(mirrored);
   ASSERT_EQ(a.ref.path.size(), b.ref.path.size());
   for (std::size_t i = 0; i < a.ref.path.size(); ++i) {
@@ -232,11 +259,12 @@ TEST(ProgramWords, TurningToolWithEdgePositionIsNotSimulated) {
 
 // covers: NC-CYCLE-1 NC-CYCLE-2
 TEST(ProgramWords, CyclesAreNotSimulatedAndLeaveThePositionUnknown) {
-  auto b = read("G0 X10 Y10 Z5\nCYCLE81(5,0,1,-10,,0)\nG0 Z50\nX20 Y20\nSUPA G0 Z0\nG0 X1 Y1\n"
-                "MCALL CYCLE82(5,0,1,-10,,1)\nX30 Y30\nX40\nMCALL\n");
+  auto b = read(
+      "G0 X10 Y10 Z5\nCYCLE81(5,0,1,-10,,0)\nG0 Z50\nX20 Y20\nSUPA G0 Z0\nG0 X1 Y1\n"
+      "MCALL CYCLE82(5,0,1,-10,,1)\nX30 Y30\nX40\nMCALL\n");
   EXPECT_EQ(b[1].notice_clause, "NC-CYCLE-1");
   EXPECT_FALSE(b[1].moves_in_plane());
-  EXPECT_TRUE(b[2].notice.empty());  // a drilling cycle leaves only Z unknown, and N3 programs it
+  EXPECT_TRUE(b[2].notice.empty());            // a drilling cycle leaves only Z unknown, and N3 programs it
   EXPECT_EQ(b[2].start, pt("10", "10", "5"));  // starts where the tool was before the cycle
   EXPECT_TRUE(b[3].notice.empty());
   EXPECT_FALSE(b[4].words.programs_any_axis());  // SUPA's Z is not a move

@@ -22,7 +22,7 @@ IPoint operator-(const IPoint& p, const IPoint& q);
 IPoint operator*(const Interval& k, const IPoint& p);
 Interval dot(const IPoint& p, const IPoint& q);
 Interval cross(const IPoint& p, const IPoint& q);
-IPoint perp(const IPoint& p);  // turned by +90°
+IPoint perp(const IPoint& p);                     // turned by +90°
 IPoint turned(const IPoint& p, Decimal degrees);  // turned counter-clockwise (NC-GRID-1 sines)
 Interval norm(const IPoint& p);
 

@@ -33,7 +33,7 @@ class Interval {
   friend Interval operator*(const Interval& a, const Interval& b);
   friend Interval operator/(const Interval& a, const Interval& b);  // throws Undecided if b may be 0
   friend Interval operator-(const Interval& a);
-  friend Interval sqrt(const Interval& a);                 // of max(a, 0): a rounding error below 0 is 0
+  friend Interval sqrt(const Interval& a);                      // of max(a, 0): a rounding error below 0 is 0
   friend Interval atan2(const Interval& y, const Interval& x);  // radians
 
   // Sine and cosine of an angle in degrees; exact where the value is rational (multiples of 30°,

@@ -12,6 +12,7 @@
 #include "interpreter_record.hpp"
 #include "interpreter_text.hpp"
 #include "nc_expression.hpp"
+#include "nc_vocabulary.hpp"
 
 namespace cutcom {
 
@@ -301,8 +302,22 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       indices = values(s, e, ']', lookup);
       k = skip_space(s, e);
     }
+    std::string raw_index;  // an address word's index (SPOS[1]=, ACC[X]=): kept as written
+    if (indexed && !variable && !tool_data && (n[0] != '$' || is_machine_output(n))) {
+      std::size_t close = s.find(']', k);
+      if (close != std::string_view::npos) {
+        std::size_t after_index = skip_space(s, close + 1);
+        if (after_index < s.size() && s[after_index] == '=' &&
+            !(after_index + 1 < s.size() && s[after_index + 1] == '=')) {
+          for (char c : s.substr(k, close + 1 - k))
+            if (c != ' ' && c != '\t') raw_index += upper(c);
+          k = after_index;
+          plan.reset();
+        }
+      }
+    }
     bool assignment = k < s.size() && s[k] == '=' && !(k + 1 < s.size() && s[k + 1] == '=');
-    if (n[0] == '$' && !tool_data) assignment = false;
+    if (n[0] == '$' && !tool_data && raw_index.empty()) assignment = false;
     if (!assignment) {
       if (variable && !indexed && !is_r_parameter(n))
         throw InputError(cx().line, static_cast<int>(start) + 1,
@@ -367,6 +382,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     // evaluated and written on the grid (NC-PARAM-GRID-1). AC(...)/IC(...) keep their wrapper.
     words = true;
     out.append(s, space, j - space);
+    out += raw_index;
     if (!indices.empty()) {
       out += '[';
       for (std::size_t q = 0; q < indices.size(); ++q) out += (q ? "," : "") + grid_text(indices[q], cx().line, start);

@@ -12,11 +12,20 @@ namespace cutcom {
 
 namespace {
 
-constexpr std::string_view kActionKeywords[] = {"SOFT",    "BRISK", "DRIVE",  "FFWON",   "FFWOF",    "CFC",
-                                                "CFTCP",   "CFIN",  "COMPON", "COMPCAD", "COMPCURV", "COMPOF",
-                                                "TRAFOOF", "UPATH", "SPATH",  "CUT2D",   "SOFTA",    "BRISKA"};
-constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA"};
-constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS"};
+constexpr std::string_view kActionKeywords[] = {
+    "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN", "COMPON", "COMPCAD", "COMPCURV", "COMPOF",
+    "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA",
+    // NC-WORD-7: single block and display suppression, path and feed modes, orientation and tool
+    // offset references, rotations off, spindle position control: nothing of the 2D path.
+    "SBLOF", "SBLON", "DISPLOF", "DISPLON", "CP", "PTP", "PTPG0", "FNORM", "ORIWKS", "ORIMKS", "TOWSTD", "PAROTOF",
+    "TOROTOF", "SPCON", "SPCOF"};
+constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
+                                              // NC-WORD-7: compressor tolerances, axis dynamics
+                                              "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM"};
+constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
+                                             // NC-WORD-7: channel coordination, piece count, feed group
+                                             "WAITM", "WAITMC", "WAITE", "WAITS", "SETM", "CLEARM", "SETPIECE",
+                                             "FGROUP"};
 
 // Known SINUMERIK words cutcom does not simulate, and why (the message names the family).
 struct Unsupported {
@@ -93,6 +102,12 @@ NamedWord classify_named_word(std::string_view n) {
   for (const Unsupported& u : kUnsupported)
     if (u.word == n) return NamedWord::kNotSimulated;
   return NamedWord::kUnknown;
+}
+
+bool is_machine_output(std::string_view n) {
+  static constexpr std::string_view kOutputs[] = {"$A_OUT", "$A_OUTA", "$A_DBB",     "$A_DBW",
+                                                  "$A_DBD", "$A_DBR",  "$AC_MARKER", "$AC_PARAM"};
+  return contains(kOutputs, n);
 }
 
 bool is_action_value_wrapper(std::string_view n) {

@@ -21,6 +21,8 @@ enum class NamedWord {
 
 NamedWord classify_named_word(std::string_view upper_name);
 bool is_action_value_wrapper(std::string_view upper_name);  // DC, ACP, ACN, AC, IC
+// NC-WORD-7: a PLC interface or synchronized-action variable a program writes ($A_OUT, $A_DBB, …).
+bool is_machine_output(std::string_view upper_name);
 
 // "'X' is SINUMERIK NC that cutcom does not simulate (what)".
 std::string unsupported_message(std::string_view word, std::string_view what = {});

@@ -261,7 +261,9 @@ class WordLexer {
       std::size_t at = i_;
       std::string fn = letters();
       if (!is_action_value_wrapper(fn))
-        fail(fmt::format("{} needs a number: a variable or an expression ('{}') is written with '=' ({}=…)", what, fn, what), at);
+        fail(fmt::format("{} needs a number: a variable or an expression ('{}') is written with '=' ({}=…)", what, fn,
+                         what),
+             at);
       skip_space();
       if (peek() != '(') fail(fmt::format("{}: '(' expected after {}", what, fn));
       ++i_;

@@ -123,11 +123,16 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   switch (classify_named_word(n)) {
     case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, TRAFOOF, …
       return add_text_action(n, at);
-    case NamedWord::kActionValue: {  // NC-WORD-5/3: ADIS=, ADISPOS=, LIMS=, SPOS=, SPOS[n]=
+    case NamedWord::kActionValue: {  // NC-WORD-5/3/7: ADIS=, LIMS=, SPOS=, SPOS[n]=, ACC[X]=
       if (peek() == '[') {
         ++i_;
         skip_space();
-        digits(n + " index");
+        if (is_letter(peek())) {  // an axis: ACC[X], VELOLIM[Z]
+          std::string axis = letters();
+          name_tail(axis);
+        } else {
+          digits(n + " index");
+        }
         skip_space();
         if (peek() != ']') fail(fmt::format("{}: ']' expected", n));
         ++i_;
@@ -136,7 +141,9 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
       action_value(n);
       return add_text_action(written(at), at);
     }
-    case NamedWord::kActionCall:  // NC-WORD-6: MSG("…"), WORKPIECE(…), GROUP_BEGIN(…), CYCLE832(…)
+    case NamedWord::kActionCall:  // NC-WORD-6/7: MSG("…"), WORKPIECE(…), CYCLE832(…), WAITM(…)
+      skip_space();
+      if (n == "WAITS" && peek() != '(') return add_text_action(n, at);  // all spindles
       balanced_arguments(n, at);
       return add_text_action(written(at), at);
     case NamedWord::kDiameter:  // NC-DIAM-1

@@ -1,4 +1,5 @@
 // NC-LEX-6, TOOL-NAME-1: tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME" in a block.
+#include "nc_vocabulary.hpp"
 #include "word_lexer.hpp"
 
 namespace cutcom::lexer {
@@ -20,6 +21,14 @@ void WordLexer::system_variable() {
     return tool_edge_data(p, at);
   }
   if (n == "TC_TP2") return tool_name_data(at);
+  if (is_machine_output(full)) {  // NC-WORD-7: $A_OUT[n]=v, $A_DBB[n]=v, …: the machine's, kept as written
+    index_open(full);
+    digits(full + " index");
+    index_close();
+    if (!equals()) fail(fmt::format("{}[n] is written with '=' (a program cannot read it in cutcom)", full), at);
+    number(full + " value");
+    return add_text_action(written(at), at);
+  }
   if (n == "TC_TP1" || n == "TC_TP3" || n == "TC_TP4" || n == "TC_TP5" || n == "TC_TP6" || n == "TC_TP7" ||
       n == "TC_TP8" || n == "TC_TP9" || n == "TC_TP10" || n == "TC_TP11") {
     return ignored_tool_parameter(full);
