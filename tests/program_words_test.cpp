@@ -93,6 +93,25 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_THROW(read("WAITM 1\n"), InputError);  // a call needs its arguments in (…)
 }
 
+// covers: NC-WORD-8
+TEST(ProgramWords, RotaryAxesPositionAsActions) {
+  auto b = read("R1=45\nG0 X0 Y0\nA90 C=ACP(R1)\nB=IC(-5) POS[A]=0 POSA[C]=R1*2 FA[A]=1000\nG1 X10 F100\n");
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"A90", "C=ACP(45)"}));
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"B=IC(-5)", "POS[A]=0", "POSA[C]=90", "FA[A]=1000"}));
+  EXPECT_FALSE(b[1].moves_in_plane());
+  EXPECT_EQ(b[3].end.x.to_string(), "10");
+  // With X, Y or Z in the same block: simultaneous 4/5-axis motion, not simulated.
+  for (const char* bad : {"G1 X10 A30 F100\n", "G1 A30 X10 F100\n", "POS[X]=10\n"}) {
+    try {
+      read(bad);
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("not simulate"), std::string::npos) << e.what();
+    }
+  }
+}
+
 // covers: NC-WORD-4
 TEST(ProgramWords, DwellTakesItsFAsTimeNotFeed) {
   auto b = read("G1 X10 F300\nG4 F2\nX20\n");

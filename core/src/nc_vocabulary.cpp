@@ -21,7 +21,9 @@ constexpr std::string_view kActionKeywords[] = {
     "TOROTOF", "SPCON", "SPCOF"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
                                               // NC-WORD-7: compressor tolerances, axis dynamics
-                                              "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM"};
+                                              "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM",
+                                              // NC-WORD-8: rotary axes as positioning axes, their feed
+                                              "POS", "POSA", "FA"};
 constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
                                              // NC-WORD-7: channel coordination, piece count, feed group
                                              "WAITM", "WAITMC", "WAITE", "WAITS", "SETM", "CLEARM", "SETPIECE",

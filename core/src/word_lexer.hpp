@@ -319,6 +319,9 @@ class WordLexer {
   void word();
   // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
   void tool(std::size_t at);
+  void rotary_axis(const std::string& n, std::size_t at);
+  void plane_axis_after_rotary(std::size_t at);
+  static std::string rotary_with_plane_axes(const std::string& n);
   // System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
   void system_variable();
   void index_open(const std::string& what);
@@ -331,6 +334,7 @@ class WordLexer {
 
   std::string_view s_;
   std::size_t i_ = 0;
+  std::size_t rotary_at_ = std::string_view::npos;  // NC-WORD-8: where a rotary axis word stands
   int line_;
   BlockWords& out_;
   unsigned groups_ = 0;

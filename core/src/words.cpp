@@ -127,9 +127,14 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
       if (peek() == '[') {
         ++i_;
         skip_space();
-        if (is_letter(peek())) {  // an axis: ACC[X], VELOLIM[Z]
+        if (is_letter(peek())) {  // an axis: ACC[X], VELOLIM[Z], POS[A]
+          std::size_t axis_at = i_;
           std::string axis = letters();
           name_tail(axis);
+          if ((n == "POS" || n == "POSA") && axis != "A" && axis != "B" && axis != "C")  // NC-WORD-8
+            fail(fmt::format("{}[{}]: {} as a positioning axis is SINUMERIK NC that cutcom does not simulate", n, axis,
+                             axis),
+                 axis_at);
         } else {
           digits(n + " index");
         }
@@ -246,11 +251,18 @@ void WordLexer::word() {
       if (v.sign() < 0) fail("feed must not be negative", at);
       return set_once(out_.feed, v, "F", at);
     }
+    case 'A':
+    case 'B':
+    case 'C':
+      return rotary_axis(n, at);
     case 'X':
+      plane_axis_after_rotary(at);
       return positional(out_.axis[0], "X", at, true, false);
     case 'Y':
+      plane_axis_after_rotary(at);
       return positional(out_.axis[1], "Y", at, true, false);
     case 'Z':
+      plane_axis_after_rotary(at);
       return positional(out_.axis[2], "Z", at, true, false);
     case 'I':
     case 'J':
@@ -275,6 +287,29 @@ void WordLexer::word() {
       break;
   }
   fail(unknown_message(n), at);
+}
+
+// NC-WORD-8: a rotary axis A, B or C (A90, A=DC(90), C=ACP(45), B=IC(-5)) positions the workpiece
+// or the head; the path is shown in the workpiece system, so the word is an action, kept as
+// written. Moved together with X, Y or Z (4/5-axis motion) it is not simulated.
+void WordLexer::rotary_axis(const std::string& n, std::size_t at) {
+  for (const AxisWord& a : out_.axis)
+    if (a.present) fail(rotary_with_plane_axes(n), at);
+  equals();
+  action_value(n);
+  rotary_at_ = at;
+  add_text_action(written(at), at);
+}
+
+void WordLexer::plane_axis_after_rotary(std::size_t at) {
+  if (rotary_at_ != std::string_view::npos) fail(rotary_with_plane_axes(std::string(1, s_[rotary_at_] & ~0x20)), at);
+}
+
+std::string WordLexer::rotary_with_plane_axes(const std::string& n) {
+  return fmt::format(
+      "the rotary axis {} moving with X, Y or Z in one block (4/5-axis motion) is SINUMERIK NC that cutcom does "
+      "not simulate; a block positioning {} alone is kept as an action",
+      n, n);
 }
 
 // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
