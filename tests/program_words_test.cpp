@@ -89,8 +89,11 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_EQ(actions(o[0]), (std::vector<std::string>{"$A_DBB[3]=1", "$A_OUT[2]=4", "$AC_MARKER[1]=0"}));
   EXPECT_THROW(read("R1=$A_IN[1]\n"), InputError);
   EXPECT_THROW(read("$A_DBB[3]\n"), InputError);
-  EXPECT_THROW(read("ACC[X]\n"), InputError);   // a value needs '='
-  EXPECT_THROW(read("WAITM 1\n"), InputError);  // a call needs its arguments in (…)
+  auto g = read("G26 S3000\nG25 S20\n");
+  EXPECT_EQ(actions(g[0]), (std::vector<std::string>{"G26", "S3000"}));
+  EXPECT_THROW(read("G26 X100 Y100\n"), InputError);  // the working area: not simulated
+  EXPECT_THROW(read("ACC[X]\n"), InputError);         // a value needs '='
+  EXPECT_THROW(read("WAITM 1\n"), InputError);        // a call needs its arguments in (…)
 }
 
 // covers: NC-WORD-8

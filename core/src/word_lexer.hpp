@@ -322,6 +322,12 @@ class WordLexer {
   void rotary_axis(const std::string& n, std::size_t at);
   void plane_axis_after_rotary(std::size_t at);
   static std::string rotary_with_plane_axes(const std::string& n);
+  static std::string area_limit_message(int g) {
+    return fmt::format(
+        "G{} with axis words (a programmable working area limitation) is SINUMERIK NC that cutcom does not "
+        "simulate; G{} S… (a spindle speed limit) is kept as an action",
+        g, g);
+  }
   // System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
   void system_variable();
   void index_open(const std::string& what);
@@ -335,6 +341,7 @@ class WordLexer {
   std::string_view s_;
   std::size_t i_ = 0;
   std::size_t rotary_at_ = std::string_view::npos;  // NC-WORD-8: where a rotary axis word stands
+  int area_limit_ = 0;                              // NC-WORD-8: G25 or G26 in the block
   int line_;
   BlockWords& out_;
   unsigned groups_ = 0;

@@ -302,6 +302,7 @@ void WordLexer::rotary_axis(const std::string& n, std::size_t at) {
 }
 
 void WordLexer::plane_axis_after_rotary(std::size_t at) {
+  if (area_limit_) fail(area_limit_message(area_limit_), at);
   if (rotary_at_ != std::string_view::npos) fail(rotary_with_plane_axes(std::string(1, s_[rotary_at_] & ~0x20)), at);
 }
 

@@ -29,7 +29,7 @@ void WordLexer::g_code(std::size_t at) {
       if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
       return group(o.motion, Motion::kArcCcw, "motion");
     case 4:  // NC-WORD-4: dwell; its F or S is the time or the revolutions
-      g_group(kGroupDwell, "non-modal (G4/G74/G75)", at);
+      g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       o.dwell = true;
       return;
     case 9:  // NC-WORD-5: exact stop for this block
@@ -84,9 +84,16 @@ void WordLexer::g_code(std::size_t at) {
       g_group(kGroupUnits, "units", at);
       o.units = Units::kG710;
       return;
+    case 25:
+    case 26:  // NC-WORD-8: spindle speed limits (with S); with axes, the working area: not simulated
+      g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
+      for (const AxisWord& a : o.axis)
+        if (a.present) fail(area_limit_message(g), at);
+      area_limit_ = g;
+      return add_text_action(fmt::format("G{}", g), at);
     case 74:
     case 75:  // NC-CYCLE-1: reference point / fixed point approach
-      g_group(kGroupDwell, "non-modal (G4/G74/G75)", at);
+      g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       o.not_simulated = fmt::format("G{}", g);
       return;
     case 90:
