@@ -355,6 +355,10 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   if (!open_el.arc && !cand.arc && open.exact && c.exact) {
     std::optional<ExactProducts> p = exact_products(open.delta, c.delta);
     parallel = p && p->cross == 0;
+  } else if (!open_el.arc && !cand.arc) {
+    // Lines built on one tangent (SAR lines at the two ends of a full circle: campaign 20261207,
+    // case 314401) lie on one line for ref; in double they cross anywhere along it.
+    parallel = on_one_line(cu, cv);
   }
   bool found = !parallel && nearest_intersection(cu, cv, start, cand.start_tangent(), y);
   bool valid = false;

@@ -38,7 +38,8 @@ bool Engine::stopped() const { return state_->trace.stopped(); }
 
 void Engine::push(const Block& b) {
   if (stopped()) return;
-  if (!b.notice.empty()) state_->sink.notice({b.words.line, b.notice_clause, b.notice, b.words.source});  // the reader's
+  if (!b.notice.empty())
+    state_->sink.notice({b.words.line, b.notice_clause, b.notice, b.words.source});  // the reader's
   state_->sar.take(b);
 }
 

@@ -164,6 +164,13 @@ double corner_gap(const Carrier& u, const Carrier& v, double r) {
   return r == 0 || misses_within_rounding(u, v, gap) ? std::min(gap, 0.0) : gap;
 }
 
+bool on_one_line(const Carrier& u, const Carrier& v) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  Vec2 du = (1.0 / norm(u.direction)) * u.direction, dv = (1.0 / norm(v.direction)) * v.direction;
+  double size = std::fabs(u.point.a) + std::fabs(u.point.b) + std::fabs(v.point.a) + std::fabs(v.point.b);
+  return std::fabs(cross(du, dv)) <= 16 * eps && std::fabs(cross(du, v.point - u.point)) <= 64 * eps * size;
+}
+
 // The sign is that of the quantity carrier_intersections decides on (PROP-BOUNDARY-1: the
 // branch "meet" or "miss" must agree with the margin traced), the size the distance in mm.
 double carrier_gap(const Carrier& u, const Carrier& v) {

@@ -71,6 +71,8 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
 // their gap as a margin (TRC-ARC-CORNER-1).
 bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out);
 double corner_gap(const Carrier& u, const Carrier& v, double r);
+// Two line carriers parallel and on one line within the rounding of their data.
+bool on_one_line(const Carrier& u, const Carrier& v);
 // All points common to two carriers (0, 1 or 2; tangency gives one).
 int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]);
 // <= 0 when two carriers (at least one a circle) meet: see ref's carrier_gap.
