@@ -707,5 +707,25 @@ TEST(Parametric, FrameComponentsAndSettableFramesAsValues) {
   EXPECT_EQ(error_line("R1=$P_ACTFRAME[X,TR]\n", "frame variable $P_ACTFRAME is not simulated"), 1);
 }
 
+// covers: NC-PARAM-EXPR-5 NC-PARAM-SYS-1
+TEST(Parametric, StringFunctionsAndMoreSystemVariables) {
+  EXPECT_EQ(end_x("G1 X=STRLEN(\"ABC\") F100\n"), "3");
+  EXPECT_EQ(end_x("DEF STRING[10] S1=\"ABCD\"\nDEF STRING[10] S2\nS2=SUBSTR(S1,1,2)\n"
+                  "G1 X=STRLEN(S2)*10+INDEX(S2,\"C\") F100\n"),
+            "21");
+  EXPECT_EQ(end_x("G1 X=RINDEX(\"ABAB\",\"A\")+MINDEX(\"XYZ\",\"ZY\")*10+MATCH(\"ABC\",\"Q\")*100 F100\n"), "-88");
+  EXPECT_EQ(end_x("DEF STRING[9] S1\nS1=TOUPPER(\"ab\")<<TOLOWER(\"CD\")\nG1 X=MATCH(S1,\"Bc\") F100\n"), "1");
+  EXPECT_EQ(end_x("G1 X=NUMBER(\" -1.5EX2 \")+ISNUMBER(\"12\")+ISNUMBER(\"1A\")*10 F100\n"), "-149");
+  EXPECT_EQ(error_line("R1=NUMBER(\"x\")\n", "NUMBER: \"x\" is not a number"), 1);
+  EXPECT_EQ(error_line("R1=INDEX(\"ABC\",\"BC\")\n", "argument 2 must be one character"), 1);
+  EXPECT_EQ(error_line("R1=STRLEN(5)\n", "argument 1 must be a string"), 1);
+  EXPECT_EQ(error_line("R1=SUBSTR(\"A\")\n", "takes 2 to 3 arguments"), 1);
+  // $PI, $P_F, $P_OFFN; $TC_DPn gives what was assigned, also the lengths.
+  EXPECT_EQ(end_x("G1 X=ROUND($PI*1000) F100\n"), "3142");
+  EXPECT_EQ(end_x("G1 F250\nOFFN=0.5\nG1 X=$P_F+$P_OFFN\n"), "250.5");
+  EXPECT_EQ(end_x("$TC_DP3[1,1]=150\n$TC_DP6[1,1]=4\nG1 X=$TC_DP3[1,1]+$TC_DP6[1,1]+$TC_DP12[1,1] F100\n"), "154");
+  EXPECT_EQ(error_line("R1=$TC_DP3[7,1]\n", "tool 7 has no edge 1"), 1);
+}
+
 }  // namespace
 }  // namespace cutcom::test

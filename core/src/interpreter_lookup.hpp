@@ -60,6 +60,10 @@ class InterpreterLookup : public ExpressionParser::Lookup {
                              n, n == "$P_UIFR" ? "n," : ""));
       if (!v && n.find("FRAME") != std::string::npos)
         fail(at, fmt::format("the frame variable {} is not simulated ($P_PFRAME, $P_UIFR and $P_IFRAME are)", n));
+      if (!v && n.rfind("$TC_DP", 0) == 0 && idx.size() == 2 && idx[0].type != NcValue::Type::kString &&
+          idx[1].type != NcValue::Type::kString)
+        fail(at, fmt::format("{}[{},{}]: tool {} has no edge {} (no data was assigned to it)", n, idx[0].number,
+                             idx[1].number, idx[0].number, idx[1].number));
       if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));
       return NcValue::real(*v);
     }

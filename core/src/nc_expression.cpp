@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 
@@ -585,8 +587,75 @@ NcValue ExpressionParser::function(const std::string& n, const std::vector<NcVal
     need(3);  // BOUND(minimum, maximum, value)
     return NcValue::real(std::min(std::max(x(2), x(0)), x(1)));
   }
+  if (NcValue v; string_function(n, a, at, v)) return v;
   throw InputError(line_, static_cast<int>(at) + 1,
                    fmt::format("'{}(' is not a function cutcom evaluates (NC-PARAM-EXPR-2 lists them)", n));
+}
+
+// NC-PARAM-EXPR-5: the string functions; positions count from 0, -1 when nothing is found.
+bool ExpressionParser::string_function(const std::string& n, const std::vector<NcValue>& a, std::size_t at,
+                                       NcValue& out) {
+  auto fail = [&](const std::string& what) { throw InputError(line_, static_cast<int>(at) + 1, n + ": " + what); };
+  auto need = [&](std::size_t lo, std::size_t hi) {
+    if (a.size() < lo || a.size() > hi)
+      fail(lo == hi ? fmt::format("takes {} argument{}", lo, lo == 1 ? "" : "s")
+                    : fmt::format("takes {} to {} arguments", lo, hi));
+  };
+  auto text = [&](std::size_t k) -> const std::string& {
+    if (a[k].type != NcValue::Type::kString) fail(fmt::format("argument {} must be a string", k + 1));
+    return a[k].text;
+  };
+  auto character = [&](std::size_t k) {  // a CHAR (its code) or a string of one character
+    if (a[k].type == NcValue::Type::kString) {
+      if (a[k].text.size() != 1) fail(fmt::format("argument {} must be one character", k + 1));
+      return a[k].text[0];
+    }
+    double c = as_number(a[k], line_, at);
+    if (c < 0 || c > 255 || c != std::trunc(c)) fail(fmt::format("argument {} is not a character code", k + 1));
+    return static_cast<char>(static_cast<int>(c));
+  };
+  auto position = [](std::size_t p) {
+    return NcValue::integer(p == std::string::npos ? -1.0 : static_cast<double>(p));
+  };
+  if (n == "STRLEN") return need(1, 1), out = NcValue::integer(static_cast<double>(text(0).size())), true;
+  if (n == "INDEX") return need(2, 2), out = position(text(0).find(character(1))), true;
+  if (n == "RINDEX") return need(2, 2), out = position(text(0).rfind(character(1))), true;
+  if (n == "MINDEX") return need(2, 2), out = position(text(0).find_first_of(text(1))), true;
+  if (n == "MATCH") return need(2, 2), out = position(text(0).find(text(1))), true;
+  if (n == "SUBSTR") {  // SUBSTR(text, start[, count])
+    need(2, 3);
+    const std::string& t = text(0);
+    double from = as_number(a[1], line_, at), count = a.size() == 3 ? as_number(a[2], line_, at) : 1e9;
+    if (from < 0 || from != std::trunc(from) || count < 0 || count != std::trunc(count))
+      fail("start and count are whole numbers from 0");
+    std::size_t f = static_cast<std::size_t>(std::min(from, static_cast<double>(t.size())));
+    out = NcValue::string(t.substr(f, static_cast<std::size_t>(std::min(count, 1e9))));
+    return true;
+  }
+  if (n == "TOUPPER" || n == "TOLOWER") {
+    need(1, 1);
+    std::string t = text(0);
+    for (char& c : t)
+      c = n == "TOUPPER" ? static_cast<char>(std::toupper(static_cast<unsigned char>(c)))
+                         : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out = NcValue::string(std::move(t)), true;
+  }
+  if (n == "NUMBER" || n == "ISNUMBER") {  // a decimal number with an optional sign and EX exponent
+    need(1, 1);
+    std::string t = text(0);
+    std::size_t b = t.find_first_not_of(' '), e = t.find_last_not_of(' ');
+    t = b == std::string::npos ? std::string() : t.substr(b, e - b + 1);
+    std::size_t ex = t.find("EX");
+    if (ex != std::string::npos) t.replace(ex, 2, "e");
+    double v = 0;
+    const char* first = t.data() + (!t.empty() && t[0] == '+' ? 1 : 0);
+    auto [end, ec] = std::from_chars(first, t.data() + t.size(), v);
+    bool ok = !t.empty() && ec == std::errc() && end == t.data() + t.size() && std::isfinite(v);
+    if (n == "ISNUMBER") return out = NcValue::boolean(ok), true;
+    if (!ok) fail(fmt::format("\"{}\" is not a number", text(0)));
+    return out = NcValue::real(v), true;
+  }
+  return false;
 }
 
 }  // namespace cutcom

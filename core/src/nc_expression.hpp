@@ -82,6 +82,7 @@ class ExpressionParser {
   std::vector<NcValue> arguments(char close);
   NcValue frame_function(const std::string& name, std::size_t at);
   NcValue function(const std::string& name, const std::vector<NcValue>& args, std::size_t at);
+  bool string_function(const std::string& n, const std::vector<NcValue>& args, std::size_t at, NcValue& out);
   static std::string text_of(const NcValue& v);
 
   static constexpr int kMaxDepth = 64;

@@ -2,6 +2,7 @@
 // of blocks into exact positions in one coordinate system, and the tool data in force.
 #include <fmt/format.h>
 
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -86,6 +87,9 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   bool inch = units_ == Units::kG70 || units_ == Units::kG700;
   auto in_units = [&](const Decimal& v) { return inch ? v.to_double() / 25.4 : v.to_double(); };
   if (n == "$P_TOOLR") return in_units(state_.edge_radius + state_.edge_wear);
+  if (n == "$PI") return std::numbers::pi;          // NC-PARAM-SYS-1: the constant, as the control's REAL
+  if (n == "$P_F") return state_.feed.to_double();  // the feed programmed last (F)
+  if (n == "$P_OFFN") return in_units(state_.offn);
   if (n == "$P_TOOLNO") return static_cast<double>(state_.tool);
   if (n == "$P_TOOL") return static_cast<double>(state_.edge);
   if (n == "$P_EP" || n == "$AA_IW") {
@@ -116,11 +120,7 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
     const EdgeData* e = active ? tools_.find(state_.tool, state_.edge)
                                : tools_.find(std::llround(idx[0].number), std::llround(idx[1].number));
     if (!e || k < 1 || k > 25) return std::nullopt;
-    return k == 1    ? e->type.to_double()
-           : k == 2  ? e->position.to_double()
-           : k == 6  ? e->radius.to_double()
-           : k == 15 ? e->wear.to_double()
-                     : 0.0;
+    return e->values[static_cast<std::size_t>(k)].to_double();  // as assigned; 0 if never
   }
   return std::nullopt;
 }

@@ -10,6 +10,7 @@ namespace cutcom {
 
 void ToolTable::assign(const ToolDataAssignment& a) {
   EdgeData& e = edges_[{a.tool, a.edge}];
+  if (a.parameter >= 1 && a.parameter <= 25) e.values[static_cast<std::size_t>(a.parameter)] = a.value;
   switch (a.parameter) {
     case 1:
       e.type = a.value;
@@ -23,7 +24,7 @@ void ToolTable::assign(const ToolDataAssignment& a) {
     case 15:
       e.wear = a.value;
       break;
-    default:  // lengths, other wear and base values: no effect on 2D radius compensation
+    default:  // lengths, other wear and base values: no effect on 2D radius compensation (read back only)
       break;
   }
 }

@@ -26,6 +26,7 @@ void parse_block_words(std::string_view text, int line, BlockWords& out);
 // Tool data set by $TC_DPn (TOOL-DATA-1).
 struct EdgeData {
   Decimal type, position, radius, wear;  // $TC_DP1, $TC_DP2, $TC_DP6, $TC_DP15
+  std::array<Decimal, 26> values{};      // every $TC_DPn as assigned (n 1 … 25), for programs that read them
 };
 
 // The control's tool table: edges by (T, D) and names by T (TOOL-DATA-1, TOOL-NAME-1).
