@@ -1,6 +1,7 @@
 // Worked examples for circles and helices; expected coordinates derived by hand in the comments.
 #include <cmath>
 
+#include "cutcom/programmed_decisions.hpp"
 #include "support.hpp"
 
 namespace cutcom::test {
@@ -62,6 +63,28 @@ TEST(ArcExamples, TangentLineArcLineInsideTheCircle) {
   EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "concentric"));
   EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-ELEMENT-1", "fits"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-ARC-ELEMENT-1", "fits"));
+}
+
+// A circle of exactly the tool's radius, inside: its equidistant has radius 0 and collapses, in
+// both engines. The radius is |(1.682, -0.001) - (0.68, -0.001)| = 1.002 = r; in double the
+// difference is 1.0019999999999998 and the equidistant 2.2e-16 (campaign 20261208, case 169769).
+// Also with the centre corrected onto the chord's bisector (ARC-CENTRE-1): centre (1, 0.001)
+// for the chord (0,0)-(2,0) gives rho^2 = 1 + 1e-6, rho = 1.000000499999875: above r = 1.0000004,
+// below r = 1.0000005 (whose square is 1.00000100000025).
+// covers: TRC-ARC-EQ-1
+TEST(ArcExamples, ACircleOfExactlyTheToolRadiusCollapses) {
+  Runs r =
+      run_both(program("N20 G1 G41 X0.68 Y0 F100\nN30 Y-0.001\nN40 G3 X2.684 Y-0.001 I1.002 J0\n"
+                       "N50 G1 Y3\nN60 G40 X0 Y5\n",
+                       "1.002"));
+  EXPECT_TRUE(has_decision(r.ref, "TRC-ARC-EQ-1", "collapses"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-ARC-EQ-1", "collapses"));
+  EXPECT_EQ(
+      circle_radius_sign(ProgrammedCircle{{2'000'000'000, 0}, {1'000'000'000, 1'000'000}, true, 0}, 1'000'000'400), 1);
+  EXPECT_EQ(
+      circle_radius_sign(ProgrammedCircle{{2'000'000'000, 0}, {1'000'000'000, 1'000'000}, true, 0}, 1'000'000'500), -1);
+  EXPECT_EQ(circle_radius_sign(ProgrammedCircle{{0, 0}, {3'000'000'000, 4'000'000'000}, true, 0}, 5'000'000'000), 0);
+  EXPECT_EQ(circle_radius_sign(ProgrammedCircle{{0, 0}, {0, 0}, false, -2'000'000'000}, 2'000'000'000), 0);
 }
 
 // covers: TRC-ARC-EQ-1
@@ -187,9 +210,10 @@ TEST(ArcExamples, FullCircleCutARoundingPastItsStartStaysAWholeTurn) {
   // tangent, so fast's intersection lands a few 1e-12 mm from that point. Where it lands past
   // the start along N30, the arc would read as a sliver: it must end exactly at its start, a
   // whole turn, as ref's exact end does.
-  Runs r = run_both(program("N20 G1 G42 X13.19 Y-30.038 F500\nN30 G2 X13.19 Y-30.038 I8.286 J-0.4\n"
-                            "N40 G2 X26.138 Y-3.422 I37.526 J-1.798\nN50 G1 G40 X30 Y0\n",
-                            "0"));
+  Runs r =
+      run_both(program("N20 G1 G42 X13.19 Y-30.038 F500\nN30 G2 X13.19 Y-30.038 I8.286 J-0.4\n"
+                       "N40 G2 X26.138 Y-3.422 I37.526 J-1.798\nN50 G1 G40 X30 Y0\n",
+                       "0"));
   ASSERT_TRUE(r.fast_ok && r.ref_ok);
   for (const RunResult* x : {&r.fast, &r.ref}) {
     const PathElement* circle = nullptr;

@@ -144,6 +144,37 @@ ProgrammedDecision cr_circle_reach(const Block& b, MarginText text) {
   });
 }
 
+std::optional<int> circle_radius_sign(const Block& b, const Decimal& r) {
+  if (!b.centre && !b.words.cr) return std::nullopt;
+  PlaneAxes ax = plane_axes(b.state.plane);
+  auto plane = [&](const Point3& from, const Point3& to) {
+    return std::array<Int128, 2>{(coord(to, ax.abscissa) - coord(from, ax.abscissa)).units(),
+                                 (coord(to, ax.ordinate) - coord(from, ax.ordinate)).units()};
+  };
+  ProgrammedCircle c;
+  c.chord = plane(b.start, b.end);
+  c.by_centre = b.centre.has_value();
+  if (b.centre) c.to_centre = plane(b.start, *b.centre);
+  if (b.words.cr) c.cr = b.words.cr->units();
+  return circle_radius_sign(c, r.units());
+}
+
+int circle_radius_sign(const ProgrammedCircle& c, Int128 r_units) {
+  mpz_class r = mpz_class(int128_to_string(r_units));
+  if (!c.by_centre) {
+    mpz_class rho = mpz_class(int128_to_string(c.cr < 0 ? -c.cr : c.cr));
+    return sign(rho - r);
+  }
+  auto z = [](Int128 v) { return mpz_class(int128_to_string(v)); };
+  mpz_class ca = z(c.chord[0]), cb = z(c.chord[1]), ta = z(c.to_centre[0]), tb = z(c.to_centre[1]);
+  if (ca == 0 && cb == 0) return sign(ta * ta + tb * tb - r * r);  // a full circle: its centre as programmed
+  // The corrected centre m + k p (m the chord's midpoint, p its perpendicular) is rational; with
+  // L2 = |e - s|^2 and q = (2 c0 - s - e) . p:  4 L2 rho^2 = L2^2 + q^2.
+  mpz_class L2 = ca * ca + cb * cb;
+  mpz_class q = (2 * ta - ca) * (-cb) + (2 * tb - cb) * ca;
+  return sign(L2 * L2 + q * q - 4 * L2 * r * r);
+}
+
 ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, MarginText text) {
   PlaneAxes ax = plane_axes(b.state.plane);
   if (text == MarginText::kDouble) {

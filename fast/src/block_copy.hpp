@@ -27,9 +27,10 @@ struct BlockCopy {
   int sense = 1;     // +1 G3, -1 G2
   PathPoint centre;  // programmed centre (I/J/K arcs)
   bool has_centre = false;
-  double cr = 0;                  // CR= arcs
-  Int128 cr_units = 0;            // the same, exactly, in 10^-9 mm (the centre's height from integers)
-  std::array<Int128, 3> delta{};  // exact programmed displacement X Y Z, units of 1e-9 mm
+  double cr = 0;                      // CR= arcs
+  Int128 cr_units = 0;                // the same, exactly, in 10^-9 mm (the centre's height from integers)
+  std::array<Int128, 3> delta{};      // exact programmed displacement X Y Z, units of 1e-9 mm
+  std::array<Int128, 3> to_centre{};  // exact programmed centre less start (I/J/K arcs), units
   Decimal feed;
   std::array<AuxFunction, BlockWords::kMaxAux> aux{};
   int aux_count = 0;
@@ -72,6 +73,9 @@ struct BlockCopy {
     c.cr = b.words.cr ? b.words.cr->to_double() : 0;
     c.cr_units = b.words.cr ? b.words.cr->units() : 0;
     c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
+    if (b.centre)
+      c.to_centre = {(b.centre->x - b.start.x).units(), (b.centre->y - b.start.y).units(),
+                     (b.centre->z - b.start.z).units()};
     c.feed = b.state.feed;
     std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
     c.aux_count = b.words.aux_count;

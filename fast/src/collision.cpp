@@ -14,7 +14,7 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
   const Element& next = en.element;
   double sr = s * r;
   if (next.arc) {
-    en.radius = next.equidistant_radius(sr);
+    en.radius = exactly_inside(m, next, next.equidistant_radius(sr));  // TRC-ARC-EQ-1's decision
     if (!(en.radius > 0)) return decide("TRC-CD-2", m.line, "collapsed", en.radius), false;
   }
   en.normal_start = Element::offset(next.start, next.start_tangent(), sr);
@@ -25,7 +25,7 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
   };
   en.before_element = element_of(before);
   const Element& prev = en.before_element;
-  double prev_radius = prev.arc ? prev.equidistant_radius(sr) : 0;
+  double prev_radius = prev.arc ? exactly_inside(before, prev, prev.equidistant_radius(sr)) : 0;
   en.before_radius = prev_radius;
   en.vertex = prev.end;
   en.own_start = en.normal_start;

@@ -207,11 +207,29 @@ std::optional<int> Compensation::exact_room_sign(const std::array<Int128, 3>& u)
   return (d > 0) - (d < 0);
 }
 
-bool Compensation::equidistant_exists(const Block& b, const Element& e, double& radius) {
+bool Compensation::equidistant_exists(const Block& b, const BlockCopy& c, const Element& e, double& radius) {
   if (!e.arc) return true;
   radius = e.equidistant_radius(s * r);
+  radius = exactly_inside(c, e, radius);
   decide("TRC-ARC-EQ-1", b.words.line, radius > 0 ? "concentric" : "collapses", radius);
   return radius > 0;
+}
+
+// Inside a programmed circle, rho - r is a decision on programmed decimals (decided in core) where
+// the doubles cannot tell: a circle of exactly the tool's radius collapses (campaign 20261208,
+// case 169769). Only near the tie, so no exact arithmetic runs per block.
+double Compensation::exactly_inside(const BlockCopy& c, const Element& e, double radius) const {
+  if (!c.exact || !c.arc || s * e.sense < 0 || std::fabs(radius) > 1e-9 * (e.radius + r)) return radius;
+  ProgrammedCircle pc;
+  pc.chord = {c.delta[static_cast<std::size_t>(axes.abscissa)], c.delta[static_cast<std::size_t>(axes.ordinate)]};
+  pc.to_centre = {c.to_centre[static_cast<std::size_t>(axes.abscissa)],
+                  c.to_centre[static_cast<std::size_t>(axes.ordinate)]};
+  pc.by_centre = c.has_centre, pc.cr = c.cr_units;
+  int sg = circle_radius_sign(pc, r_units);
+  if (sg == 0) return 0;
+  if ((sg > 0) != (radius > 0))
+    return sg > 0 ? std::numeric_limits<double>::denorm_min() : -std::numeric_limits<double>::denorm_min();
+  return radius;
 }
 
 void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, bool at_normal_start) {
@@ -248,7 +266,7 @@ void Compensation::compensation_active(const Block& b) {
 void Compensation::corner(const Block& b, const BlockCopy& copy) {
   Element next = element_of(copy);
   double next_radius = 0;
-  if (!equidistant_exists(b, next, next_radius)) return start_look_ahead(b);
+  if (!equidistant_exists(b, copy, next, next_radius)) return start_look_ahead(b);
   Vec2 v = open_el.end;
   Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
   decide_kind_exactly(open, copy, c);
@@ -344,7 +362,7 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   const BlockCopy& c = *current;
   Element cand = element_of(c);
   double radius = 0;
-  if (!equidistant_exists(b, cand, radius)) return pass_over(c);
+  if (!equidistant_exists(b, c, cand, radius)) return pass_over(c);
   Vec2 start = Element::offset(cand.start, cand.start_tangent(), s * r);
   Vec2 y;
   Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(cand, radius);

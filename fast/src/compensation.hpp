@@ -203,7 +203,8 @@ class Compensation {
 
   // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; a collapsed one is passed
   // over by the look-ahead.
-  bool equidistant_exists(const Block& b, const Element& e, double& radius);
+  bool equidistant_exists(const Block& b, const BlockCopy& c, const Element& e, double& radius);
+  double exactly_inside(const BlockCopy& c, const Element& e, double radius) const;
 
   void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, bool at_normal_start = false);
 

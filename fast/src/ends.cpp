@@ -27,7 +27,7 @@ void Compensation::approach(const Block& b) {
   has_prev = true;
   Element e = element_of(first);
   double radius = 0;
-  if (!equidistant_exists(b, e, radius)) return raise(10751, b.words);
+  if (!equidistant_exists(b, first, e, radius)) return raise(10751, b.words);
   if (selection.kont) {
     // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
     Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt, std::nullopt};
@@ -242,7 +242,7 @@ bool Compensation::approach_further_ahead(const Block& b, const BlockCopy& m) {
   Element e = element_of(m);
   double radius = 0;
   if (e.arc) {
-    radius = e.equidistant_radius(s * r);
+    radius = exactly_inside(m, e, e.equidistant_radius(s * r));
     if (!(radius > 0)) return false;
   }
   Vec2 hit;

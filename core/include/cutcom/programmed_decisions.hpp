@@ -4,6 +4,7 @@
 // themselves, so such a decision can never part them (no knife edge of fast's own).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,5 +65,17 @@ ProgrammedDecision cr_circle_reach(const Block& b, MarginText text);
 // ARC-CENTRE-2: start and end lie on one circle about the programmed centre within
 // max(MD21000, MD21010 x start radius); margin |end radius - start radius| - tolerance.
 ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, MarginText text);
+// TRC-ARC-EQ-1 on programmed decimals: the sign of rho - r, rho the radius of the circle block `b`
+// as the engines take it (|CR|, or the distance of the start from the centre corrected onto the
+// chord's bisector by ARC-CENTRE-1), r >= 0. Empty when b has neither centre nor CR.
+std::optional<int> circle_radius_sign(const Block& b, const Decimal& r);
+// The same from the circle's plane components in units of 10^-9 mm: the chord e - s and the
+// programmed centre less s (by_centre), or CR.
+struct ProgrammedCircle {
+  std::array<Int128, 2> chord{}, to_centre{};
+  bool by_centre = true;
+  Int128 cr = 0;
+};
+int circle_radius_sign(const ProgrammedCircle& c, Int128 r_units);
 
 }  // namespace cutcom
