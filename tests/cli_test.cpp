@@ -492,7 +492,7 @@ TEST(Cli, DefinitionsFileAndASubprogramRunOnItsOwn) {
   std::ofstream(dir + "/bad.def") << "DEF REAL _OK\nG1 X1\n";
   Result bad = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/bad.def", true);
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.out.find("bad.def:2:1: a definitions file holds DEF lines only"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("bad.def:2:1: a definitions file holds DEF and DEFINE lines only"), std::string::npos) << bad.out;
   Result args = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/gud.def --args \"4, 3, 1\"", true);
   EXPECT_EQ(args.status, 2);
   EXPECT_NE(args.out.find("3 arguments given, the PROC has 2 parameters"), std::string::npos) << args.out;

@@ -727,5 +727,27 @@ TEST(Parametric, StringFunctionsAndMoreSystemVariables) {
   EXPECT_EQ(error_line("R1=$TC_DP3[7,1]\n", "tool 7 has no edge 1"), 1);
 }
 
+// covers: NC-PARAM-SUB-7
+TEST(Parametric, ExternDeclarationsAndDefineMacros) {
+  EXPECT_EQ(end_x("EXTERN CONTOUR(REAL, VAR REAL, INT)\nEXTERN HOME\nG1 X4 F100\n"), "4");
+  // A macro's name becomes its text, outside strings and comments; a later DEFINE replaces it.
+  std::istringstream in(
+      "DEFINE M_COOL AS M8\nDEFINE FIN AS G1 F=R1*2 ; a feed\nR1=150\nM_COOL MSG(\"M_COOL\") ; M_COOL\n"
+      "FIN X5\nDEFINE FIN AS G0\nFIN X7\n");
+  ProgramReader reader(in);
+  std::vector<Block> b;
+  for (Block k; reader.next(k);) b.push_back(k);
+  ASSERT_EQ(b.size(), 3u);
+  ASSERT_EQ(b[0].words.aux_count, 2);  // M8 and the MSG, whose string keeps M_COOL
+  EXPECT_EQ(b[0].state.feed.to_string(), "0");
+  EXPECT_EQ(b[1].state.feed.to_string(), "300");
+  EXPECT_EQ(b[1].end.x.to_string(), "5");
+  EXPECT_EQ(b[2].state.motion, Motion::kRapid);
+  EXPECT_EQ(error_line("DEFINE M_COOL M8\n", "DEFINE is written DEFINE name AS text"), 1);
+  EXPECT_EQ(error_line("DEFINE M_COOL AS ; nothing\n", "the macro's text is missing"), 1);
+  EXPECT_EQ(error_line("EXTERN SUB(REAL\n", "')' expected"), 1);
+  EXPECT_EQ(error_line("EXTERN SUB(REAL) X1\n", "unexpected text after the EXTERN declaration"), 1);
+}
+
 }  // namespace
 }  // namespace cutcom::test

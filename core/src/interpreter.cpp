@@ -126,6 +126,7 @@ bool Interpreter::next(std::string& text, int& line) {
       }
       bool read = getline(raw_);
       current_cached_ = last_cached_;
+      if (read && !macros_.empty()) expand_macros(raw_);
       if (!read) {
         if (!cx().frames.empty())
           throw InputError(cx().line, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");
@@ -154,6 +155,45 @@ bool Interpreter::next(std::string& text, int& line) {
     line = stack_.size() == 1 ? cx().line : stack_.front().line;  // NC-PARAM-SUB-3
     return true;
   }
+}
+
+// NC-PARAM-SUB-7: every name that is a macro, outside strings and comments, becomes its text (a
+// DEFINE line itself is left as written: a macro may be defined again).
+void Interpreter::expand_macros(std::string& line) const {
+  std::size_t rest;
+  if (first_word(line, rest) == "DEFINE") return;
+  std::string out;
+  bool changed = false;
+  for (std::size_t i = 0; i < line.size();) {
+    char c = line[i];
+    if (c == ';') {  // the comment as written
+      out.append(line, i, std::string::npos);
+      break;
+    }
+    if (c == '"') {
+      std::size_t e = line.find('"', i + 1);
+      e = e == std::string::npos ? line.size() : e + 1;
+      out.append(line, i, e - i);
+      i = e;
+      continue;
+    }
+    if (is_letter(c) || c == '_' || c == '$') {
+      std::size_t e = name_end(line, i);
+      if (e == i) e = i + 1;
+      auto m = macros_.find(upper_text(std::string_view(line).substr(i, e - i)));
+      if (m != macros_.end()) {
+        out += m->second;
+        changed = true;
+      } else {
+        out.append(line, i, e - i);
+      }
+      i = e;
+      continue;
+    }
+    out += c;
+    ++i;
+  }
+  if (changed) line = std::move(out);
 }
 
 void Interpreter::run_line(const std::string& s, std::string& out) {

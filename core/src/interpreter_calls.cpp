@@ -375,7 +375,12 @@ void Interpreter::load_definitions(std::istream& in) {
       std::size_t start = skip_space(line, 0);
       if (first.empty() && (start >= line.size() || line[start] == ';' || line[start] == '%')) continue;
       if (first == "M17" || first == "M30" || first == "M2" || first == "M02" || first == "RET") continue;
-      if (first != "DEF") throw InputError(n, static_cast<int>(start) + 1, "a definitions file holds DEF lines only");
+      if (first == "DEFINE") {  // NC-PARAM-SUB-7: macros of a definitions file (UMAC.DEF, SMAC.DEF)
+        statement(first, line, rest);
+        continue;
+      }
+      if (first != "DEF")
+        throw InputError(n, static_cast<int>(start) + 1, "a definitions file holds DEF and DEFINE lines only");
       define(line, rest, globals_);
     } catch (const InputError& e) {
       throw InputError(n, e.column(), e.detail());

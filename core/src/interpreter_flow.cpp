@@ -163,6 +163,31 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     define(s, rest, cx().variables);
     return true;
   }
+  if (k == "EXTERN") {  // NC-PARAM-SUB-7: a declaration; the subprogram is found by its file
+    std::size_t n = skip_space(s, rest), ne = name_end(s, n);
+    if (ne == n) throw InputError(cx().line, static_cast<int>(n) + 1, "EXTERN needs the subprogram's name");
+    std::size_t e = skip_space(s, ne);
+    if (e < s.size() && s[e] == '(') {
+      std::size_t close = s.find(')', e);
+      if (close == std::string_view::npos)
+        throw InputError(cx().line, static_cast<int>(e) + 1, "EXTERN: ')' expected after the parameter types");
+      e = close + 1;
+    }
+    nothing_after(e, "the EXTERN declaration");
+    return true;
+  }
+  if (k == "DEFINE") {  // NC-PARAM-SUB-7: a macro, its name replaced by its text from the next line on
+    std::size_t n = skip_space(s, rest), ne = name_end(s, n);
+    std::string name = upper_text(s.substr(n, ne - n));
+    std::size_t as = skip_space(s, ne), ae = name_end(s, as);
+    if (name.empty() || upper_text(s.substr(as, ae - as)) != "AS")
+      throw InputError(cx().line, static_cast<int>(n) + 1, "DEFINE is written DEFINE name AS text");
+    std::size_t t = skip_space(s, ae), te = std::min(s.find(';', t), s.size());
+    while (te > t && (s[te - 1] == ' ' || s[te - 1] == '\t' || s[te - 1] == '\r')) --te;
+    if (te == t) throw InputError(cx().line, static_cast<int>(t) + 1, "DEFINE: the macro's text is missing");
+    macros_[name] = std::string(s.substr(t, te - t));
+    return true;
+  }
   if (k == "PROC") {
     procedure(s, rest);
     return true;

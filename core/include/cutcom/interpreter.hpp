@@ -283,6 +283,8 @@ class Interpreter {
   std::vector<Context> stack_;
   std::map<int, double> r_;  // R parameters: global
   std::map<std::string, Variable> globals_;
+  std::map<std::string, std::string> macros_;  // NC-PARAM-SUB-7: DEFINE name AS text
+  void expand_macros(std::string& line) const;
   std::vector<std::string> source_names_{""};
   std::map<std::string, std::uint32_t> source_ids_;  // NC-PARAM-VAR-3: GUD from definition files
   std::vector<std::string> search_path_;
