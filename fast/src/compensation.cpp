@@ -156,14 +156,23 @@ bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool a
     // it turns 0 or a whole turn could not be read from its points (PATH-ELEMENT-2).
     Vec2 u = open_start - e.centre, v = end_point - e.centre;
     double nu = norm(u), nv = norm(v);
+    // "Just past" is within the error of the two points: 1e-8 of the radius for intersections of
+    // nearly touching carriers, far less for normal points and well-conditioned intersections
+    // (campaign 20261209, case 63322: a full circle opened 1.85e-7 mm before its normal start by an
+    // intersection at sine 3.7e-4 was closed into a whole turn; ref's arc turns 1e-8 rad).
+    double snap = 1e-8 * std::max(1.0, open_radius);
+    double normal = 64 * std::numeric_limits<double>::epsilon() * (nu + std::fabs(e.centre.a) + std::fabs(e.centre.b));
+    double start_error = open_at_normal_start ? normal : open_start_error >= 0 ? open_start_error : snap;
+    double end_error = at_normal_end ? normal : closing_point_error >= 0 ? closing_point_error : snap;
+    snap = std::min(snap, std::max(start_error, end_error));
     bool unreadable = std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
     double reads = signed_rotation(u, v, e.sense);
-    bool just_past = reads > 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius);
+    bool just_past = reads > 0 && norm(end_point - open_start) <= snap;
     if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end));
     // And a circle that turns less than half a turn, its end a rounding from its start (an
     // equidistant cut between two intersections of touching carriers), whose points cannot be
     // read or read as nearly a whole turn: it is its chord, a line a rounding long.
-    bool just_before = reads <= 0 && norm(end_point - open_start) <= 1e-8 * std::max(1.0, open_radius);
+    bool just_before = reads <= 0 && norm(end_point - open_start) <= snap;
     if (turn < std::numbers::pi && (just_before || unreadable)) {
       line(open, from, to, OriginKind::kOffset, open.rapid);
       return true;
@@ -238,6 +247,8 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
   open_start = start;
   open_at_normal_start = at_normal_start;
   open_radius = radius;
+  open_start_error = closing_point_error;  // the point that closed the last element opens this one
+  closing_point_error = -1;
 }
 
 void Compensation::compensation_active(const Block& b) {
@@ -277,6 +288,7 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
   if (c.kind == Corner::Kind::kOuter) circle = outer_corner_circle(b.words.line, copy.g451, c);
   if (circle) return transition_circle(copy, next, next_radius, v);
   Vec2 x;
+  double x_error = -1;  // PATH-ELEMENT-2: how far x may be off, where known
   if (c.kind == Corner::Kind::kTangent) {
     x = Element::offset(v, open_el.end_tangent(), s * r);  // both equidistants pass through it
   } else if (!open_el.arc && !next.arc) {
@@ -287,6 +299,7 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
     Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(next, next_radius);
     bool found = corner_intersection(cu, cv, v, next.start_tangent(), r, x);
     decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", corner_gap(cu, cv, r));
+    if (found) x_error = intersection_error(cu, cv, x);
     if (!found && c.kind == Corner::Kind::kOuter)
       return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
     if (!found) return raise(10751, b.words);
@@ -300,7 +313,11 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
     if (too_short) return start_look_ahead(b);
   }
   Candidate cand{&copy, &next, next_radius};
-  if (!close_open(x, BlockPlace::of(b.words), c.kind == Corner::Kind::kTangent, &cand)) return;
+  closing_point_error = x_error;
+  if (!close_open(x, BlockPlace::of(b.words), c.kind == Corner::Kind::kTangent, &cand)) {
+    closing_point_error = -1;
+    return;
+  }
   run_held_back(x);
   open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
 }

@@ -83,7 +83,11 @@ class Compensation {
   Element open_el;
   Vec2 open_start;                    // start point of its equidistant (after the previous corner)
   bool open_at_normal_start = false;  // opened at its normal start by construction (a full circle stays whole)
-  double open_radius = 0;             // arcs: radius of its equidistant
+  // PATH-ELEMENT-2: how far (mm) the open element's start and the point closing it may lie from
+  // their exact places: an intersection of carriers crossing at sine c errs by about 64 u / c of
+  // the size; -1: not known (the snap's full 1e-8 of the radius).
+  double open_start_error = -1, closing_point_error = -1;
+  double open_radius = 0;  // arcs: radius of its equidistant
   // Blocks without motion in the plane since the last traversing block (fixed capacity).
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> dummies;
   int dummy_count = 0;

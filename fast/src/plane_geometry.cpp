@@ -164,6 +164,18 @@ double corner_gap(const Carrier& u, const Carrier& v, double r) {
   return r == 0 || misses_within_rounding(u, v, gap) ? std::min(gap, 0.0) : gap;
 }
 
+double intersection_error(const Carrier& u, const Carrier& v, Vec2 x) {
+  auto unit_tangent = [&](const Carrier& c) {
+    Vec2 t = c.circle ? left_normal(x - c.point) : c.direction;
+    return (1.0 / norm(t)) * t;
+  };
+  double size = std::fabs(x.a) + std::fabs(x.b);
+  for (const Carrier* c : {&u, &v}) size += std::fabs(c->point.a) + std::fabs(c->point.b) + (c->circle ? c->radius : 0);
+  double crossing = std::fabs(cross(unit_tangent(u), unit_tangent(v)));
+  double error = 64 * std::numeric_limits<double>::epsilon() * size;
+  return crossing > 0 ? error / crossing : std::numeric_limits<double>::infinity();
+}
+
 bool on_one_line(const Carrier& u, const Carrier& v) {
   constexpr double eps = std::numeric_limits<double>::epsilon();
   Vec2 du = (1.0 / norm(u.direction)) * u.direction, dv = (1.0 / norm(v.direction)) * v.direction;
