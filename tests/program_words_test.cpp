@@ -96,7 +96,7 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_THROW(read("WAITM 1\n"), InputError);        // a call needs its arguments in (…)
 }
 
-// covers: NC-WORD-8
+// covers: NC-WORD-8 NC-ERR-3
 TEST(ProgramWords, RotaryAxesPositionAsActions) {
   auto b = read("R1=45\nG0 X0 Y0\nA90 C=ACP(R1)\nB=IC(-5) POS[A]=0 POSA[C]=R1*2 FA[A]=1000\nG1 X10 F100\n");
   ASSERT_EQ(b.size(), 4u);
@@ -111,6 +111,17 @@ TEST(ProgramWords, RotaryAxesPositionAsActions) {
       ADD_FAILURE() << "accepted: " << bad;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("not simulate"), std::string::npos) << e.what();
+    }
+  }
+  // Synchronized actions, interrupts, coupled motion, measuring: named with their family.
+  for (const char* w : {"WHEN $AA_IW[X]>10 DO $A_OUT[1]=1\n", "ID=1 WHENEVER $AA_IW[Z]<-5 DO $AC_OVR=50\n",
+                        "SETINT(1) PRIO=1 ABHEB\n", "TRAILON(Y,X)\n", "MEAS=1 G1 X10\n"}) {
+    try {
+      read(w);
+      ADD_FAILURE() << "accepted: " << w;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is SINUMERIK NC that cutcom does not simulate ("), std::string::npos)
+          << e.what();
     }
   }
 }
