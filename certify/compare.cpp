@@ -105,6 +105,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
       c.size =
           std::max({c.size, std::fabs(p->x.to_double()), std::fabs(p->y.to_double()), std::fabs(p->z.to_double())});
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
+    if (b.moves_in_plane() || b.is_sar_block()) c.plane_lines.push_back(b.words.line);
     if (b.is_sar_block() && b.words.disr) {
       // SAR-DISR-1/2: the generated element is L = DISR + r long, or of radius DISR +- r.
       double d = b.words.disr->to_double(), r = std::fabs(b.state.effective_radius().to_double());
@@ -253,6 +254,8 @@ Tolerance Tolerance::for_program(const Conditioning& c) {
   t.degrees = t.sine * 180 / 3.14159265358979323846;
   t.touching = std::sqrt(4 * c.size * t.coordinate) + t.coordinate;
   t.window = std::max(c.window, 0) + 1;
+  t.plane_lines = c.plane_lines;
+  std::sort(t.plane_lines.begin(), t.plane_lines.end());
   return t;
 }
 
@@ -403,8 +406,12 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       // Decisions about the next `window` blocks may follow from the knife edge (a corner, a
       // look-ahead, a bottleneck check reach that far): they are the knife edge's too.
       std::vector<int> later;
+      auto moves = [&](int line) {
+        return tol.plane_lines.empty() || std::binary_search(tol.plane_lines.begin(), tol.plane_lines.end(), line);
+      };
       for (std::size_t k = ir; k < ref.decisions.size(); ++k)
-        if (ref.decisions[k].line > std::max(r.line, f.line)) later.push_back(ref.decisions[k].line);
+        if (ref.decisions[k].line > std::max(r.line, f.line) && moves(ref.decisions[k].line))
+          later.push_back(ref.decisions[k].line);
       std::sort(later.begin(), later.end());
       later.erase(std::unique(later.begin(), later.end()), later.end());
       if (later.size() <= static_cast<std::size_t>(tol.window)) return knife;

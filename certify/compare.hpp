@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cutcom/block.hpp"
 #include "cutcom/sink.hpp"
@@ -14,14 +15,15 @@ namespace cutcom::props {
 
 // What the tolerances depend on, read off the program.
 struct Conditioning {
-  double size = 1;      // L: largest coordinate magnitude or radius, mm
-  double shortest = 1;  // d_min: shortest in-plane block, mm
-  double radius = 0;    // |r|, mm
-  double corner = 1;    // kappa: largest 1/(1 + cos phi) over the contour's corners
-  double crossing = 1;  // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
-                        // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
-  double reach = 0;     // largest coordinate magnitude of ref's path, mm (0: not read)
-  int window = 3;       // MD20240: blocks the look-ahead and CDON see ahead
+  double size = 1;               // L: largest coordinate magnitude or radius, mm
+  double shortest = 1;           // d_min: shortest in-plane block, mm
+  double radius = 0;             // |r|, mm
+  double corner = 1;             // kappa: largest 1/(1 + cos phi) over the contour's corners
+  double crossing = 1;           // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
+                                 // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
+  double reach = 0;              // largest coordinate magnitude of ref's path, mm (0: not read)
+  int window = 3;                // MD20240: blocks the look-ahead and CDON see ahead
+  std::vector<int> plane_lines;  // lines of the blocks that move in the plane, ascending
 };
 // `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)
 // may intersect two blocks' equidistants.
@@ -38,8 +40,11 @@ struct Tolerance {
   // After a touching decision (TRC-EDGE-5 hit, TRC-CD-2 g451-*, TRC-ARC-CORNER-1 with the margin
   // in the band): a point on nearly tangent carriers moves along them by up to sqrt(4 L band).
   double touching;
-  // PROP-DIFF-2: blocks after a knife edge whose decisions may follow from it (MD20240 + 1).
+  // PROP-DIFF-2: blocks after a knife edge whose decisions may follow from it (MD20240 + 1),
+  // counted in blocks that move in the plane (`plane_lines`; empty: every line counts), as the
+  // look-ahead and CDON count them.
   int window = 4;
+  std::vector<int> plane_lines;
   static Tolerance for_program(const Conditioning& c);
   double band(std::string_view clause) const;  // the band of a clause's margin
 };
