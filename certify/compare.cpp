@@ -215,7 +215,8 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     bool retraction = b.origin.kind == OriginKind::kRetraction && b.type == ElementType::kLine &&
                       a.origin.kind != OriginKind::kRetraction;
     if (!approach && !retraction) continue;
-    if (a.origin.sar != SarMove::kNone || b.origin.sar != SarMove::kNone) continue;  // SAR: above
+    // (A SAR lead meets its element here too where P4 lies in a later block: campaign 20261211,
+    // case 83509, 179.994 degrees, 34,860 mm out.)
     int line = (approach ? a : b).origin.line;
     if (std::none_of(ref.decisions.begin(), ref.decisions.end(), [&](const Decision& d) {
           return d.clause == "TRC-KONT-4" && d.branch == "intersection" && d.line == line;
