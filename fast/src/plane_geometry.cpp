@@ -59,6 +59,7 @@ Corner classify_corner(Vec2 t1, Vec2 t2, int side) {
 }
 
 double corner_trim(const Corner& c, int side, double radius) {
+  if (radius == 0) return 0;  // the corner itself (a reversal's tan of half the turn is infinite)
   // tan(phi/2) = sin/(1+cos) = (1-cos)/sin: the form without cancellation, chosen by cos's sign.
   double sn = side * c.sine;
   double tan_half = c.cosine >= 0 ? sn / (1 + c.cosine) : (1 - c.cosine) / sn;
