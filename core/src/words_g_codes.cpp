@@ -89,7 +89,7 @@ void WordLexer::g_code(std::size_t at) {
       g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       for (const AxisWord& a : o.axis)
         if (a.present) fail(area_limit_message(g), at);
-      area_limit_ = g;
+      area_limit_ = static_cast<int>(g);
       return add_text_action(fmt::format("G{}", g), at);
     case 74:
     case 75:  // NC-CYCLE-1: reference point / fixed point approach
