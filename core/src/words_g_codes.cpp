@@ -88,7 +88,7 @@ void WordLexer::g_code(std::size_t at) {
     case 26:  // NC-WORD-8: spindle speed limits (with S); with axes, the working area: not simulated
       g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       for (const AxisWord& a : o.axis)
-        if (a.present) fail(area_limit_message(g), at);
+        if (a.present) fail(area_limit_message(static_cast<int>(g)), at);
       area_limit_ = static_cast<int>(g);
       return add_text_action(fmt::format("G{}", g), at);
     case 74:
