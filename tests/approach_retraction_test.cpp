@@ -218,6 +218,26 @@ TEST(ApproachRetraction, KontFromBehindAfterATooShortLastBlockMeetsTheInsertedCi
   }
 }
 
+// covers: TRC-KONT-1 TRC-SIDE-1
+TEST(ApproachRetraction, KontAtASideChangeWithRadiusZeroIsDecidedOnTheProgrammedPoint) {
+  // Radius 0: after the side change the tool stands on N30's end, and N40 runs back along N50's
+  // line, so the start lies exactly on N50's tangent line: in front, margin 0. In double the unit
+  // tangent makes the cross product 1.8e-15, which with G41 read as "behind" (a circle around S).
+  Runs r = run_both(tool("0") +
+                    "N10 G0 X0 Y0 T1 D1\nN20 G1 G42 X0 Y0 F500\nN30 X-2.540 Y11.187\n"
+                    "N40 G41 KONT X7.620 Y-33.561\nN50 X-2.540 Y11.187\nN60 G40 X0 Y0\n");
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_FALSE(has_decision(*x, "TRC-KONT-1", "behind"));
+    EXPECT_FALSE(has_decision(*x, "TRC-KONT-3", "circle"));
+  }
+  for (const Decision& d : r.fast.decisions) {
+    if (d.clause == "TRC-KONT-1" && d.line == 6) EXPECT_EQ(d.margin, 0.0);
+  }
+  for (const Decision& d : r.ref.decisions) {
+    if (d.clause == "TRC-KONT-1" && d.line == 6) EXPECT_EQ(d.margin_exact, "0");
+  }
+}
+
 // covers: TRC-EDGE-7
 TEST(ApproachRetraction, KontFromBehindNotSupportedYetWithG451OrOnApproach) {
   const std::string tool10 = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=10\n";

@@ -49,9 +49,10 @@ void Compensation::change_side(const Block& b) {
   if (!close_open(end, BlockPlace::of(b.words), true)) return;
   run_held_back(end);
   PathPoint tool = xyz(end, h(copy_of(b).start));
+  bool tool_on_contour = r_units == 0;  // radius 0: the tool stands on the programmed point
   select(b);
   selection.start = tool;  // the approach starts where the tool is
-  selection_from_tool = true;
+  selection_from_tool = !tool_on_contour;
 }
 
 void Compensation::select(const Block& b) {

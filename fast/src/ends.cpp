@@ -303,11 +303,12 @@ void Compensation::retraction_pending(const Block& b) {
   }
   // Selected again: the approach starts where the tool is (as after a side change, TRC-SIDE-1).
   PathPoint tool = xyz(retract_from, h(c.start));
+  bool tool_on_contour = r_units == 0;  // radius 0: the tool stands on the programmed point
   phase = Phase::kOff;
   compensation_off(b);
   if (phase == Phase::kApproach) {
     selection.start = tool;
-    selection_from_tool = true;
+    selection_from_tool = !tool_on_contour;
   }
 }
 
