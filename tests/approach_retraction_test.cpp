@@ -231,10 +231,14 @@ TEST(ApproachRetraction, KontAtASideChangeWithRadiusZeroIsDecidedOnTheProgrammed
     EXPECT_FALSE(has_decision(*x, "TRC-KONT-3", "circle"));
   }
   for (const Decision& d : r.fast.decisions) {
-    if (d.clause == "TRC-KONT-1" && d.line == 6) EXPECT_EQ(d.margin, 0.0);
+    if (d.clause == "TRC-KONT-1" && d.line == 6) {
+      EXPECT_EQ(d.margin, 0.0);
+    }
   }
   for (const Decision& d : r.ref.decisions) {
-    if (d.clause == "TRC-KONT-1" && d.line == 6) EXPECT_EQ(d.margin_exact, "0");
+    if (d.clause == "TRC-KONT-1" && d.line == 6) {
+      EXPECT_EQ(d.margin_exact, "0");
+    }
   }
 }
 
