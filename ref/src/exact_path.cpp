@@ -21,7 +21,7 @@ Point ExactPoint::plane(PlaneAxes axes) const {
 }
 
 PathPoint ExactPath::output(const ExactPoint& p) const {
-  auto mm = [](const FT& units) { return CGAL::to_double(units / FT(1'000'000'000L)); };  // output boundary
+  auto mm = [](const FT& units) { return nearest_double(units / FT(1'000'000'000L)); };  // output boundary
   return {mm(p.x), mm(p.y), mm(p.z)};
 }
 

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 
 namespace cutcom::ref {
@@ -17,6 +19,38 @@ FT leaf(const Decimal& d) {
 
 Point plane_point(const Point3& p, PlaneAxes axes) {
   return Point(leaf(coord(p, axes.abscissa)), leaf(coord(p, axes.ordinate)));
+}
+
+double nearest_double(const FT& value) {
+  double d = CGAL::to_double(value);
+  // 0: CORE's relative approximation found the value's sign zero (or below every double).
+  if (d == 0 || !std::isfinite(d)) return d;
+  // d is within an ulp or two: step to the neighbour until the value lies between the midpoints
+  // to d's neighbours (exact comparisons with dyadic rationals, never a zero test of the value
+  // unless it is exactly such a midpoint).
+  for (;;) {
+    double below = std::nextafter(d, -HUGE_VAL), above = std::nextafter(d, HUGE_VAL);
+    FT low = (FT(below) + FT(d)) / FT(2), high = (FT(d) + FT(above)) / FT(2);
+    CGAL::Comparison_result at_low = CGAL::compare(value, low);
+    if (at_low == CGAL::SMALLER) {
+      d = below;
+      continue;
+    }
+    CGAL::Comparison_result at_high = CGAL::compare(value, high);
+    if (at_high == CGAL::LARGER) {
+      d = above;
+      continue;
+    }
+    // A tie goes to the neighbour with an even last digit.
+    auto even = [](double x) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      return (bits & 1U) == 0;
+    };
+    if (at_low == CGAL::EQUAL && !even(d)) return below;
+    if (at_high == CGAL::EQUAL && !even(d)) return above;
+    return d;
+  }
 }
 
 std::string exact_text(const FT& value) {

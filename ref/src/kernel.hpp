@@ -33,6 +33,11 @@ inline Vector unit_left_normal(const Vector& d) {
   return Vector(-d.y() / l, d.x() / l);
 }
 
+// PATH-ELEMENT-2: the double nearest to an exact value, ties to even: ref's output boundary. CORE's own
+// conversion is good to about an ulp, so two expressions of one value could print as two doubles
+// (a full circle's end a rounding away from its start, a turn nobody can read back).
+double nearest_double(const FT& value);
+
 // A margin for the decision trace: the sign is exact, the digits are a 20-digit rendering.
 std::string exact_text(const FT& value);
 // A length margin: units (10^-9 mm) rendered in mm.
