@@ -203,6 +203,30 @@ TEST(ArcExamples, CompensatedCircleByRadiusTangentToLines) {
 namespace cutcom::test {
 namespace {
 
+// covers: PATH-ELEMENT-2 TRC-ARC-CORNER-1 TRC-ARC-ELEMENT-1
+TEST(ArcExamples, FullCircleOpenedBeforeItsStartIsAWholeTurnThenTheRest) {
+  // r = 2, G41, G451. N30 runs along (1,1) into (0,0); N40 is the full ccw circle about (0,10).
+  // The outer corner is cut at the intersection of the line's equidistant (t - sqrt2, t + sqrt2)
+  // with the circle of radius 8: t^2 - 10t + 20 - 10 sqrt2 = 0, the nearer root
+  // t = 5 - sqrt(5 + 10 sqrt2), P = (-0.78938620, 2.03904092), before the normal start (0,2). N40
+  // then turns a whole turn and the rotation from P to (0,2): one arc from P to (0,2) would read as
+  // that short rotation alone, so the whole turn comes first (P to P), then the rest.
+  Runs r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G0 X-20 Y-20 T1 D1\nN20 G1 G41 G451 X-10 Y-10 F100\n"
+      "N30 X0 Y0\nN40 G3 X0 Y0 I0 J10\nN50 G40 G1 X10 Y-10\n");
+  ASSERT_TRUE(r.fast_ok && r.ref_ok);
+  const double t = 5 - std::sqrt(5 + 10 * std::sqrt(2.0)), s2 = std::sqrt(2.0);
+  PathPoint p{t - s2, t + s2, 0};
+  expect_both(
+      r, {line(K::kProgrammed, {0, 0, 0}, {-20, -20, 0}), line(K::kApproach, {-20, -20, 0}, {-10 - s2, -10 + s2, 0}),
+          line(K::kOffset, {-10 - s2, -10 + s2, 0}, p), offset_arc(p, p, {0, 10, 0}, true),
+          offset_arc(p, {0, 2, 0}, {0, 10, 0}, true), line(K::kRetraction, {0, 2, 0}, {10, -10, 0})});
+  for (const RunResult* x : {&r.fast, &r.ref}) {
+    EXPECT_EQ(x->path[3].start.x, x->path[3].end.x);
+    EXPECT_EQ(x->path[3].start.y, x->path[3].end.y);
+  }
+}
+
 // covers: PATH-ELEMENT-2 TRC-INNER-1
 TEST(ArcExamples, FullCircleCutARoundingPastItsStartStaysAWholeTurn) {
   // r = 0: the equidistants are the contour. N30 is a full cw circle about (21.476, -30.438)

@@ -178,6 +178,14 @@ bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool a
       line(open, from, to, OriginKind::kOffset, open.rapid);
       return true;
     }
+    // PATH-ELEMENT-2: more than a whole turn (a full circle opened before its start or closed
+    // after its end) is the whole turn first, then the rest: an arc reads at most one turn.
+    bool closed = to.x == from.x && to.y == from.y && to.z == from.z;
+    if (turn > 2 * std::numbers::pi && !closed) {
+      if (h(open.start) != h(open.end))
+        throw UnsupportedError(open.line, "a helix that turns more than a whole turn after its corners");
+      arc(open, from, from, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
+    }
     arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
   }
   return true;

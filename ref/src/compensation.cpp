@@ -176,6 +176,7 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
   const ContourElement& e = *open_;
   CGAL::Sign sign;
   std::string margin;
+  bool beyond_a_turn = false;  // PATH-ELEMENT-2: a trimmed circle that turns more than a whole turn
   if (!e.is_arc()) {
     FT left = (end_point - open_start_) * e.d;  // signed length along the block, times |d|
     sign = CGAL::sign(left);                    // without the square root: a cheaper exact zero
@@ -189,6 +190,7 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
     if (!at_normal_end) to = f.signed_from(to, end_point - e.centre);
     sign = f.compare(to, from);
     margin = f.length_text(from, to, open_radius_);
+    beyond_a_turn = f.compare(to, CirclePosition{from.turns + 1, from.v}) == CGAL::POSITIVE;
   }
   std::string_view clause = e.is_arc() ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
   if (sign == CGAL::NEGATIVE) {
@@ -214,6 +216,12 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
     emit_line(*open_block_, from, to, OriginKind::kOffset, &e);
   } else {
     ExactPoint centre = at({e.centre, coord(e.start3, comp_->axes.applicate)});
+    if (beyond_a_turn) {  // PATH-ELEMENT-2: the whole turn first, then the rest, each readable
+      if (!(coord(e.start3, comp_->axes.applicate) == coord(e.end3, comp_->axes.applicate)))
+        throw UnsupportedError(e.line, "a helix that turns more than a whole turn after its corners");
+      emit_arc(*open_block_, from, from, centre, open_radius_, e.sense > 0,
+               origin(*open_block_, OriginKind::kOffset), comp_->axes);
+    }
     emit_arc(*open_block_, from, to, centre, open_radius_, e.sense > 0, origin(*open_block_, OriginKind::kOffset),
              comp_->axes);
   }
