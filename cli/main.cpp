@@ -211,6 +211,23 @@ class OutputFile {
   bool committed_ = false;
 };
 
+// CLI-1: the document is closed whatever happens: bad input found half-way ends it with the
+// error (a JSON reader still parses it), then the error goes on to the caller (exit status 2).
+template <class Writer, class Run>
+bool run_to_the_end(Writer& writer, Run run, const RunOptions& o, std::ostream& out) {
+  bool ok = false;
+  try {
+    ok = run();
+  } catch (const cutcom::InputError& e) {
+    writer.error(o.program == "-" ? "stdin" : o.program, e.line(), e.column(), e.detail());
+    writer.finish();
+    out.flush();
+    throw;
+  }
+  writer.finish();
+  return ok;
+}
+
 int run_command(const RunOptions& o) {
   cutcom::MachineData md = machine_data(o);
   ControlData control = control_data(o);
@@ -284,15 +301,15 @@ int run_command(const RunOptions& o) {
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
     writer.set_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
-    ok = run_engine(o.engine, reader, md, writer, o);
-    writer.finish();
+    ok = run_to_the_end(
+        writer, [&] { return run_engine(o.engine, reader, md, writer, o); }, o, *out);
   } else {
     cutcom::TextWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
     writer.set_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
-    ok = run_engine(o.engine, reader, md, writer, o);
-    writer.finish();
+    ok = run_to_the_end(
+        writer, [&] { return run_engine(o.engine, reader, md, writer, o); }, o, *out);
   }
   out->flush();
   if (in->bad()) throw std::runtime_error("read error on the program");

@@ -131,7 +131,8 @@ TEST(Cli, ALongProgramsPictureIsReducedAndSaysSo) {
             std::string::npos)
       << s.out.substr(0, 2000);
   EXPECT_NE(s.out.find("mm of the exact path"), std::string::npos);
-  EXPECT_NE(s.out.find("the label of one programmed segment in 128 where labels do not cover one another"), std::string::npos);
+  EXPECT_NE(s.out.find("the label of one programmed segment in 128 where labels do not cover one another"),
+            std::string::npos);
   EXPECT_EQ(s.out.find("<title>"), std::string::npos);  // no per-element titles
   EXPECT_LT(s.out.size(), 8u << 20);
   Result small = sh(kCli + " run " + kExample + " --format svg");
@@ -409,6 +410,22 @@ TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
   EXPECT_NE(g.out.find("line 1, column 7: 'R_T' is not a SINUMERIK word cutcom knows"), std::string::npos) << g.out;
 }
 
+// Bad input half-way still closes the document on standard output: JSON that parses, with the
+// error and the path before it; text ends with an ERROR line. Exit status 2.
+// covers: CLI-1
+TEST(Cli, BadInputHalfWayEndsTheDocumentWithTheError) {
+  std::string prog = write_temp("halfway.mpf", "N10 G0 X0 Y0\nN20 G1 X5 F100\nN30 Y5\nN40 X0\nN50 GOTOF NOWHERE\n");
+  Result j = sh(kCli + " run " + prog + " --format json");
+  EXPECT_EQ(j.status, 2);
+  nlohmann::json doc = nlohmann::json::parse(j.out);
+  EXPECT_GE(doc["path"].size(), 3U) << j.out;  // the blocks before the error (one may be held back)
+  EXPECT_EQ(doc["error"]["line"], 5);
+  EXPECT_NE(doc["error"]["message"].get<std::string>().find("NOWHERE"), std::string::npos) << j.out;
+  Result t = sh(kCli + " run " + prog);
+  EXPECT_EQ(t.status, 2);
+  EXPECT_NE(t.out.find("ERROR " + prog + " line 5, column"), std::string::npos) << t.out;
+}
+
 // A device, pipe or link as the output is written through, never renamed over: `-o /dev/null` as
 // root once replaced the device with a regular file.
 // covers: CLI-1
@@ -492,7 +509,8 @@ TEST(Cli, DefinitionsFileAndASubprogramRunOnItsOwn) {
   std::ofstream(dir + "/bad.def") << "DEF REAL _OK\nG1 X1\n";
   Result bad = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/bad.def", true);
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.out.find("bad.def:2:1: a definitions file holds DEF and DEFINE lines only"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("bad.def:2:1: a definitions file holds DEF and DEFINE lines only"), std::string::npos)
+      << bad.out;
   Result args = sh(kCli + " run " + dir + "/WALL.SPF --definitions " + dir + "/gud.def --args \"4, 3, 1\"", true);
   EXPECT_EQ(args.status, 2);
   EXPECT_NE(args.out.find("3 arguments given, the PROC has 2 parameters"), std::string::npos) << args.out;

@@ -170,6 +170,10 @@ void JsonWriter::sar_variables(const SarVariables& v) {
                           {"$P_APDV", v.p_apdv}});
 }
 
+void JsonWriter::error(const std::string& file, int line, int column, const std::string& message) {
+  error_ = nlohmann::json{{"file", file}, {"line", line}, {"column", column}, {"message", message}}.dump();
+}
+
 void JsonWriter::finish() {
   out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
   buffer_.clear();
@@ -182,6 +186,7 @@ void JsonWriter::finish() {
   list("notices", notices_);
   list("variables", variables_);
   if (with_trace_) list("decisions", decisions_);
+  if (!error_.empty()) out_ << ",\n  \"error\": " << error_;
   out_ << "\n}\n";
 }
 

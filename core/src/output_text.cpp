@@ -126,7 +126,12 @@ void TextWriter::sar_variables(const SarVariables& v) {
   written();
 }
 
+void TextWriter::error(const std::string& file, int line, int column, const std::string& message) {
+  error_ = fmt::format("ERROR {} line {}, column {}: {}\n", file, line, column, message);
+}
+
 void TextWriter::finish() {
+  buffer_ += error_;
   buffer_ += fmt::format("{} path elements\n", count_);
   flush();
 }

@@ -27,6 +27,8 @@ class JsonWriter : public PathSink {
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;
+  // CLI-1: the run stopped on bad input; finish() still closes the document, with the error.
+  void error(const std::string& file, int line, int column, const std::string& message);
   void finish();
   void set_sources(SourceNames names) { sources_ = std::move(names); }
 
@@ -39,6 +41,7 @@ class JsonWriter : public PathSink {
   bool first_ = true;
   std::string buffer_, text_;  // path elements not yet written; an origin's text (reused)
   std::string actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
+  std::string error_;                                               // serialized object, if any
 };
 
 class TextWriter : public PathSink {
@@ -53,6 +56,8 @@ class TextWriter : public PathSink {
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;
+  // CLI-1: the run stopped on bad input; finish() writes it as the last line.
+  void error(const std::string& file, int line, int column, const std::string& message);
   void finish();
   void set_sources(SourceNames names) { sources_ = std::move(names); }
 
@@ -65,6 +70,7 @@ class TextWriter : public PathSink {
   SourceNames sources_;
   bool with_trace_;
   int count_ = 0;
+  std::string error_;
 };
 
 // A programmed contour segment for the picture (in-plane projection drawn as XY of the plane).
