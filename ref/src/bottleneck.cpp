@@ -1,5 +1,7 @@
 #include "bottleneck.hpp"
 
+#include <optional>
+
 #include "exact_root.hpp"
 
 namespace cutcom::ref {
@@ -119,6 +121,30 @@ std::vector<Point> intersections_through(const Carrier<Kernel>& h, const Carrier
   out.push_back(m + (m - q));
   return out;
 }
+
+// Two lines that cross at one of the pieces' ends: that end itself (the same numbers), so that
+// locating it needs no zero test. A crossing computed afresh at an end that is itself a deep
+// expression (a point where an earlier cut ended the held piece, met again by the next piece of a
+// straight entry) costs CORE a zero test of nested radicals: 70 s (campaign 20261129, case
+// 62316). Only an end within a rounding of the other line is tested exactly.
+std::optional<std::vector<Point>> line_crossing_at_an_end(const PathPiece& held, const PathPiece& e,
+                                                          const Carrier<Kernel>& h, const Carrier<Kernel>& c) {
+  auto near = [](const Carrier<Kernel>& line, const Point& q) {
+    double d = rough(CGAL::determinant(line.direction, q - line.point));
+    double l2 = rough(line.direction.squared_length());
+    return d * d <= l2;  // within 1 unit (10^-9 mm) of the line
+  };
+  const Point* at = nullptr;
+  for (const Point* q : {&held.a, &held.b})
+    if (!at && near(c, *q) && on_carrier(c, *q)) at = q;
+  for (const Point* q : {&e.a, &e.b})
+    if (!at && near(h, *q) && on_carrier(h, *q)) at = q;
+  if (!at) return std::nullopt;
+  // On both lines: they cross there, unless they are one line (parallel: no crossing, the knife
+  // edge of crossing, as carrier_intersections would find).
+  if (CGAL::sign(CGAL::determinant(h.direction, c.direction)) == CGAL::ZERO) return std::vector<Point>{};
+  return std::vector<Point>{*at};
+}
 }  // namespace
 
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
@@ -140,7 +166,10 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
       for (const Point* q : {&e.a, &e.b})
         if (xs.empty() && on_carrier(h, *q)) xs = intersections_through(h, c, *q);
     }
-    if (xs.empty()) xs = carrier_intersections<Kernel>(h, c);
+    std::optional<std::vector<Point>> at_end;
+    if (!h.circle && !c.circle) at_end = line_crossing_at_an_end(held, e, h, c);
+    if (at_end) xs = *at_end;
+    if (xs.empty() && !at_end) xs = carrier_intersections<Kernel>(h, c);
     if (!h.circle && !c.circle && xs.empty()) {
       // Parallel lines never cross; collinear ones (distance 0) are the knife edge of crossing.
       FT gap = CGAL::abs(CGAL::determinant(h.direction, c.point - h.point)) / exact_root(h.direction.squared_length());
