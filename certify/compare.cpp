@@ -346,6 +346,23 @@ std::optional<std::string> broken_boundary_rule(const RunResult& run, std::strin
   return std::nullopt;
 }
 
+// PATH-ELEMENT-1 in fast's own numbers: fast writes no element whose start and end are the same
+// double and that does not turn (a line, an arc of radius 0). It decides "zero length" on the very
+// numbers it writes, so such an element is a decision against its own result. (ref decides on
+// exact values and rounds after: an exact sliver may print as one point, which is no breach.)
+std::optional<std::string> zero_length_element(const RunResult& run, std::string_view engine) {
+  for (std::size_t i = 0; i < run.path.size(); ++i) {
+    const PathElement& e = run.path[i];
+    bool closed = e.start.x == e.end.x && e.start.y == e.end.y && e.start.z == e.end.z;
+    bool point =
+        e.type != ElementType::kArc || (e.center.x == e.start.x && e.center.y == e.start.y && e.center.z == e.start.z);
+    if (closed && point)
+      return fmt::format("{} element {} ({}) has length zero (PATH-ELEMENT-1: not output)", engine, i,
+                         describe(e.origin));
+  }
+  return std::nullopt;
+}
+
 namespace {
 // The path's elements follow the program's lines (a program without loops or subprograms called
 // twice): only then does "a later block" mean the same block in both runs (PROP-DIFF-2).
@@ -376,6 +393,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   };
   for (auto [run, engine] : {std::pair{&fast, "fast"}, std::pair{&ref, "ref"}})
     if (std::optional<std::string> broken = broken_boundary_rule(*run, engine)) return diverge(*broken);
+  if (std::optional<std::string> zero = zero_length_element(fast, "fast")) return diverge(*zero);
   // PROP-DIFF-2: after a knife edge at line L, decisions about lines up to L and the next
   // `window` blocks are the knife edge's (also those a look-ahead takes later); the first ones
   // after them must be the same decision.

@@ -62,5 +62,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
 // PROP-BOUNDARY-1: the first decision of `run` whose branch its own margin contradicts under the
 // clause's boundary rule (cutcom/boundary_rules.hpp), described; empty when there is none.
 std::optional<std::string> broken_boundary_rule(const RunResult& run, std::string_view engine);
+// PATH-ELEMENT-1: an element of length zero in an engine's output, as written (used for fast).
+std::optional<std::string> zero_length_element(const RunResult& run, std::string_view engine);
 
 }  // namespace cutcom::props

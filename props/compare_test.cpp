@@ -126,6 +126,28 @@ TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
 }
 
+// fast writes no element of length zero (PATH-ELEMENT-1): a transition circle of radius 0 is a
+// point that the tolerance would hide (mutant 14); a full circle is not one.
+// covers: PATH-ELEMENT-1 PROP-BOUNDARY-1
+TEST(Comparison, AZeroLengthElementOfFastIsADivergence) {
+  RunResult ref, fast;
+  PathElement circle;
+  circle.type = ElementType::kArc, circle.start = circle.end = circle.center = {1, 2, 0};
+  circle.origin.kind = OriginKind::kTransitionCircle, circle.origin.line = 7;
+  fast.path = {circle};
+  Verdict v = compare(ref, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("fast element 0 (transition circle"), std::string::npos) << v.explanation;
+  fast.path[0].type = ElementType::kLine;
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
+  // A full circle (start and end the same, the centre elsewhere) turns: no breach.
+  fast.path[0].type = ElementType::kArc, fast.path[0].center = {1, 5, 0};
+  EXPECT_FALSE(zero_length_element(fast, "fast"));
+  // ref rounds exact slivers after deciding on them: it is not held to this.
+  ref.path = {circle};
+  EXPECT_FALSE(compare(ref, fast, tolerance()).explanation.find("ref element") != std::string::npos);
+}
+
 // covers: PROP-DIFF-2
 TEST(Comparison, AKnifeEdgeDoesNotHideWhatFollowsIt) {
   auto at = [](Decision d, int line) {
