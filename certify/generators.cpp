@@ -46,7 +46,9 @@ void common(ContourCase& c) {
     // step, nor right after another flip (that block is a selection block).
     s.flip = i > 0 && !c.steps[i - 1].flip && *inRange(0, 12) == 0;
     s.g451 = *inRange(0, 3) == 0;
-    s.dummies = *inRange(0, 8) == 0 ? *inRange(1, 3) : 0;
+    // TRC-DUMMY-2: now and then a run of exactly MD20250 (5) blocks without plane motion, the
+    // most allowed, or one more (alarm 10762).
+    s.dummies = *inRange(0, 8) == 0 ? (*inRange(0, 10) == 0 ? *element(5, 6) : *inRange(1, 3)) : 0;
   }
 }
 
