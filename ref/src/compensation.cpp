@@ -335,6 +335,7 @@ void Compensation::start_look_ahead(const Block& too_short) {
   dummies_.clear();
   skipped_.push_back(&too_short);
   examined_ = 1;
+  dummy_run_ = 0;  // TRC-DUMMY-2: the too-short block moves in the plane; a new run starts after it
   looking_ = true;
   if (examined_ >= md_.cutcom_maxnum_check_blocks) raise(10751, too_short);
 }
