@@ -404,7 +404,10 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
     // case 314401) lie on one line for ref; in double they cross anywhere along it.
     parallel = on_one_line(cu, cv);
   }
-  bool found = !parallel && nearest_intersection(cu, cv, start, cand.start_tangent(), y);
+  // Carriers that miss within rounding touch (campaign 20261214, case 492847: a line exactly
+  // tangent to a SAR semicircle's equidistant missed it by 4e-16 mm: alarm 10751 in fast only).
+  bool found = !parallel &&
+               (nearest_intersection(cu, cv, start, cand.start_tangent(), y) || touching_within_rounding(cu, cv, y));
   bool valid = false;
   double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
   if (found) {

@@ -154,6 +154,10 @@ Vec2 touching_point(const Carrier& u, const Carrier& v) {
 bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out) {
   if (r == 0) return out = corner, true;
   if (nearest_intersection(u, v, corner, ahead, out)) return true;
+  return touching_within_rounding(u, v, out);
+}
+
+bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out) {
   if (!(u.circle || v.circle) || !misses_within_rounding(u, v, carrier_gap(u, v))) return false;
   out = touching_point(u, v);
   return true;
