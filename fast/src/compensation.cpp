@@ -408,6 +408,9 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   // tangent to a SAR semicircle's equidistant missed it by 4e-16 mm: alarm 10751 in fast only).
   bool found = !parallel &&
                (nearest_intersection(cu, cv, start, cand.start_tangent(), y) || touching_within_rounding(cu, cv, y));
+  // And those that cross within rounding touch where they touch (campaign 20261215, case 11707: a
+  // line exactly tangent to a SAR semicircle's equidistant, crossed 3.5e-8 mm off the point).
+  if (found && !parallel) cross_within_rounding(cu, cv, y);
   bool valid = false;
   double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
   if (found) {

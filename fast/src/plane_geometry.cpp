@@ -163,6 +163,14 @@ bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out) {
   return true;
 }
 
+bool cross_within_rounding(const Carrier& u, const Carrier& v, Vec2& out) {
+  if (!(u.circle || v.circle)) return false;
+  double gap = carrier_gap(u, v);
+  if (!(gap <= 0) || !misses_within_rounding(u, v, -gap)) return false;
+  out = touching_point(u, v);
+  return true;
+}
+
 double corner_gap(const Carrier& u, const Carrier& v, double r) {
   double gap = carrier_gap(u, v);
   // With radius 0 they meet at the corner; within rounding of touching they touch.

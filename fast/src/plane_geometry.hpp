@@ -74,6 +74,9 @@ double corner_gap(const Carrier& u, const Carrier& v, double r);
 // Carriers (one a circle at least) that miss within the rounding of their data touch: their
 // touching point (TRC-ARC-CORNER-1 at corners, TRC-LOOK-2 in the look-ahead).
 bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out);
+// Carriers that cross by less than that rounding: for the exact data they may touch, where the two
+// intersections in double lie sqrt(u) of the size apart; their touching point (TRC-LOOK-2).
+bool cross_within_rounding(const Carrier& u, const Carrier& v, Vec2& out);
 // How far an intersection x of two carriers may lie from the exact one along them: 64 u of the
 // size over the sine of their crossing (PATH-ELEMENT-2).
 double intersection_error(const Carrier& u, const Carrier& v, Vec2 x);
