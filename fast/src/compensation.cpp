@@ -404,13 +404,11 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
     // case 314401) lie on one line for ref; in double they cross anywhere along it.
     parallel = on_one_line(cu, cv);
   }
-  // Carriers that miss within rounding touch (campaign 20261214, case 492847: a line exactly
-  // tangent to a SAR semicircle's equidistant missed it by 4e-16 mm: alarm 10751 in fast only).
+  // Carriers within rounding of touching touch (campaign 20261214, case 492847: a line exactly
+  // tangent to a SAR semicircle's equidistant missed it by 4e-16 mm, alarm 10751 in fast only;
+  // 20261215, case 11707: the same crossed it 3.5e-8 mm off the point).
   bool found = !parallel &&
-               (nearest_intersection(cu, cv, start, cand.start_tangent(), y) || touching_within_rounding(cu, cv, y));
-  // And those that cross within rounding touch where they touch (campaign 20261215, case 11707: a
-  // line exactly tangent to a SAR semicircle's equidistant, crossed 3.5e-8 mm off the point).
-  if (found && !parallel) cross_within_rounding(cu, cv, y);
+               (touching_within_rounding(cu, cv, y) || nearest_intersection(cu, cv, start, cand.start_tangent(), y));
   bool valid = false;
   double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
   if (found) {

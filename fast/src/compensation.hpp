@@ -68,11 +68,11 @@ class Compensation {
   Int128 r_units = 0;  // the same, exactly, in 10^-9 mm (TRC-KONT-2 decides on it)
   ActiveEdge edge;
 
-  BlockCopy selection;               // kApproach: the selection block
+  BlockCopy selection;  // kApproach: the selection block
   // Its start is the tool off the programmed contour after a side change (TRC-SIDE-1); with
   // radius 0 the tool is the programmed point, so TRC-KONT-1/2 stay exact on programmed decimals.
   bool selection_from_tool = false;
-  Vec2 retract_from{};               // TRC-DESEL-3: where the tool waits in the plane
+  Vec2 retract_from{};  // TRC-DESEL-3: where the tool waits in the plane
   // TRC-APPR-NORM-1: the approach line and the blocks held back before the first contour block,
   // output once the first element's end is known.
   bool approach_pending = false;

@@ -154,19 +154,16 @@ Vec2 touching_point(const Carrier& u, const Carrier& v) {
 bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out) {
   if (r == 0) return out = corner, true;
   if (nearest_intersection(u, v, corner, ahead, out)) return true;
-  return touching_within_rounding(u, v, out);
-}
-
-bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out) {
   if (!(u.circle || v.circle) || !misses_within_rounding(u, v, carrier_gap(u, v))) return false;
   out = touching_point(u, v);
   return true;
 }
 
-bool cross_within_rounding(const Carrier& u, const Carrier& v, Vec2& out) {
+bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out) {
   if (!(u.circle || v.circle)) return false;
   double gap = carrier_gap(u, v);
-  if (!(gap <= 0) || !misses_within_rounding(u, v, -gap)) return false;
+  if (!misses_within_rounding(u, v, gap == 0 ? std::numeric_limits<double>::denorm_min() : std::fabs(gap)))
+    return false;
   out = touching_point(u, v);
   return true;
 }

@@ -71,12 +71,10 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
 // their gap as a margin (TRC-ARC-CORNER-1).
 bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out);
 double corner_gap(const Carrier& u, const Carrier& v, double r);
-// Carriers (one a circle at least) that miss within the rounding of their data touch: their
-// touching point (TRC-ARC-CORNER-1 at corners, TRC-LOOK-2 in the look-ahead).
+// Carriers (one a circle at least) that miss or cross by less than the rounding of their data:
+// for the exact data they may touch, and the intersections in double would lie sqrt(u) of the
+// size apart; their touching point (TRC-LOOK-2).
 bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out);
-// Carriers that cross by less than that rounding: for the exact data they may touch, where the two
-// intersections in double lie sqrt(u) of the size apart; their touching point (TRC-LOOK-2).
-bool cross_within_rounding(const Carrier& u, const Carrier& v, Vec2& out);
 // How far an intersection x of two carriers may lie from the exact one along them: 64 u of the
 // size over the sine of their crossing (PATH-ELEMENT-2).
 double intersection_error(const Carrier& u, const Carrier& v, Vec2 x);

@@ -170,8 +170,10 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     }
     std::optional<std::vector<Point>> at_end;
     if (!h.circle && !c.circle) at_end = line_crossing_at_an_end(held, e, h, c);
-    if (at_end) xs = *at_end;
-    if (xs.empty() && !at_end) xs = carrier_intersections<Kernel>(h, c);
+    if (at_end)
+      xs = *at_end;
+    else if (xs.empty())
+      xs = carrier_intersections<Kernel>(h, c);
     if (!h.circle && !c.circle && xs.empty()) {
       // Parallel lines never cross; collinear ones (distance 0) are the knife edge of crossing.
       FT gap = CGAL::abs(CGAL::determinant(h.direction, c.point - h.point)) / exact_root(h.direction.squared_length());
