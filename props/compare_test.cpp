@@ -98,7 +98,7 @@ Decision decision(std::string_view clause, std::string_view branch, double margi
 
 // A branch taken against its own margin is a divergence even where both engines agree and ref's
 // margin lies in the band: `<` for `<=` at MD20230 shows as `switch-to-G451` at margin 0.
-// covers: PROP-BOUNDARY-1 TRC-CORNER-4 TRC-KONT-1 TRC-ELEMENT-1
+// covers: PROP-BOUNDARY-1 TRC-CORNER-4 TRC-KONT-1 TRC-ELEMENT-1 TRC-CD-3
 TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   RunResult ref, fast;
   ref.decisions = {decision("TRC-CORNER-4", "keep-G450", 0, "0")};
@@ -121,6 +121,15 @@ TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   fast.decisions[0].branch = ref.decisions[0].branch = "reverses";
   ref.decisions[0].margin_exact = "-1.5e-30";
   EXPECT_NE(compare(ref, fast, tolerance()).explanation.find("fast decision 0: TRC-ELEMENT-1"), std::string::npos);
+  // A crossing exactly at a piece's end left out shows as `none` at margin 0 (TRC-CD-3); collinear
+  // pieces that overlap are `overlap` at 0.
+  ref.decisions = {decision("TRC-CD-3", "cut", 0, "0")};
+  fast.decisions = {decision("TRC-CD-3", "none", 0)};
+  EXPECT_NE(compare(ref, fast, tolerance()).explanation.find("fast decision 0: TRC-CD-3 line 7 `none` with margin 0"),
+            std::string::npos);
+  ref.decisions = {decision("TRC-CD-3", "overlap", 0, "0")};
+  fast.decisions = {decision("TRC-CD-3", "overlap", -0.0)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
   // A NaN margin satisfies no rule.
   fast.decisions[0].margin = std::nan("");
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);

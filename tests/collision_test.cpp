@@ -18,6 +18,64 @@ bool alarm_is(const RunResult& r, int number, int line_no) {
   return r.alarms.size() == 1 && r.alarms[0].number == number && r.alarms[0].line == line_no;
 }
 
+// The TRC-CD-3 decisions of a run, with their margins (fast's double; ref's exact text).
+std::vector<Decision> crossings(const RunResult& r) {
+  std::vector<Decision> out;
+  for (const auto& d : r.decisions)
+    if (d.clause == "TRC-CD-3") out.push_back(d);
+  return out;
+}
+
+// A recess exactly 2r wide (x = 10 ... 14, r = 2): its mouth circles about (10,0) and (14,0) meet
+// exactly at their ends, (12,0). A point on both pieces, ends included, is a crossing (the
+// boundary rule): both engines cut there at margin 0 and skip the recess.
+// covers: TRC-CD-3 TRC-CD-4 PROP-BOUNDARY-1
+TEST(Collision, ARecessExactly2rWideIsCutWhereItsMouthCirclesEnd) {
+  std::string text =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-5 Y8 T1 D1\nN20 G1 G41 CDON X0 Y0 F500\nN30 X10\n"
+      "N40 Y-5\nN50 X14\nN60 Y0\nN70 X25\nN80 G40 X30 Y8\nN90 M30\n";
+  Runs r = run_both(text);
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-5, 8, 0}), line(K::kApproach, {-5, 8, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), arc({10, 2, 0}, {12, 0, 0}, {10, 0, 0}, false),
+                  arc({12, 0, 0}, {14, 2, 0}, {14, 0, 0}, false), line(K::kOffset, {14, 2, 0}, {25, 2, 0}),
+                  line(K::kRetraction, {25, 2, 0}, {30, 8, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    std::vector<Decision> c = crossings(*x);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_EQ(c[0].branch, "none");  // N60's entry: the floor's corner, off the held pieces
+    for (int k : {1, 2}) {
+      EXPECT_EQ(c[k].branch, "cut");
+      EXPECT_EQ(c[k].margin, 0.0);
+      if (x == &r.ref) EXPECT_EQ(c[k].margin_exact, "0");
+    }
+  }
+}
+
+// Collinear pieces do not cross. A loop back onto the first wall (N70 runs along N30's
+// equidistant, y = 2, over x = 7 ... 10) overlaps it: traced `overlap`, margin 0, the knife edge
+// of crossing; the path is not cut there. Collinear pieces apart along their line miss by the gap.
+// covers: TRC-CD-3 PROP-BOUNDARY-1
+TEST(Collision, CollinearPiecesThatOverlapAreTheKnifeEdgeNotACrossing) {
+  std::string loop =
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-5 Y5 Z0 T1 D1\nN20 G41 CDON G1 X0 Y0 F500\nN30 X10\n"
+      "N40 Y5\nN50 X5\nN60 Y0\nN70 X20\nN80 G40 X25 Y5\nN90 M30\n";
+  MachineData md;
+  md.cutcom_maxnum_check_blocks = 5;
+  Runs r = run_both(loop, md);
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    std::vector<Decision> c = crossings(*x);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_EQ(c[2].branch, "overlap");
+    EXPECT_EQ(c[2].margin, 0.0);
+    EXPECT_TRUE(x->alarms.empty());
+  }
+  // The notch's walls, y = 2 before x = 8 and after x = 13 (the mouth circles cross above them),
+  // are collinear but 5 mm apart: no knife edge.
+  Runs n = run_both(notch("CDON"));
+  for (const RunResult* x : {&n.ref, &n.fast})
+    for (const Decision& d : crossings(*x)) EXPECT_NE(d.branch, "overlap");
+}
+
 // covers: TRC-CD-1 TRC-CD-2 TRC-CD-3 TRC-CD-4 TRC-LOOK-3
 TEST(Collision, CdonCutsTheNotchBetweenItsMouthCircles) {
   // The transition circles about (10,0) (corner N30/N40, from (10,2) clockwise) and about (11,0)

@@ -50,6 +50,17 @@ constexpr std::array kRules{
     BoundaryRule{"TRC-CD-2", "entry", kNonNegative},       // (no-entry: a negative extent or carriers that miss)
     BoundaryRule{"TRC-CD-2", "g451-meets", kNonPositive},  // the carriers' gap, as TRC-ARC-CORNER-1
     BoundaryRule{"TRC-CD-2", "g451-misses", kPositive},
+    BoundaryRule{"TRC-CD-3", "cut", kNonNegative},  // a point on both pieces, ends included, is a crossing
+    BoundaryRule{"TRC-CD-3", "none", kNegative},
+    BoundaryRule{"TRC-CD-3", "overlap", kZero},  // collinear pieces that overlap: no crossing, the knife edge
+    BoundaryRule{"TRC-CD-5", "earlier-block", kNonNegative},
+    BoundaryRule{"TRC-CD-5", "open-element", kNonPositive},  // (0: collinear pieces)
+    BoundaryRule{"TRC-CD-6", "later-block", kNonNegative},
+    BoundaryRule{"TRC-CD-6", "none", kNegative},
+    BoundaryRule{"TRC-EDGE-5", "hit", kNonNegative},  // a hit exactly at an end of the curve or piece is a hit
+    BoundaryRule{"TRC-EDGE-5", "none", kNegative},
+    BoundaryRule{"TRC-EDGE-6", "circle", kNonNegative},
+    BoundaryRule{"TRC-EDGE-6", "line", kNegative},
     // sar.md
     BoundaryRule{"SAR-SIDE-2", "left", kPositive},
     BoundaryRule{"SAR-SIDE-2", "right", kNegative},

@@ -75,8 +75,14 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
     double depth = has_depth ? -carrier_gap(h, c) : 0;
     Vec2 xs[2];
     int n = carrier_intersections(h, c, xs);
-    if (!h.circle && !c.circle && n == 0) {  // parallel: collinear is the knife edge of crossing
-      double gap = std::fabs(cross(h.direction, c.point - h.point)) / norm(h.direction);
+    if (!h.circle && !c.circle && n == 0) {  // parallel: no crossing; the near miss is their distance
+      double length = norm(h.direction);
+      double gap = std::fabs(cross(h.direction, c.point - h.point)) / length;
+      if (gap == 0) {  // collinear: apart along the line, or overlapping (the knife edge of crossing)
+        double ta = dot(e.a - held.a, h.direction) / length, tb = dot(e.b - held.a, h.direction) / length;
+        gap = std::max({std::min(ta, tb) - length, -std::max(ta, tb), 0.0});
+        out.overlap = out.overlap || gap == 0;
+      }
       out.near_miss = std::max(out.near_miss, -gap);
     }
     for (int k = 0; k < n; ++k) {

@@ -29,6 +29,7 @@ struct PieceCrossing {
   double slack = 0;
   double along = 0;  // how far along the held piece (length; rotation times radius at a circle)
   double near_miss = -std::numeric_limits<double>::infinity();
+  bool overlap = false;  // two collinear segments overlap or touch: a near miss of 0 (TRC-CD-3)
 };
 // `from`: the first entry piece compared (see ref).
 PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count, int from = 0);

@@ -113,6 +113,7 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   Entry entry;
   int state = 0;                                           // 0: not built, 1: built, -1: none
   double near = -std::numeric_limits<double>::infinity();  // the largest near miss
+  bool overlap = false;                                    // collinear pieces overlap (a miss of 0)
   // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
   // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
   auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
@@ -121,6 +122,7 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
     bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
     c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0);
     near = std::max(near, c.near_miss);
+    overlap = overlap || c.overlap;
     return c.entry_piece >= 0;
   };
   PieceCrossing c;
@@ -132,7 +134,8 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   }
   if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
     return cut(m, entry, -1, c, near), true;
-  if (state > 0) decide("TRC-CD-3", m.line, "none", near);
+  // A miss of exactly 0 is an overlap of collinear pieces; a point at 0 would have been on both.
+  if (state > 0) decide("TRC-CD-3", m.line, near == 0 && overlap ? "overlap" : "none", near);
   return false;
 }
 

@@ -7,13 +7,6 @@
 namespace cutcom::fast {
 
 namespace {
-bool on_curve(const EdgeCurve& c, Vec2 p) {
-  if (c.bound == EdgeCurve::Bound::kWhole) return true;
-  double t = dot(p - c.carrier.point, c.carrier.direction);
-  if (t < 0) return false;
-  return c.bound == EdgeCurve::Bound::kRay || t <= dot(c.carrier.direction, c.carrier.direction);
-}
-
 // Position along an element's equidistant, relative to its normal start (lines: length; arcs:
 // rotation in (-pi, pi]).
 double along(const Element& e, Vec2 p, double side_radius) {
@@ -71,7 +64,11 @@ bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double si
   if (n == 0 && circle) margin = std::min(depth, -std::numeric_limits<double>::denorm_min());
   bool found = false;
   double best = 0, best_margin = 0;
+  // The carriers meet (n > 0): their overlap is at least 0, whatever the rounding of the gap.
+  if (n > 0) depth = std::max(depth, 0.0);
   for (int i = 0; i < n; ++i) {
+    // The point counts when every slack is at least 0 (the boundary rule: an end is on), so the
+    // branch follows from the margin m itself.
     double m = depth;
     if (!curve.carrier.circle) {
       double length = norm(curve.carrier.direction);
@@ -82,12 +79,10 @@ bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double si
     // Position on the piece from `from` (or the normal start) to the normal end: lines by
     // length, circles by the rotation in [0, 2 pi) from `from` (slack: the chord to each end).
     double a, lower_mm, upper_mm;
-    bool on_piece;
     if (!e.arc) {
       a = along(e, xs[i], side_radius);
       double lower = from ? along(e, *from, side_radius) : 0.0;
       lower_mm = a - lower, upper_mm = e.length - a;
-      on_piece = lower_mm >= 0 && upper_mm >= 0;
     } else {
       constexpr double kTurn = 2 * std::numbers::pi;
       Vec2 start = from ? *from : Element::offset(e.start, e.start_tangent(), side_radius);
@@ -98,17 +93,16 @@ bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double si
       // What is left of the circle after `from` (as close_open measures it: no wrap-around
       // when `from` is the normal start of a full circle).
       double room = sweep(e) - (from ? signed_rotation(e.start - e.centre, f, e.sense) : 0.0);
-      on_piece = a <= room;
       lower_mm = norm(xs[i] - start), upper_mm = norm(xs[i] - end);
-      if (!on_piece) lower_mm = upper_mm = -std::min(lower_mm, upper_mm);
+      // Beyond the room by the rotation: off by the nearer end (a point that is an end is on).
+      if (a > room && lower_mm != 0 && upper_mm != 0) lower_mm = upper_mm = -std::min(lower_mm, upper_mm);
     }
     m = std::min({m, lower_mm, upper_mm});
-    bool valid = on_curve(curve, xs[i]) && on_piece;
-    if (!valid) {
-      margin = std::max(margin, std::min(m, -std::numeric_limits<double>::denorm_min()));
+    if (!(m >= 0)) {
+      margin = std::max(margin, m);
       continue;
     }
-    if (!found || (last ? a > best : a < best)) found = true, best = a, out = xs[i], best_margin = std::max(m, 0.0);
+    if (!found || (last ? a > best : a < best)) found = true, best = a, out = xs[i], best_margin = m;
   }
   if (found) margin = best_margin;
   return found;

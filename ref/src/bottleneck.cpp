@@ -175,8 +175,22 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     else if (xs.empty())
       xs = carrier_intersections<Kernel>(h, c);
     if (!h.circle && !c.circle && xs.empty()) {
-      // Parallel lines never cross; collinear ones (distance 0) are the knife edge of crossing.
-      FT gap = CGAL::abs(CGAL::determinant(h.direction, c.point - h.point)) / exact_root(h.direction.squared_length());
+      // Parallel lines never cross; the near miss is their distance. Collinear ones are apart
+      // along the line, or overlap (or touch): the knife edge of crossing, a miss of 0.
+      FT length = exact_root(h.direction.squared_length());
+      FT across = CGAL::determinant(h.direction, c.point - h.point);
+      FT gap = CGAL::abs(across) / length;
+      if (CGAL::sign(across) == CGAL::ZERO) {
+        FT ta = (e.a - held.a) * h.direction, tb = (e.b - held.a) * h.direction, l2 = h.direction.squared_length();
+        const FT& lo = CGAL::compare(ta, tb) == CGAL::SMALLER ? ta : tb;
+        const FT& hi = CGAL::compare(ta, tb) == CGAL::SMALLER ? tb : ta;
+        if (CGAL::compare(lo, l2) == CGAL::LARGER)
+          gap = (lo - l2) / length;  // the entry piece lies beyond the held piece's end
+        else if (CGAL::sign(hi) == CGAL::NEGATIVE)
+          gap = -hi / length;  // before its start
+        else
+          gap = FT(0), out.overlap = true;
+      }
       if (!out.near_miss || approx_less(*out.near_miss, -gap)) out.near_miss = -gap;
     }
     for (const Point& p : xs) {

@@ -37,6 +37,7 @@ struct PieceCrossing {
   int entry_piece = -1;
   FT slack;
   std::optional<FT> near_miss;
+  bool overlap = false;  // two collinear segments overlap or touch: a near miss of exactly 0
 };
 // `from`: the first entry piece compared (a lead piece of the predecessor is not compared with its
 // neighbour's pieces).

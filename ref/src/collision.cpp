@@ -119,6 +119,7 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
   int lo = seq_of(m) - md_.cutcom_maxnum_check_blocks, hi = seq_of(m) - 2;
   std::optional<Entry> entry;
   std::optional<FT> near;
+  bool overlap = false;  // collinear pieces overlap (a near miss of 0)
   bool compared = false;
   // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
   // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
@@ -130,6 +131,7 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
     PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0);
     // The largest near miss (picked by the filter's value: see bottleneck.hpp).
     keep_largest(near, c.near_miss);
+    overlap = overlap || c.overlap;
     if (!c.point) return std::nullopt;
     return c;
   };
@@ -143,7 +145,9 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
   if (looking_ && seq_of(*open_block_) >= lo && seq_of(*open_block_) <= hi)
     if (std::optional<PieceCrossing> c = try_piece(open_piece(), seq_of(*open_block_)))
       return cut(m, *entry, std::nullopt, *c, near), true;
-  if (entry) decide("TRC-CD-3", m.words.line, "none", near ? exact_mm(*near) : std::string("-inf"));
+  // A miss of exactly 0 is an overlap of collinear pieces (a point at 0 lies on both: a cut).
+  bool at_overlap = overlap && near && CGAL::sign(*near) == CGAL::ZERO;
+  if (entry) decide("TRC-CD-3", m.words.line, at_overlap ? "overlap" : "none", near ? exact_mm(*near) : std::string("-inf"));
   return false;
 }
 
@@ -229,6 +233,7 @@ bool Compensation::search_further_back(const Block& b, const EdgeCurve& curve) {
   std::vector<PathPiece> aux{curve_piece(curve)};
   int lo = seq_of(b) - md_.cutcom_maxnum_check_blocks, hi = seq_of(b) - 2;
   std::optional<FT> near;
+  bool overlap = false;  // collinear pieces overlap (a near miss of 0)
   bool compared = false;
   const std::deque<HeldRecord>& records = held_.records();
   for (std::size_t i = 0; i < records.size(); ++i) {
@@ -237,6 +242,7 @@ bool Compensation::search_further_back(const Block& b, const EdgeCurve& curve) {
     compared = true;
     PieceCrossing c = piece_crossing(piece_of(r), aux);
     keep_largest(near, c.near_miss);
+    overlap = overlap || c.overlap;
     if (!c.point) continue;
     FT margin = lowered(c.slack, near);
     decide("TRC-CD-5", b.words.line, "earlier-block", exact_mm(margin));
