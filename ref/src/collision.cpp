@@ -147,7 +147,8 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
       return cut(m, *entry, std::nullopt, *c, near), true;
   // A miss of exactly 0 is an overlap of collinear pieces (a point at 0 lies on both: a cut).
   bool at_overlap = overlap && near && CGAL::sign(*near) == CGAL::ZERO;
-  if (entry) decide("TRC-CD-3", m.words.line, at_overlap ? "overlap" : "none", near ? exact_mm(*near) : std::string("-inf"));
+  if (entry)
+    decide("TRC-CD-3", m.words.line, at_overlap ? "overlap" : "none", near ? exact_mm(*near) : std::string("-inf"));
   return false;
 }
 
