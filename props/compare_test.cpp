@@ -135,6 +135,21 @@ TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
 }
 
+// A whole turn and a rest of 4.1e-8 mm in ref against the whole turn alone in fast (PATH-ELEMENT-2
+// lets fast close a circle within 1e-8 of its radius): agree; a rest of 1e-6 mm is a divergence.
+// covers: PROP-DIFF-1 PATH-ELEMENT-2
+TEST(Comparison, TheRestAfterAWholeTurnWithinTheSnapOfFastDoesNotCount) {
+  RunResult ref, fast;
+  auto circle = [](PathPoint from, PathPoint to) { return arc(from, to, {0, 0, 0}, true); };
+  PathPoint x{36, 0, 0};
+  const double rest = 4.1e-8 / 36;  // the rest's turn, rad
+  ref.path = {circle(x, x), circle(x, {36 * std::cos(rest), 36 * std::sin(rest), 0})};
+  fast.path = {circle(x, x)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
+  ref.path[1].end = {36 * std::cos(1e-6 / 36), 36 * std::sin(1e-6 / 36), 0};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
+}
+
 // fast writes no element of length zero (PATH-ELEMENT-1): a transition circle of radius 0 is a
 // point that the tolerance would hide (mutant 14); a full circle is not one.
 // covers: PATH-ELEMENT-1 PROP-BOUNDARY-1
