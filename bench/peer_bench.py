@@ -240,6 +240,8 @@ def main():
     ap.add_argument("--rs274", default="rs274")
     ap.add_argument("--memory-blocks", default="10000,200000,2000000",
                     help="program lengths at which cutcom's peak memory is measured (flat: the same at all)")
+    ap.add_argument("--ref-memory-blocks", default="10000,100000",
+                    help="program lengths at which ref's peak memory and time are measured (about 0.5 ms a block)")
     ap.add_argument("--bench-engines", default="build/bench/bench_engines")
     ap.add_argument("--write-docs", action="store_true", help="write docs/performance.md and its chart")
     a = ap.parse_args()
@@ -302,12 +304,22 @@ def main():
         memory.append((n, kb, svg_kb, svg_s))
         print(f"peak memory, lines+arcs with CDON, {n} blocks: text {mb(kb)}, SVG {mb(svg_kb)} ({svg_s:.2f} s)")
         os.remove(spf)
+    ref_memory = []
+    for n in [int(v) for v in a.ref_memory_blocks.split(",") if v]:
+        spf = os.path.join(tmp, f"ref_memory_{n}.mpf")
+        with open(spf, "w") as f:
+            f.write(sinumerik_program(bumps_and_corners(n), cdon=True))
+        t = time.perf_counter()
+        kb = peak_kb([a.cutcom, "run", "--engine", "ref", spf, *md, "-o", "/dev/null"])
+        ref_memory.append((n, kb, time.perf_counter() - t))
+        print(f"ref, lines+arcs with CDON, {n} blocks: peak memory {mb(kb)}, {ref_memory[-1][2]:.1f} s")
+        os.remove(spf)
     pocket = parametric_rows(a, tmp)
     engines = engine_rows(a)
     for name, median, best in engines:
         print(f"{name:40} median {median / 1e6:.2f} M blocks/s, best {best / 1e6:.2f}")
     if a.write_docs:
-        write_docs(rows, memory, pocket, engines, a)
+        write_docs(rows, memory, ref_memory, pocket, engines, a)
     shutil.rmtree(tmp, ignore_errors=True)
     sys.exit(0 if ok else 1)
 
@@ -355,7 +367,7 @@ def mb(kb):
     return f"{kb / 1024:.1f} MB" if kb else "not measured"
 
 
-def write_docs(rows, memory, pocket, engines, a):
+def write_docs(rows, memory, ref_memory, pocket, engines, a):
     here = os.path.dirname(os.path.abspath(__file__))
     docs = os.path.join(here, "..", "docs")
     with open(os.path.join(docs, "performance-peer.svg"), "w") as f:
@@ -392,6 +404,12 @@ def write_docs(rows, memory, pocket, engines, a):
               "20,000 of them, then polylines within a bound it states (at most 200,000 points).", "",
               "| blocks | peak memory, text output | peak memory, SVG picture | SVG time (s) |", "|---|---|---|---|"]
     lines += [f"| {n} | {mb(kb)} | {mb(svg_kb)} | {svg_s:.2f} |" for n, kb, svg_kb, svg_s in memory]
+    if ref_memory:
+        lines += ["", "ref keeps the blocks its window, look-ahead and approach still refer to (and a spare of "
+                  "64), not the program: its peak memory does not grow with the program either "
+                  "(`cutcom run --engine ref`, the same contour, text output).", "",
+                  "| blocks | ref peak memory | ref time (s) | per block (ms) |", "|---|---|---|---|"]
+        lines += [f"| {n} | {mb(kb)} | {t:.1f} | {1000 * t / n:.2f} |" for n, kb, t in ref_memory]
     lines += ["", "## A parametric program", "",
               "A pocket of 25,000 passes of four blocks under G41, once as a WHILE loop that computes its "
               "coordinates, once written out block by block (`cutcom run FILE -o /dev/null`, whole process, "

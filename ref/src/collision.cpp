@@ -177,7 +177,7 @@ bool Compensation::cut_at(const Block& reporting, std::optional<std::size_t> rec
     bool rest = false;  // the crossed block had more after the cut element
     for (const HeldRecord& k : held_.cut(*record, end)) {
       const Block* owner = k.owner;
-      if (!k.element) actions_done_[static_cast<std::size_t>(owner->index)] = false;  // run again at x
+      if (!k.element) actions_done_[slot(*owner)] = 0;  // run again at x
       if (owner == crossed)
         rest = true;
       else

@@ -10,7 +10,7 @@ namespace cutcom::ref::detail {
 
 void Compensation::step(Block b, const std::optional<PlaneOverride>& over) {
   if (trace_.stopped()) return;
-  b.index = static_cast<int>(program_.size());
+  b.index = next_index_++;
   if (over) overrides_[b.index] = *over;
   program_.push_back(b);
   actions_done_.push_back(false);
@@ -36,6 +36,27 @@ void Compensation::step(Block b, const std::optional<PlaneOverride>& over) {
     }
   }
   release_window(kept);
+  forget_old_blocks();
+}
+
+void Compensation::forget_old_blocks() {
+  int keep_from = program_.back().index;
+  auto pin = [&](const Block* b) {
+    if (b) keep_from = std::min(keep_from, b->index);
+  };
+  for (const HeldRecord& r : held_.records()) pin(r.owner);
+  for (const Block* b : skipped_) pin(b);
+  for (const Block* b : dummies_) pin(b);
+  if (approach_)
+    for (const Block* b : approach_->held_back) pin(b);
+  pin(open_block_), pin(prev_block_);
+  if (phase_ == Phase::kApproach || approach_) pin(selection_);  // read until the approach is made
+  keep_from -= kSpareBlocks;
+  while (!program_.empty() && program_.front().index < keep_from) {
+    program_.pop_front(), seq_.pop_front(), actions_done_.pop_front();
+    ++first_kept_;
+  }
+  overrides_.erase(overrides_.begin(), overrides_.lower_bound(first_kept_));
 }
 
 void Compensation::run_uncompensated(const Block& b) {
@@ -219,8 +240,8 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
     if (beyond_a_turn) {  // PATH-ELEMENT-2: the whole turn first, then the rest, each readable
       if (!(coord(e.start3, comp_->axes.applicate) == coord(e.end3, comp_->axes.applicate)))
         throw UnsupportedError(e.line, "a helix that turns more than a whole turn after its corners");
-      emit_arc(*open_block_, from, from, centre, open_radius_, e.sense > 0,
-               origin(*open_block_, OriginKind::kOffset), comp_->axes);
+      emit_arc(*open_block_, from, from, centre, open_radius_, e.sense > 0, origin(*open_block_, OriginKind::kOffset),
+               comp_->axes);
     }
     emit_arc(*open_block_, from, to, centre, open_radius_, e.sense > 0, origin(*open_block_, OriginKind::kOffset),
              comp_->axes);
@@ -460,8 +481,8 @@ void Compensation::emit_arc(const Block& owner, const ExactPoint& from, const Ex
 }
 
 void Compensation::run_actions(const Block& b, const PathPoint& at) {
-  if (actions_done_[static_cast<std::size_t>(b.index)]) return;
-  actions_done_[static_cast<std::size_t>(b.index)] = true;
+  if (actions_done_[slot(b)]) return;
+  actions_done_[slot(b)] = 1;
   for (int i = 0; i < b.words.aux_count; ++i) {
     HeldRecord r;
     r.owner = &b, r.seq = seq_of(b),

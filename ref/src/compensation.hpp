@@ -73,7 +73,9 @@ class Compensation {
 
   // Auxiliary functions of a block run before its first element (PATH-ACTION-1).
   void run_actions(const Block& b, const PathPoint& at);
-  int seq_of(const Block& b) const { return seq_[static_cast<std::size_t>(b.index)]; }
+  int seq_of(const Block& b) const { return seq_[slot(b)]; }
+  // A block's place among those still kept (program_ starts at block first_kept_).
+  std::size_t slot(const Block& b) const { return static_cast<std::size_t>(b.index - first_kept_); }
   void hold(const Block& owner, const PathElement& e, ExactPath::Element exact) {
     HeldRecord r;
     r.owner = &owner, r.seq = seq_of(owner), r.element = e, r.exact = std::move(exact);
@@ -85,7 +87,8 @@ class Compensation {
 
   Origin origin(const Block& b, OriginKind kind) const {
     Origin o;
-    o.kind = kind, o.line = b.words.line, o.source = b.words.source, o.block = b.words.number, o.sar = b.sar.move, o.insert = b.insert;
+    o.kind = kind, o.line = b.words.line, o.source = b.words.source, o.block = b.words.number, o.sar = b.sar.move,
+    o.insert = b.insert;
     return o;
   }
 
@@ -357,15 +360,21 @@ class Compensation {
   // the end point E and meeting the last block at an outer corner.
   void retract_around(const Block& b, const KontCorner& k);
 
+  // The blocks still referred to (held output, the look-ahead, the approach), and a spare of
+  // kSpareBlocks before them: memory follows the window, not the program's length.
+  static constexpr int kSpareBlocks = 64;
+  void forget_old_blocks();
   std::deque<Block> program_;
+  int first_kept_ = 0;  // the index of program_.front()
+  int next_index_ = 0;
   std::map<int, PlaneOverride> overrides_;  // by block index
   const MachineData& md_;
   PathSink& sink_;
   Trace& trace_;
   CollisionWindow& held_;  // stage 3: where output goes (collision_window.hpp)
   ExactPath& path;         // rounds points as the output does
-  std::vector<int> seq_;   // per block: the window's ordinal of the last traversing block up to it (TRC-CD-1)
-  std::vector<bool> actions_done_;
+  std::deque<int> seq_;    // per kept block: the window's ordinal of the last traversing block up to it (TRC-CD-1)
+  std::deque<char> actions_done_;  // per kept block
   Phase phase_ = Phase::kOff;
   bool d0_noticed_ = false;
   std::optional<InForce> comp_;

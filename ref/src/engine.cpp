@@ -61,6 +61,7 @@ bool run_exact(ProgramReader& reader, const MachineData& md, PathSink& sink, Exa
 
 bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
   ExactPath path;
+  path.keep_elements(checks != nullptr);
   bool ok = Pipeline(md, sink, path).run(reader);
   if (checks) path.check(*checks);
   return ok;

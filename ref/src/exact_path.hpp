@@ -42,10 +42,16 @@ class ExactPath {
                               const FT& side_radius, PlaneAxes axes);
   static Element circle_element(int line, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
                                 const FT& side_radius, PlaneAxes axes);
-  void add(const Element& e) { elements_.push_back(e); }  // in output order
+  // In output order; kept only for the checks (keep_elements), else memory would grow with the
+  // program (each exact point holds its whole construction).
+  void add(const Element& e) {
+    if (keep_) elements_.push_back(e);
+  }
+  void keep_elements(bool keep) { keep_ = keep; }
 
  private:
   std::vector<Element> elements_;
+  bool keep_ = true;
 };
 
 }  // namespace cutcom::ref
