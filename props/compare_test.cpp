@@ -98,7 +98,7 @@ Decision decision(std::string_view clause, std::string_view branch, double margi
 
 // A branch taken against its own margin is a divergence even where both engines agree and ref's
 // margin lies in the band: `<` for `<=` at MD20230 shows as `switch-to-G451` at margin 0.
-// covers: PROP-BOUNDARY-1 TRC-CORNER-4 TRC-KONT-1 TRC-ELEMENT-1 TRC-CD-3
+// covers: PROP-BOUNDARY-1 TRC-CORNER-4 TRC-KONT-1 TRC-ELEMENT-1 TRC-CD-3 TRC-LOOK-2
 TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   RunResult ref, fast;
   ref.decisions = {decision("TRC-CORNER-4", "keep-G450", 0, "0")};
@@ -130,6 +130,10 @@ TEST(Comparison, ABranchAgainstItsOwnMarginBreaksTheBoundaryRule) {
   ref.decisions = {decision("TRC-CD-3", "overlap", 0, "0")};
   fast.decisions = {decision("TRC-CD-3", "overlap", -0.0)};
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
+  // An intersection exactly at the candidate's start left out shows as `none` at margin 0 (TRC-LOOK-2).
+  ref.decisions = {decision("TRC-LOOK-2", "intersection", 0, "0")};
+  fast.decisions = {decision("TRC-LOOK-2", "none", 0)};
+  EXPECT_NE(compare(ref, fast, tolerance()).explanation.find("fast decision 0: TRC-LOOK-2"), std::string::npos);
   // A NaN margin satisfies no rule.
   fast.decisions[0].margin = std::nan("");
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);

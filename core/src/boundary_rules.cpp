@@ -33,6 +33,8 @@ constexpr std::array kRules{
     BoundaryRule{"TRC-CORNER-4", "switch-to-G451", kNegative},
     BoundaryRule{"TRC-LOOK-1", "reaches", kNonNegative},  // the intersection at the normal end reaches
     BoundaryRule{"TRC-LOOK-1", "too-short", kNegative},
+    BoundaryRule{"TRC-LOOK-2", "intersection", kNonNegative},  // an intersection at the equidistant's start is valid
+    BoundaryRule{"TRC-LOOK-2", "none", kNegative},
     BoundaryRule{"TRC-APPR-NORM-1", "line", kPositive},
     BoundaryRule{"TRC-APPR-NORM-1", "zero-length", kZero},
     BoundaryRule{"TRC-RETR-NORM-1", "line", kPositive},

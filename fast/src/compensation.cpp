@@ -410,7 +410,10 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   bool found = !parallel &&
                (touching_within_rounding(cu, cv, y) || nearest_intersection(cu, cv, start, cand.start_tangent(), y));
   bool valid = false;
-  double margin = cu.circle || cv.circle ? carrier_gap(cu, cv) : std::numeric_limits<double>::infinity();
+  // No intersection at all: minus the gap between the carriers (parallel lines, and one circle
+  // carrying both, which has no gap and no point: -inf).
+  double gap = cu.circle || cv.circle ? carrier_gap(cu, cv) : 0;
+  double margin = gap > 0 ? -gap : -std::numeric_limits<double>::infinity();
   if (found) {
     Extent on = extent_of(cand, radius, y);
     valid = on.along >= 0 && on.left >= 0;

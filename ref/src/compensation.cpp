@@ -381,8 +381,13 @@ void Compensation::look_ahead(const Block& b) {
   Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
   std::optional<Point> y = nearest_intersection(u, v, start, cand.start_dir);
   bool valid = false;
-  // No intersection at all: the gap between the carriers (lines: parallel, "inf").
-  std::string margin = u.circle || v.circle ? exact_mm(carrier_gap<Kernel>(u, v)) : std::string("inf");
+  // No intersection at all: minus the gap between the carriers (parallel lines, and one circle
+  // carrying both, which has no gap and no point: "-inf").
+  std::string margin = "-inf";
+  if (!y && (u.circle || v.circle)) {
+    FT gap = carrier_gap<Kernel>(u, v);
+    if (CGAL::sign(gap) == CGAL::POSITIVE) margin = exact_mm(-gap);
+  }
   if (y) {
     Extent on = extent_of(cand, radius, *y);
     valid = on.before_start != CGAL::NEGATIVE && on.after_end != CGAL::NEGATIVE;
