@@ -418,6 +418,9 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
     Extent on = extent_of(cand, radius, y);
     valid = on.along >= 0 && on.left >= 0;
     margin = on.along < 0 ? on.along : on.left < 0 ? on.left : std::min(on.along, on.left);  // the nearer end
+    // With a circle the carriers' overlap too (as ref): carriers that just touch are the knife
+    // edge of meeting at all. They met, so it is at least 0, whatever the rounding of the gap.
+    if (valid && (cu.circle || cv.circle)) margin = std::min(margin, std::max(-carrier_gap(cu, cv), 0.0));
   }
   decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
   if (!valid) return pass_over(c);

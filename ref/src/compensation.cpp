@@ -398,6 +398,12 @@ void Compensation::look_ahead(const Block& b) {
       margin = on.left_text;
     else
       margin = on.start_nearer ? on.along_text : on.left_text;
+    // With a circle the carriers' overlap too, when it is less (picked by the filter value, as
+    // TRC-CD-3): carriers that just touch are the knife edge of meeting at all.
+    if (valid && (u.circle || v.circle)) {
+      FT depth = -carrier_gap<Kernel>(u, v);
+      if (rough(depth) < std::stod(margin)) margin = exact_mm(depth);
+    }
   }
   decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
   if (!valid) return pass_over(b);
