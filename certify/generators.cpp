@@ -583,6 +583,24 @@ void full_circle(ContourCase& c, std::int64_t hair) {
   out.dx = big;
   c.steps = {lead, circle, out};
 }
+
+// TRC-LOOK-2: a look-ahead whose intersection is exactly the candidate's equidistant start (an
+// intersection at the start is valid), or a nanometre before or after it. G41 along +x, a block
+// up by 2v, too short for r = 5v at that inner corner, then the candidate along (3, -4): its
+// equidistant starts at 4v along and 5v up from the corner, on the open equidistant (5v up);
+// the hair moves it up or down.
+void look_ahead_at_candidate_start(ContourCase& c, std::int64_t hair) {
+  std::int64_t v = *inRange<std::int64_t>(1, 8) * kMm / 4;
+  c.radius_um = 5 * v;
+  c.right = false;
+  c.md20240 = std::max(c.md20240, 3);
+  Step open{}, up{}, candidate{}, tail{};
+  open.dx = *inRange<std::int64_t>(3, 10) * v;
+  up.dy = 2 * v + hair;
+  candidate.dx = 3 * v, candidate.dy = -4 * v;
+  tail.dx = 5 * v;
+  c.steps = {open, up, candidate, tail};
+}
 }  // namespace
 
 rc::Gen<ContourCase> exact_situations() {
@@ -590,9 +608,9 @@ rc::Gen<ContourCase> exact_situations() {
     ContourCase c = *random_walk();
     exact_frame(c);
     std::int64_t hair = *element<std::int64_t>(0, 0, 1, -1);
-    static constexpr const char* kKinds[] = {"corner-on-md", "start-on-boundary", "line-tangent-to-circle-carrier",
-                                             "zero-equidistant", "full-circle"};
-    int kind = *inRange(0, 5);
+    static constexpr const char* kKinds[] = {"corner-on-md",     "start-on-boundary", "line-tangent-to-circle-carrier",
+                                             "zero-equidistant", "full-circle",       "look-ahead-at-candidate-start"};
+    int kind = *inRange(0, 6);
     switch (kind) {
       case 0:
         corner_on_md(c, hair);
@@ -606,8 +624,11 @@ rc::Gen<ContourCase> exact_situations() {
       case 3:
         zero_equidistant(c, hair);
         break;
-      default:
+      case 4:
         full_circle(c, hair);
+        break;
+      default:
+        look_ahead_at_candidate_start(c, hair);
         break;
     }
     c.style = std::string("exact/") + kKinds[kind] +
