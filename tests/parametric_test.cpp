@@ -468,6 +468,18 @@ TEST(Parametric, ModalCallRunsAfterEveryMove) {
   EXPECT_EQ(error_line("MCALL NOSUCH(1)\n", "neither a standard cycle nor a subprogram found", {}, dir), 1);
 }
 
+// A rounding or chamfer in a subprogram that cannot be made names the subprogram's file and lines,
+// as every other error there does (it stopped naming the calling line as "line 2/line 2").
+// covers: NC-PARAM-SUB-3 NC-CONTOUR-1
+TEST(Parametric, AContourDefinitionErrorInASubprogramNamesItsPlace) {
+  std::string dir = folder_with("contour-in-sub", {{"SLOT.SPF",
+                                                    "PROC SLOT(REAL WW)\nG1 X0 Y0 F100\nG1 X40 CHF=1\n"
+                                                    "G3 X40 Y=WW CR=WW/3\nG1 X0\nRET\n"}});
+  EXPECT_EQ(error_line("G0 X-5 Y0\nSLOT(30)\nM30\n",
+                       "in subprogram SLOT.SPF line 3: the chamfer of SLOT.SPF line 3/SLOT.SPF line 4", {}, dir),
+            2);
+}
+
 // covers: NC-PARAM-SUB-3 TRC-END-1
 TEST(Parametric, ElementsNameWhereInASubprogramTheyStand) {
   std::string dir = folder_with(

@@ -22,8 +22,12 @@ bool moves_applicate(const Block& b) {
   return coord(b.start, h) != coord(b.end, h);
 }
 
-std::string name_of(const Block& b) {
-  return b.words.number ? fmt::format("N{}", *b.words.number) : fmt::format("line {}", b.words.line);
+// A block by its N number, else its line; in a subprogram its file and line there (`where`: the
+// interpreter's text of its place, "NAME.SPF line 9, called from ...").
+std::string name_of(const Block& b, const std::string& where = {}) {
+  if (b.words.number) return fmt::format("N{}", *b.words.number);
+  if (b.words.source != 0 && !where.empty()) return where.substr(0, where.find(", called from"));
+  return fmt::format("line {}", b.words.line);
 }
 
 }  // namespace
@@ -81,7 +85,14 @@ void ProgramReader::finish_pending(Block* next) {
   bool ang = pending_ang_;
   pending_ang_ = false;
   PlaneAxes ax = plane_axes(p.state.plane);
-  auto fail = [&](int line, const std::string& what) { throw InputError(line, 1, what); };
+  // NC-PARAM-SUB-3: a block of a subprogram names where it stands there (its line is the call's).
+  auto fail = [&](int line, const std::string& what) {
+    for (const Block* b : {&p, next})
+      if (b && b->words.line == line && b->words.source != 0)
+        throw InputError(line, 1, fmt::format("in subprogram {}: {}", interpreter_.source_text(b->words.source), what));
+    throw InputError(line, 1, what);
+  };
+  auto named = [&](const Block& b) { return name_of(b, interpreter_.source_text(b.words.source)); };
 
   if (ang) {  // NC-CONTOUR-3: the corner of two lines given by their angles
     if (!next || !next->words.cw().ang || !next->words.axis[static_cast<std::size_t>(ax.abscissa)].present ||
@@ -141,7 +152,7 @@ void ProgramReader::finish_pending(Block* next) {
     why_not = "the plane changes";
   if (corner && !why_not.empty()) {
     note(p, "NC-CONTOUR-1",
-         fmt::format("{} of {} not inserted: {}", rounding ? "rounding" : "chamfer", name_of(p), why_not));
+         fmt::format("{} of {} not inserted: {}", rounding ? "rounding" : "chamfer", named(p), why_not));
     corner = false;
   }
   if (corner) {
@@ -181,8 +192,8 @@ void ProgramReader::finish_pending(Block* next) {
       });
       if (v[10] == Decimal::from_int(1)) cut = v;
     } catch (const contour::ContourError& err) {
-      fail(p.words.line, fmt::format("{} of {}/{}: {}", rounding ? "the rounding" : "the chamfer", name_of(p),
-                                     name_of(*next), err.what));
+      fail(p.words.line,
+           fmt::format("{} of {}/{}: {}", rounding ? "the rounding" : "the chamfer", named(p), named(*next), err.what));
     } catch (const std::domain_error&) {
       fail(p.words.line, "the rounding or chamfer has no solution at this corner");
     }
@@ -191,13 +202,13 @@ void ProgramReader::finish_pending(Block* next) {
     if (cut && (*cut)[0] == (*cut)[2] && (*cut)[1] == (*cut)[3]) {
       note(p, "NC-CONTOUR-1",
            fmt::format("{} of {}/{} not inserted: it is shorter than 10^-9 mm", rounding ? "rounding" : "chamfer",
-                       name_of(p), name_of(*next)));
+                       named(p), named(*next)));
       cut.reset();
     }
     if (cut && (*cut)[12].sign() > 0)
       note(p, "NC-CONTOUR-1",
            fmt::format("{} of {}/{} reduced to {} mm: the programmed one does not fit on the elements",
-                       rounding ? "rounding" : "chamfer", name_of(p), name_of(*next), (*cut)[12].to_string()));
+                       rounding ? "rounding" : "chamfer", named(p), named(*next), (*cut)[12].to_string()));
     if (cut) {
       const auto& v = *cut;
       auto centre_of = [&](const Block& b, Decimal a, Decimal o) {
