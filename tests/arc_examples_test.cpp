@@ -187,6 +187,30 @@ TEST(ArcExamples, CircleByRadius) {
   }
 }
 
+// A half circle given by CR= in a frame turned by 30 degrees: its end points go onto the grid
+// (NC-GRID-1) and the chord of exactly 2|CR| in the program's system comes out up to two grid
+// units longer. Within two units it is a half circle about the chord's midpoint; three units
+// beyond (programmed) it stays unreachable.
+// covers: ARC-CR-1 NC-GRID-1 NC-FRAME-4
+TEST(ArcExamples, AHalfCircleByRadiusInATurnedFrameStillReachesItsEnd) {
+  for (const char* chf : {"", " CHF=1"}) {
+    Runs r = run_both(std::string("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nN10 G17 G90 T1 D1\nN15 AROT RPL=30\n"
+                                  "N20 G0 X-10 Y-10\nN30 G41 G1 X0 Y0 F800\nN40 G1 X60") +
+                      chf + "\nN50 G3 X60 Y30 CR=15\nN60 G1 X0\nN70 G40 X-10 Y-10\nN80 M30\n");
+    for (const RunResult* x : {&r.fast, &r.ref}) {
+      EXPECT_TRUE(x->alarms.empty()) << chf;
+      // (With the chamfer the contour stage gives the circle by its centre: ARC-CENTRE-2.)
+      EXPECT_TRUE(has_decision(*x, *chf ? "ARC-CENTRE-2" : "ARC-CR-1", *chf ? "within" : "circle")) << chf;
+    }
+    EXPECT_EQ(r.fast.path.size(), r.ref.path.size()) << chf;
+  }
+  // Programmed decimals: a chord of 2|CR| + 2 units reaches, + 3 units does not.
+  for (auto [end, reaches] : {std::pair{"30.000000002", true}, std::pair{"30.000000003", false}}) {
+    Runs r = run_both(std::string("N10 G0 X0 Y0\nN20 G3 X") + end + " Y0 CR=15\n");
+    for (const RunResult* x : {&r.fast, &r.ref}) EXPECT_EQ(x->alarms.empty(), reaches) << end;
+  }
+}
+
 // covers: ARC-CR-1 TRC-ARC-EQ-1 TRC-CORNER-1
 TEST(ArcExamples, CompensatedCircleByRadiusTangentToLines) {
   // TangentLineArcLineInsideTheCircle written with CR=10: the same path.

@@ -48,7 +48,13 @@ Element element_of(const Block& b) {
     if (!b.words.cr || same) throw ContourError{"a circle given by CR= needs a chord"};
     Interval cr(*b.words.cr);
     Interval q = cr * cr / dot(d, d) - Interval::integer(1) / Interval::integer(4);
-    if (q.sign() < 0) throw ContourError{"the circle cannot reach its end point with this CR= (alarm 14040)"};
+    if (q.sign() < 0) {  // ARC-CR-1: up to two grid units beyond 2|CR| is a half circle
+      Decimal radius = b.words.cr->sign() < 0 ? -*b.words.cr : *b.words.cr;
+      Interval reach = Interval::integer(2) * Interval(radius) + Interval(Decimal::from_units(2));
+      if ((dot(d, d) - reach * reach).sign() > 0)
+        throw ContourError{"the circle cannot reach its end point with this CR= (alarm 14040)"};
+      q = Interval();
+    }
     int k = ((e.sense > 0) == (b.words.cr->sign() > 0)) ? 1 : -1;  // ARC-CR-1
     e.centre = m + (Interval::integer(k) * sqrt(q)) * perp(d);
   }

@@ -118,27 +118,31 @@ ProgrammedDecision cr_circle_reach(const Block& b, MarginText text) {
     // well under 16u (4 CR^2 + chord^2); beyond that its sign is q's.
     double da = (coord(b.end, ax.abscissa) - coord(b.start, ax.abscissa)).to_double();
     double db = (coord(b.end, ax.ordinate) - coord(b.start, ax.ordinate)).to_double();
-    double cr = std::fabs(b.words.cr->to_double());
-    double chord2 = da * da + db * db, q = 4 * cr * cr - chord2;
+    // (reach: 2|CR| and the allowance of two grid units for the rounding of the end points)
+    double reach = 2 * std::fabs(b.words.cr->to_double()) + 2.0 / Decimal::kUnitsPerOne;
+    double chord2 = da * da + db * db, q = reach * reach - chord2;
     bool zero_chord = coord(b.end, ax.abscissa) == coord(b.start, ax.abscissa) &&
                       coord(b.end, ax.ordinate) == coord(b.start, ax.ordinate);
-    if (std::fabs(q) > 16 * 0x1p-53 * (4 * cr * cr + chord2))
-      return {"ARC-CR-1", !zero_chord && q > 0 ? "circle" : "unreachable", true, "", 2 * cr - std::sqrt(chord2)};
+    if (std::fabs(q) > 16 * 0x1p-53 * (reach * reach + chord2))
+      return {"ARC-CR-1", !zero_chord && q > 0 ? "circle" : "unreachable", true, "", reach - std::sqrt(chord2)};
   }
   PlaneDelta d = delta(b.start, b.end, ax);
   mpz_class chord2 = d.a * d.a + d.b * d.b;
   mpz_class cr = units(*b.words.cr);
   if (cr < 0) cr = -cr;
-  // Boundary rule: a chord of exactly 2|CR| is reached (a half circle); a chord of 0 is not
+  // The reach: 2|CR| and two grid units, the most by which rounding both end points onto the
+  // grid (NC-GRID-1: a rotated frame) lengthens a chord of exactly 2|CR|.
+  mpz_class reach = 2 * cr + 2;
+  // Boundary rule: a chord of exactly the reach is reached (a half circle); a chord of 0 is not
   // (no circle is defined by one point and a radius), whatever the margin.
-  bool reachable = sign(chord2) > 0 && chord2 <= 4 * cr * cr;
-  int margin_sign = sign(4 * cr * cr - chord2);
+  bool reachable = sign(chord2) > 0 && chord2 <= reach * reach;
+  int margin_sign = sign(reach * reach - chord2);
   return with_root_margin("ARC-CR-1", reachable ? "circle" : "unreachable", margin_sign, [&](mpfr_t v) {
     mpfr_t c;
     mpfr_init2(c, 256);
     set_z(c, chord2);
     mpfr_sqrt(c, c, MPFR_RNDN);
-    set_z(v, 2 * cr);
+    set_z(v, reach);
     mpfr_sub(v, v, c, MPFR_RNDN);
     mpfr_clear(c);
   });
@@ -161,8 +165,11 @@ std::optional<int> circle_radius_sign(const Block& b, const Decimal& r) {
 
 int circle_radius_sign(const ProgrammedCircle& c, Int128 r_units) {
   mpz_class r = mpz_class(int128_to_string(r_units));
-  if (!c.by_centre) {
+  if (!c.by_centre) {  // rho = |CR|, or half the chord where that is a rounding longer (ARC-CR-1)
     mpz_class rho = mpz_class(int128_to_string(c.cr < 0 ? -c.cr : c.cr));
+    mpz_class ca = mpz_class(int128_to_string(c.chord[0])), cb = mpz_class(int128_to_string(c.chord[1]));
+    mpz_class chord2 = ca * ca + cb * cb;
+    if (chord2 > 4 * rho * rho) return sign(chord2 - 4 * r * r);
     return sign(rho - r);
   }
   auto z = [](Int128 v) { return mpz_class(int128_to_string(v)); };

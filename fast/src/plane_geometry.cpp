@@ -41,7 +41,8 @@ Element Element::circle_by_radius(Vec2 s, Vec2 e, double cr, int sense, double q
   double h = q > 0 ? std::sqrt(q) : 0;
   int k = (sense > 0) == (cr > 0) ? 1 : -1;  // short arc for CR > 0, long for CR < 0
   a.centre = 0.5 * (s + e) + (k * h) * left_normal(d);
-  a.radius = std::fabs(cr);
+  // ARC-CR-1: a chord a rounding longer than 2|CR| is a half circle about its midpoint.
+  a.radius = q >= 0 ? std::fabs(cr) : 0.5 * norm(d);
   return a;
 }
 

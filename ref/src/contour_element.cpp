@@ -64,12 +64,16 @@ ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
   mpq_class da = ea - sa, db = eb - sb;
   mpq_class q = cr * cr / (da * da + db * db) - mpq_class(1, 4);
   int k = (e.sense > 0) == (sgn(cr) > 0) ? 1 : -1;
-  FT h = sgn(q) == 0 ? FT(0) : exact_root(to_ft(q));
+  FT h = sgn(q) <= 0 ? FT(0) : exact_root(to_ft(q));  // (q < 0: a rounding beyond a half circle)
   e.a = plane_point(block.start, axes);
   e.b = plane_point(block.end, axes);
   e.centre = Point(to_ft((sa + ea) / 2) + FT(k) * (-to_ft(db)) * h, to_ft((sb + eb) / 2) + FT(k) * to_ft(da) * h);
   e.radius_squared = cr * cr;
   e.radius = to_ft(abs(cr));
+  if (sgn(q) < 0) {  // a chord a rounding longer than 2|CR| (ARC-CR-1): a half circle about its midpoint
+    e.radius_squared = (da * da + db * db) / 4;
+    e.radius = exact_root(to_ft(e.radius_squared));
+  }
   Vector rs = e.a - e.centre, re = e.b - e.centre;
   e.start_dir = Vector(-rs.y(), rs.x()) * FT(e.sense);
   e.end_dir = Vector(-re.y(), re.x()) * FT(e.sense);
