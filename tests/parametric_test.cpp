@@ -85,6 +85,11 @@ TEST(Parametric, ComputedValuesBecomeNinePlaceDecimals) {
   EXPECT_EQ(end_x("DEF REAL AA[3]=SET(1,2,3)\nG1 X=AA[2]*AA[1] F100\n"), "6");
   EXPECT_EQ(end_x("DEF REAL BB[2,2]\nBB[1,0]=7\nG1 X=AC(BB[1,0]-0.5) F100\n"), "6.5");
   EXPECT_EQ(end_x("G91 G1 X5 F100\nR2=1.25\nX=IC(R2*2)\n"), "7.5");
+  // AX[...]: the axis named by an AXIS variable, or written out.
+  EXPECT_EQ(end_x("DEF AXIS AA=X\nG1 AX[AA]=4*2 F100\n"), "8");
+  EXPECT_EQ(end_x("G1 AX[X]=3 F100\n"), "3");
+  EXPECT_EQ(error_line("DEF REAL BB=1\nG1 AX[BB]=3 F100\n", "AX[...]: an axis name or an AXIS variable is expected"),
+            2);
 }
 
 // covers: NC-PARAM-FLOW-1 NC-PARAM-FLOW-2 NC-PARAM-FLOW-3 NC-PARAM-FLOW-4 NC-PARAM-SYS-1 NC-PARAM-VAR-1 NC-PARAM-VAR-2

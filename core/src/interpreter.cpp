@@ -297,6 +297,29 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       out = words ? keep : std::string();
       return;
     }
+    // AX[axis]=value: the axis named by an AXIS variable or written out (indirect axis
+    // programming); the reader gets the axis' own word.
+    std::string axis_word;
+    if (n == "AX" && after < s.size() && s[after] == '[') {
+      plan.reset();
+      std::size_t from = skip_space(s, after + 1), to = name_end(s, from), close = skip_space(s, to);
+      if (close >= s.size() || s[close] != ']')
+        throw InputError(cx().line, static_cast<int>(from) + 1,
+                         "AX[...]: an axis name or an AXIS variable is expected");
+      axis_word = upper_text(s.substr(from, to - from));
+      if (find_variable(axis_word)) {
+        NcValue held = lookup.read(axis_word, {}, from);
+        axis_word = held.type == NcValue::Type::kString ? upper_text(held.text) : std::string();
+      }
+      if (axis_word.empty() || !is_letter(axis_word[0]))
+        throw InputError(cx().line, static_cast<int>(from) + 1,
+                         "AX[...]: an axis name or an AXIS variable is expected");
+      j = close + 1;
+      after = skip_space(s, j);
+      if (after >= s.size() || s[after] != '=')
+        throw InputError(cx().line, static_cast<int>(after) + 1, "AX[...] is given a value with '='");
+      n = axis_word;
+    }
     std::vector<NcValue> indices;
     std::size_t k = after;
     bool indexed = k < s.size() && s[k] == '[';
@@ -421,7 +444,12 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     // An address with a value: a literal is copied as written (exact); an expression is
     // evaluated and written on the grid (NC-PARAM-GRID-1). AC(...)/IC(...) keep their wrapper.
     words = true;
-    out.append(s, space, j - space);
+    if (axis_word.empty()) {
+      out.append(s, space, j - space);
+    } else {
+      out.append(s, space, start - space);
+      out += axis_word;
+    }
     out += raw_index;
     if (!indices.empty()) {
       out += '[';
