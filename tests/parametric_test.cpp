@@ -75,7 +75,7 @@ TEST(Parametric, ExpressionErrorsNameTheirColumn) {
 }
 
 // The end point of the last block moving, read as written by the interpreter.
-// covers: NC-PARAM-GRID-1 NC-PARAM-VAR-2 NC-PARAM-TYPE-1
+// covers: NC-PARAM-GRID-1 NC-PARAM-VAR-2 NC-PARAM-TYPE-1 NC-WORD-3
 TEST(Parametric, ComputedValuesBecomeNinePlaceDecimals) {
   EXPECT_EQ(end_x("R1=1/3\nG1 X=R1 F100\n"), "0.333333333");
   EXPECT_EQ(end_x("R1=2/3\nG1 X=R1 F100\n"), "0.666666667");
@@ -85,6 +85,16 @@ TEST(Parametric, ComputedValuesBecomeNinePlaceDecimals) {
   EXPECT_EQ(end_x("DEF REAL AA[3]=SET(1,2,3)\nG1 X=AA[2]*AA[1] F100\n"), "6");
   EXPECT_EQ(end_x("DEF REAL BB[2,2]\nBB[1,0]=7\nG1 X=AC(BB[1,0]-0.5) F100\n"), "6.5");
   EXPECT_EQ(end_x("G91 G1 X5 F100\nR2=1.25\nX=IC(R2*2)\n"), "7.5");
+  // M=QU(…): the auxiliary function itself (NC-WORD-3).
+  {
+    std::istringstream in("R1=4\nG1 X=R1 M=QU(8) H=QU(R1*2) F100\n");
+    ProgramReader reader(in);
+    Block b;
+    ASSERT_TRUE(reader.next(b));
+    ASSERT_EQ(b.words.aux_count, 2);
+    EXPECT_EQ(b.words.aux[0].name(), "M8");
+    EXPECT_EQ(b.words.aux[1].name(), "H8");
+  }
   // AX[...]: the axis named by an AXIS variable, or written out.
   EXPECT_EQ(end_x("DEF AXIS AA=X\nG1 AX[AA]=4*2 F100\n"), "8");
   EXPECT_EQ(end_x("G1 AX[X]=3 F100\n"), "3");

@@ -458,8 +458,9 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     }
     out += '=';
     // Value modes the lexer reads around a value: AC(…), IC(…), PM(…) …
-    static constexpr std::string_view kWrappers[] = {"AC", "IC",  "ACN", "ACP",  "DC",   "PM",
-                                                     "PR", "CAC", "CIC", "CACN", "CACP", "CDC"};
+    // QU(…): an auxiliary function's quick output (M=QU(8)): for the path, its value alone.
+    static constexpr std::string_view kWrappers[] = {"AC",  "IC",  "ACN",  "ACP",  "DC",  "PM", "PR",
+                                                     "CAC", "CIC", "CACN", "CACP", "CDC", "QU"};
     std::string wrapper;
     std::size_t w = name_end(s, v);
     std::string wn = upper_text(s.substr(v, w - v));
@@ -474,7 +475,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     std::size_t end;
     if (lit && (wrapper.empty() || (skip_space(s, *lit) < s.size() && s[skip_space(s, *lit)] == ')'))) {
       std::string value(s.substr(v, *lit - v));
-      out += wrapper.empty() ? value : wrapper + "(" + value + ")";
+      out += wrapper.empty() || wrapper == "QU" ? value : wrapper + "(" + value + ")";
       end = wrapper.empty() ? *lit : skip_space(s, *lit) + 1;
     } else {
       int recorded;
@@ -487,10 +488,10 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       std::string t = grid_text(value, cx().line, v);
       if (recorded < 0) plan.reset();
       if (plan) {
-        std::size_t at = out.size() + (wrapper.empty() ? 0 : wrapper.size() + 1);
+        std::size_t at = out.size() + (wrapper.empty() || wrapper == "QU" ? 0 : wrapper.size() + 1);
         plan->steps.push_back({LinePlan::Step::Kind::kValue, recorded, 0, {}, start, v, at, t.size()});
       }
-      out += wrapper.empty() ? t : wrapper + "(" + t + ")";
+      out += wrapper.empty() || wrapper == "QU" ? t : wrapper + "(" + t + ")";
     }
     i = end;
   }
