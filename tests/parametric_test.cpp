@@ -603,7 +603,7 @@ TEST(Parametric, ArrayParametersWorkOnTheCallersArray) {
 
 // A frame assigned to $P_PFRAME, built in a FRAME variable, chained and read back, gives the path
 // of the same frame programmed with TRANS/AROT/AMIRROR/ASCALE blocks.
-// covers: NC-PARAM-EXPR-5 NC-PARAM-SYS-1
+// covers: NC-PARAM-EXPR-5 NC-PARAM-SYS-1 NC-PARAM-EXPR-2
 TEST(Parametric, StringFunctionsAndMoreSystemVariables) {
   EXPECT_EQ(end_x("G1 X=STRLEN(\"ABC\") F100\n"), "3");
   EXPECT_EQ(end_x("DEF STRING[10] S1=\"ABCD\"\nDEF STRING[10] S2\nS2=SUBSTR(S1,1,2)\n"
@@ -621,6 +621,16 @@ TEST(Parametric, StringFunctionsAndMoreSystemVariables) {
   EXPECT_EQ(end_x("G1 F250\nOFFN=0.5\nG1 X=$P_F+$P_OFFN\n"), "250.5");
   EXPECT_EQ(end_x("$TC_DP3[1,1]=150\n$TC_DP6[1,1]=4\nG1 X=$TC_DP3[1,1]+$TC_DP6[1,1]+$TC_DP12[1,1] F100\n"), "154");
   EXPECT_EQ(error_line("R1=$TC_DP3[7,1]\n", "tool 7 has no edge 1"), 1);
+  // $P_TOOLL[n]: the active edge's length n with its wear; ISVAR; SPRINT.
+  EXPECT_EQ(end_x("$TC_DP1[1,1]=120\n$TC_DP3[1,1]=150\n$TC_DP12[1,1]=-0.25\nT1 D1\nG1 X=$P_TOOLL[1] F100\n"), "149.75");
+  EXPECT_EQ(end_x("DEF REAL AA\nG1 X=ISVAR(\"AA\")+ISVAR(\"R7\")*2+ISVAR(\"$P_TOOLR\")*4+ISVAR(\"BB\")*8 F100\n"), "7");
+  std::istringstream in("R1=2.5\nMSG(SPRINT(\"R=%.2F N=%D %S %%\", R1, 7.9, \"OK\"))\n");
+  ProgramReader reader(in);
+  Block b;
+  ASSERT_TRUE(reader.next(b));
+  ASSERT_EQ(b.words.aux_count, 1);
+  EXPECT_EQ(b.words.aux[0].name(), "MSG(\"R=2.50 N=7 OK %\")");
+  EXPECT_EQ(error_line("R1=STRLEN(SPRINT(\"%D %D\", 1))\n", "more formats than values"), 1);
 }
 
 // covers: NC-PARAM-SUB-7

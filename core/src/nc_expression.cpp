@@ -617,6 +617,78 @@ bool ExpressionParser::string_function(const std::string& n, const std::vector<N
   auto position = [](std::size_t p) {
     return NcValue::integer(p == std::string::npos ? -1.0 : static_cast<double>(p));
   };
+  if (n == "ISVAR") {  // a defined user variable, an R parameter or a system variable cutcom knows
+    need(1, 1);
+    std::string name = text(0);
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    name = name.substr(0, name.find('['));
+    bool r = name.size() > 1 && name.size() <= 4 && name[0] == 'R' &&
+             name.find_first_not_of("0123456789", 1) == std::string::npos;
+    bool known = r || lookup_.is_variable(name);
+    if (!known && !name.empty() && name[0] == '$') {
+      static constexpr std::string_view kIndexed[] = {"$TC_DP",   "$P_EP",   "$AA_IW",    "$P_GG",    "$P_AD",
+                                                      "$P_TOOLL", "$P_UIFR", "$P_PFRAME", "$P_SUBPAR"};
+      for (std::string_view k : kIndexed) known = known || name.rfind(k, 0) == 0;
+      if (!known) {
+        try {
+          lookup_.read(name, {}, at);
+          known = true;
+        } catch (const InputError&) {
+        }
+      }
+    }
+    return out = NcValue::boolean(known), true;
+  }
+  if (n == "SPRINT") {  // SPRINT("format", values…): %D %I %F %E %G %R %S %B %C %X, with .n, and %%
+    if (a.empty()) fail("takes a format and its values");
+    const std::string& f = text(0);
+    std::string t;
+    std::size_t next = 1;
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      if (f[k] != '%') {
+        t += f[k];
+        continue;
+      }
+      std::size_t spec = k + 1;
+      int places = -1;
+      if (spec < f.size() && f[spec] == '.') {
+        places = 0;
+        for (++spec; spec < f.size() && f[spec] >= '0' && f[spec] <= '9'; ++spec)
+          places = places * 10 + (f[spec] - '0');
+      }
+      if (spec >= f.size()) fail("a format ends in '%'");
+      char c = static_cast<char>(std::toupper(static_cast<unsigned char>(f[spec])));
+      k = spec;
+      if (c == '%') {
+        t += '%';
+        continue;
+      }
+      if (next >= a.size()) fail("more formats than values");
+      const NcValue& v = a[next++];
+      if (c == 'S') {
+        t += v.type == NcValue::Type::kString ? v.text : interpreter_text::grid_text(v, line_, at);
+        continue;
+      }
+      double x = as_number(v, line_, at);
+      if (c == 'D' || c == 'I')
+        t += fmt::format("{}", static_cast<long long>(std::trunc(x)));
+      else if (c == 'F' || c == 'R')
+        t += fmt::format("{:.{}f}", x, places < 0 ? 6 : places);
+      else if (c == 'E')
+        t += fmt::format("{:.{}E}", x, places < 0 ? 6 : places);
+      else if (c == 'G')
+        t += fmt::format("{:G}", x);
+      else if (c == 'B')
+        t += x != 0 ? "TRUE" : "FALSE";
+      else if (c == 'C')
+        t += static_cast<char>(static_cast<int>(x));
+      else if (c == 'X')
+        t += fmt::format("{:X}", static_cast<long long>(std::trunc(x)));
+      else
+        fail(fmt::format("'%{}' is not a format cutcom knows", f[spec]));
+    }
+    return out = NcValue::string(t), true;
+  }
   if (n == "STRLEN") return need(1, 1), out = NcValue::integer(static_cast<double>(text(0).size())), true;
   if (n == "INDEX") return need(2, 2), out = position(text(0).find(character(1))), true;
   if (n == "RINDEX") return need(2, 2), out = position(text(0).rfind(character(1))), true;

@@ -104,6 +104,15 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   if (n == "$P_GG" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) return g_group_value(idx[0].number);
   // NC-PARAM-SYS-3: cutcom simulates a normal run: no block search, no program test, no dry run.
   if (idx.empty() && (n == "$P_SEARCH" || n == "$P_SEARCHL" || n == "$P_ISTEST" || n == "$P_DRYRUN")) return 0.0;
+  // $P_TOOLL[n]: the active edge's length n (1 … 3) with its wear, $TC_DP3..5 + $TC_DP12..14.
+  if (n == "$P_TOOLL" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) {
+    int k = static_cast<int>(idx[0].number);
+    if (idx[0].number != k || k < 1 || k > 3) return std::nullopt;
+    if (state_.edge == 0) return 0.0;
+    const EdgeData* e = tools_.find(state_.tool, state_.edge);
+    if (!e) return std::nullopt;
+    return in_units(e->values[static_cast<std::size_t>(2 + k)] + e->values[static_cast<std::size_t>(11 + k)]);
+  }
   bool active = n == "$P_AD" && idx.size() == 1;  // the active edge's parameter: $TC_DPn[T, D]
   if ((n.substr(0, 6) == "$TC_DP" && idx.size() == 2) || active) {
     int k = 0;
