@@ -670,6 +670,8 @@ bool ExpressionParser::string_function(const std::string& n, const std::vector<N
         continue;
       }
       double x = as_number(v, line_, at);
+      if (!(std::fabs(x) < 9e18)) fail("a value too large to format");
+      if (c == 'C' && !(x >= 0 && x < 256)) fail("%C needs a character code");
       if (c == 'D' || c == 'I')
         t += fmt::format("{}", static_cast<long long>(std::trunc(x)));
       else if (c == 'F' || c == 'R')

@@ -106,8 +106,9 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   if (idx.empty() && (n == "$P_SEARCH" || n == "$P_SEARCHL" || n == "$P_ISTEST" || n == "$P_DRYRUN")) return 0.0;
   // $P_TOOLL[n]: the active edge's length n (1 … 3) with its wear, $TC_DP3..5 + $TC_DP12..14.
   if (n == "$P_TOOLL" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) {
-    int k = static_cast<int>(idx[0].number);
-    if (idx[0].number != k || k < 1 || k > 3) return std::nullopt;
+    double v = idx[0].number;
+    if (!(v == 1 || v == 2 || v == 3)) return std::nullopt;
+    int k = static_cast<int>(v);
     if (state_.edge == 0) return 0.0;
     const EdgeData* e = tools_.find(state_.tool, state_.edge);
     if (!e) return std::nullopt;
@@ -117,9 +118,9 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   if ((n.substr(0, 6) == "$TC_DP" && idx.size() == 2) || active) {
     int k = 0;
     if (active) {
-      if (idx[0].type == NcValue::Type::kString || idx[0].number != std::trunc(idx[0].number)) return std::nullopt;
-      k = static_cast<int>(idx[0].number);
-      if (k < 1 || k > 25) return std::nullopt;
+      double v = idx[0].number;  // (checked before the cast: a huge index is no int)
+      if (idx[0].type == NcValue::Type::kString || v != std::trunc(v) || !(v >= 1 && v <= 25)) return std::nullopt;
+      k = static_cast<int>(v);
       if (state_.edge == 0) return 0.0;  // D0: no offset in force
     }
     for (char c : active ? std::string_view() : n.substr(6)) {
