@@ -104,8 +104,15 @@ TEST(ProgramWords, RotaryAxesPositionAsActions) {
   EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"B=IC(-5)", "POS[A]=0", "POSA[C]=90", "FA[A]=1000"}));
   EXPECT_FALSE(b[1].moves_in_plane());
   EXPECT_EQ(b[3].end.x.to_string(), "10");
-  // With X, Y or Z in the same block: simultaneous 4/5-axis motion, not simulated.
-  for (const char* bad : {"G1 X10 A30 F100\n", "G1 A30 X10 F100\n", "POS[X]=10\n"}) {
+  // With X, Y or Z in a rapid move without compensation: positioned during it (a 3+2 set-up), noted.
+  auto rapid = read("G0 X0 Y0 Z10 A0 C=ACP(30)\nG1 X5 F100\n");
+  ASSERT_EQ(rapid.size(), 2u);
+  EXPECT_EQ(actions(rapid[0]), (std::vector<std::string>{"A0", "C=ACP(30)"}));
+  EXPECT_EQ(rapid[0].end.z.to_string(), "10");
+  EXPECT_NE(rapid[0].notice.find("positions during this rapid move"), std::string::npos) << rapid[0].notice;
+  // Anywhere else with X, Y or Z: simultaneous 4/5-axis motion, not simulated.
+  for (const char* bad : {"G1 X10 A30 F100\n", "G1 A30 X10 F100\n", "POS[X]=10\n",
+                          "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG0 G41 X10 A30\n"}) {
     try {
       read(bad);
       ADD_FAILURE() << "accepted: " << bad;

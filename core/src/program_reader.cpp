@@ -465,6 +465,20 @@ void ProgramReader::resolve(Block& b) {
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
   if (w.side) s.side = *w.side;
+  // NC-WORD-8: a rotary axis with X, Y or Z. In a rapid move without compensation it positions
+  // while the tool travels (3+2 set-ups: the path shows X, Y and Z as programmed); anywhere else it
+  // is simultaneous 4/5-axis motion, not simulated.
+  if (w.rotary_with_plane) {
+    if (s.motion != Motion::kRapid || s.side != Side::kOff)
+      throw InputError(w.line, w.rotary_column,
+                       fmt::format("the rotary axis {0} moving with X, Y or Z in a block other than a rapid move "
+                                   "without compensation (4/5-axis motion) is SINUMERIK NC that cutcom does not "
+                                   "simulate; {0} alone, or with X, Y, Z in G0 under G40, is kept as an action",
+                                   w.rotary_with_plane));
+    note(b, "NC-WORD-8",
+         fmt::format("the rotary axis {} positions during this rapid move: the path shows X, Y and Z as programmed",
+                     w.rotary_with_plane));
+  }
   if (w.approach) s.approach = *w.approach;
   if (w.corner) s.corner = *w.corner;
   if (w.disc) s.disc = *w.disc;

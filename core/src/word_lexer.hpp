@@ -321,7 +321,6 @@ class WordLexer {
   void tool(std::size_t at);
   void rotary_axis(const std::string& n, std::size_t at);
   void plane_axis_after_rotary(std::size_t at);
-  static std::string rotary_with_plane_axes(const std::string& n);
   static std::string area_limit_message(int g) {
     return fmt::format(
         "G{} with axis words (a programmable working area limitation) is SINUMERIK NC that cutcom does not "

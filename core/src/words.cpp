@@ -291,10 +291,12 @@ void WordLexer::word() {
 
 // NC-WORD-8: a rotary axis A, B or C (A90, A=DC(90), C=ACP(45), B=IC(-5)) positions the workpiece
 // or the head; the path is shown in the workpiece system, so the word is an action, kept as
-// written. Moved together with X, Y or Z (4/5-axis motion) it is not simulated.
+// written. Moved together with X, Y or Z it is noted for the reader, which allows it only in a
+// rapid move without compensation (program_reader.cpp).
 void WordLexer::rotary_axis(const std::string& n, std::size_t at) {
   for (const AxisWord& a : out_.axis)
-    if (a.present) fail(rotary_with_plane_axes(n), at);
+    if (a.present && !out_.rotary_with_plane)
+      out_.rotary_with_plane = n[0], out_.rotary_column = static_cast<int>(at) + 1;
   equals();
   action_value(n);
   rotary_at_ = at;
@@ -303,14 +305,8 @@ void WordLexer::rotary_axis(const std::string& n, std::size_t at) {
 
 void WordLexer::plane_axis_after_rotary(std::size_t at) {
   if (area_limit_) fail(area_limit_message(area_limit_), at);
-  if (rotary_at_ != std::string_view::npos) fail(rotary_with_plane_axes(std::string(1, s_[rotary_at_] & ~0x20)), at);
-}
-
-std::string WordLexer::rotary_with_plane_axes(const std::string& n) {
-  return fmt::format(
-      "the rotary axis {} moving with X, Y or Z in one block (4/5-axis motion) is SINUMERIK NC that cutcom does "
-      "not simulate; a block positioning {} alone is kept as an action",
-      n, n);
+  if (rotary_at_ != std::string_view::npos && !out_.rotary_with_plane)
+    out_.rotary_with_plane = static_cast<char>(s_[rotary_at_] & ~0x20), out_.rotary_column = static_cast<int>(at) + 1;
 }
 
 // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).

@@ -160,6 +160,10 @@ struct BlockWordFields {
   }
   ContourWords& cw_set() { return contour ? *contour : contour.emplace(); }
 
+  // NC-WORD-8: a rotary axis (A, B or C) programmed with X, Y or Z, and the column of the first
+  // of them; allowed only in a rapid move without compensation (the reader decides).
+  char rotary_with_plane = 0;
+  int rotary_column = 0;
   bool modal_call = false;      // MCALL: the cycle in `not_simulated` runs after every move
   bool modal_call_end = false;  // MCALL alone
 
