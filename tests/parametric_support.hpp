@@ -6,6 +6,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cutcom/interpreter.hpp"
 #include "cutcom/reader.hpp"
@@ -19,6 +20,17 @@ inline std::string end_x(const std::string& text) {
   Block b, last;
   while (reader.next(b)) last = b;
   return last.end.x.to_string();
+}
+
+// The actions (M, H and the words kept as written) of the first block of `text`.
+inline std::vector<std::string> first_block_actions(const std::string& text) {
+  std::istringstream in(text);
+  ProgramReader reader(in);
+  Block b;
+  std::vector<std::string> out;
+  if (!reader.next(b)) return out;
+  for (int k = 0; k < b.words.aux_count; ++k) out.push_back(b.words.aux[static_cast<std::size_t>(k)].name());
+  return out;
 }
 
 // The line of the error reading `text` gives (its message must hold `words`); subprograms are

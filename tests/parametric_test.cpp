@@ -86,15 +86,7 @@ TEST(Parametric, ComputedValuesBecomeNinePlaceDecimals) {
   EXPECT_EQ(end_x("DEF REAL BB[2,2]\nBB[1,0]=7\nG1 X=AC(BB[1,0]-0.5) F100\n"), "6.5");
   EXPECT_EQ(end_x("G91 G1 X5 F100\nR2=1.25\nX=IC(R2*2)\n"), "7.5");
   // M=QU(…): the auxiliary function itself (NC-WORD-3).
-  {
-    std::istringstream in("R1=4\nG1 X=R1 M=QU(8) H=QU(R1*2) F100\n");
-    ProgramReader reader(in);
-    Block b;
-    ASSERT_TRUE(reader.next(b));
-    ASSERT_EQ(b.words.aux_count, 2);
-    EXPECT_EQ(b.words.aux[0].name(), "M8");
-    EXPECT_EQ(b.words.aux[1].name(), "H8");
-  }
+  EXPECT_EQ(first_block_actions("R1=4\nG1 X=R1 M=QU(8) H=QU(R1*2) F100\n"), (std::vector<std::string>{"M8", "H8"}));
   // AX[...]: the axis named by an AXIS variable, or written out.
   EXPECT_EQ(end_x("DEF AXIS AA=X\nG1 AX[AA]=4*2 F100\n"), "8");
   EXPECT_EQ(end_x("G1 AX[X]=3 F100\n"), "3");
@@ -624,12 +616,8 @@ TEST(Parametric, StringFunctionsAndMoreSystemVariables) {
   // $P_TOOLL[n]: the active edge's length n with its wear; ISVAR; SPRINT.
   EXPECT_EQ(end_x("$TC_DP1[1,1]=120\n$TC_DP3[1,1]=150\n$TC_DP12[1,1]=-0.25\nT1 D1\nG1 X=$P_TOOLL[1] F100\n"), "149.75");
   EXPECT_EQ(end_x("DEF REAL AA\nG1 X=ISVAR(\"AA\")+ISVAR(\"R7\")*2+ISVAR(\"$P_TOOLR\")*4+ISVAR(\"BB\")*8 F100\n"), "7");
-  std::istringstream in("R1=2.5\nMSG(SPRINT(\"R=%.2F N=%D %S %%\", R1, 7.9, \"OK\"))\n");
-  ProgramReader reader(in);
-  Block b;
-  ASSERT_TRUE(reader.next(b));
-  ASSERT_EQ(b.words.aux_count, 1);
-  EXPECT_EQ(b.words.aux[0].name(), "MSG(\"R=2.50 N=7 OK %\")");
+  EXPECT_EQ(first_block_actions("R1=2.5\nMSG(SPRINT(\"R=%.2F N=%D %S %%\", R1, 7.9, \"OK\"))\n"),
+            (std::vector<std::string>{"MSG(\"R=2.50 N=7 OK %\")"}));
   EXPECT_EQ(error_line("R1=STRLEN(SPRINT(\"%D %D\", 1))\n", "more formats than values"), 1);
 }
 
