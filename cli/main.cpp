@@ -41,6 +41,7 @@ struct RunOptions {
   bool trace = false;
   std::int64_t max_loops = cutcom::InterpreterLimits{}.max_backward_jumps;
   std::vector<std::string> search_path;
+  std::vector<std::string> tool_edges;  // TOOL-FILE-2
   std::vector<std::string> definition_files;
   std::optional<std::string> arguments;
 };
@@ -97,6 +98,13 @@ void load_file(Table& table, const std::string& file, const char* what) {
 ControlData control_data(const RunOptions& o) {
   ControlData c;
   for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
+  for (const auto& t : o.tool_edges) {
+    try {
+      c.tools.define(t);  // TOOL-FILE-2: after the archives, so that it overrides them
+    } catch (const cutcom::InputError& e) {
+      throw FileError(fmt::format("--tool '{}', column {}: {}", t, e.column(), e.detail()));
+    }
+  }
   if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
   c.limits.max_backward_jumps = o.max_loops;
   for (const auto& f : o.definition_files) {
@@ -147,10 +155,12 @@ class AlarmWatch : public cutcom::PathSink {
 
 // TRC-SEL-7 without any tool data: most real programs keep it in the control's tool table.
 void hint_after(const std::vector<int>& alarms, const RunOptions& o) {
-  if (o.tool_files.empty() && std::find(alarms.begin(), alarms.end(), 17181) != alarms.end())
-    std::cerr << "cutcom: alarm 17181: the active tool has no data for its edge. A control keeps tool data in its "
-                 "tool table: give it with --tools FILE ($TC_DPn[t,d]=... and $TC_TP2[t]=\"NAME\" lines, the "
-                 "TO_INI.INI convention) or assign $TC_DP1/$TC_DP6 in the program\n";
+  if (o.tool_files.empty() && o.tool_edges.empty() && std::find(alarms.begin(), alarms.end(), 17181) != alarms.end())
+    std::cerr
+        << "cutcom: alarm 17181: the active tool has no data for its edge. A control keeps tool data in its "
+           "tool table: give it with --tool T=RADIUS (e.g. --tool 1=5 or --tool \"FLAT 10\"=5), with --tools FILE "
+           "($TC_DPn[t,d]=... and $TC_TP2[t]=\"NAME\" lines, the TO_INI.INI convention) or assign $TC_DP1/$TC_DP6 in "
+           "the program\n";
 }
 
 bool run_engine(const std::string& engine, cutcom::ProgramReader& reader, const cutcom::MachineData& md,
@@ -540,6 +550,9 @@ int main(int argc, char** argv) {
   run->add_flag("--trace", o.trace, "include the decision trace (text and json)");
   run->add_option("--tools", o.tool_files,
                   "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");
+  run->add_option("--tool", o.tool_edges,
+                  "one tool edge TOOL[/EDGE]=RADIUS, TOOL a number or a name: --tool 1=5 --tool \"FLAT 10\"/2=4.98 "
+                  "(an end mill; after --tools, repeatable)");
   run->add_option("--offsets", o.offsets_file, "settable work offsets ($P_UIFR[n]=CTRANS(X,..,Y,..) lines)");
   run->add_option("--max-loops", o.max_loops,
                   "loop passes and backward jumps before a program counts as running away (NC-PARAM-FLOW-6)")

@@ -392,6 +392,26 @@ TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
   EXPECT_NE(e.out.find("tool \"ROUGH_D16\" is not in the tool table"), std::string::npos) << e.out;
 }
 
+// covers: TOOL-FILE-2
+TEST(Cli, AToolEdgeGivenOnTheCommandLine) {
+  std::string program = write_temp("named_tool.mpf",
+                                   "T=\"FLAT 10\" D1\nM6\nG0 X-10 Y-10\nG1 G41 X0 Y0 F500\nX40\nY30\n"
+                                   "G40 X50 Y40\nM30\n");
+  Result r = sh(kCli + " run --format json --tool '\"FLAT 10\"=5' " + program);
+  ASSERT_EQ(r.status, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  bool offset_by_5 = false;  // the offset of X40 runs 5 mm beside it
+  for (const auto& el : j["path"])
+    offset_by_5 |= el["origin"]["kind"] == "offset" && el["start"][1].get<double>() == 5.0;
+  EXPECT_TRUE(offset_by_5) << r.out;
+  Result bad = sh_err(kCli + " run --tool 'FLAT=wide' " + program);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--tool 'FLAT=wide', column 6: 'wide' is not a radius"), std::string::npos) << bad.out;
+  Result unknown = sh_err(kCli + " run " + program);
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.out.find("--tool \"FLAT 10\"=RADIUS"), std::string::npos) << unknown.out;
+}
+
 // covers: CLI-1 NC-ERR-3
 TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
   std::string out = std::string(CUTCOM_BINARY_DIR) + "/rejected.txt";

@@ -291,6 +291,42 @@ TEST(ProgramWords, ToolArchiveFile) {
   }
 }
 
+// covers: TOOL-FILE-2
+TEST(ProgramWords, ToolEdgeFromTheCommandLine) {
+  ToolTable t;
+  std::istringstream file("$TC_TP2[7]=\"ROUGH\"\n$TC_DP1[7,1]=140\n$TC_DP6[7,1]=8\n");
+  t.load(file, "TO_INI.INI");
+  t.define("3=5");
+  t.define("\"FLAT 10\"/2=4.98");
+  t.define("ROUGH=7.5");  // a name in the table: its number, its type kept
+  ASSERT_NE(t.find(3, 1), nullptr);
+  EXPECT_EQ(t.find(3, 1)->radius, dec("5"));
+  EXPECT_EQ(t.find(3, 1)->type, dec("120"));
+  auto flat = t.number_of("FLAT 10");
+  ASSERT_TRUE(flat);
+  EXPECT_NE(*flat, 3);
+  EXPECT_NE(*flat, 7);
+  ASSERT_NE(t.find(*flat, 2), nullptr);
+  EXPECT_EQ(t.find(*flat, 2)->radius, dec("4.98"));
+  EXPECT_EQ(t.find(7, 1)->radius, dec("7.5"));
+  EXPECT_EQ(t.find(7, 1)->type, dec("140"));
+  // The program selects the named tool by that name.
+  std::istringstream program("T=\"FLAT 10\" D2\nG1 G41 X10 Y0 F100\n");
+  ProgramReader reader(program);
+  reader.tools() = t;
+  Block b;
+  while (reader.next(b)) {
+  }
+  for (const char* bad : {"5", "x=", "0=5", "3/0=5", "=5", "3=five"}) {
+    try {
+      t.define(bad);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_GE(e.column(), 1) << bad;
+    }
+  }
+}
+
 // covers: TOOL-TURN-1
 TEST(ProgramWords, TurningToolWithEdgePositionIsNotSimulated) {
   EXPECT_THROW(read("$TC_DP1[1,1]=500 $TC_DP2[1,1]=3 $TC_DP6[1,1]=0.8\nT1 D1\n"), InputError);

@@ -376,8 +376,10 @@ void ProgramReader::change_tool(Block& b, ModalState& s) {
   if (w.tool_name) {
     t = tools_.number_of(*w.tool_name);
     if (!t)
-      fail(fmt::format("tool \"{}\" is not in the tool table (give its $TC_TP2 in --tools FILE or in the program)",
-                       *w.tool_name));
+      fail(
+          fmt::format("tool \"{0}\" is not in the tool table (give it with --tool \"{0}\"=RADIUS, its $TC_TP2 in "
+                      "--tools FILE or in the program)",
+                      *w.tool_name));
   }
   bool change = false;
   if (t) {

@@ -99,6 +99,50 @@ void ToolTable::load(std::istream& in, const std::string& source_name) {
   });
 }
 
+void ToolTable::define(std::string_view spec) {
+  auto fail = [&](std::size_t at, const std::string& what) -> void {
+    throw InputError(0, static_cast<int>(at) + 1, what);
+  };
+  std::size_t eq = spec.rfind('=');
+  if (eq == std::string_view::npos) fail(spec.size(), "TOOL[/EDGE]=RADIUS expected, e.g. 3=5 or \"FLAT 10\"/2=4.98");
+  auto radius = Decimal::parse(trim(spec.substr(eq + 1)));
+  if (!radius.value) fail(eq + 1, fmt::format("'{}' is not a radius in mm", trim(spec.substr(eq + 1))));
+  std::string_view tool = trim(spec.substr(0, eq));
+  std::int64_t edge = 1;
+  if (std::size_t slash = tool.rfind('/'); slash != std::string_view::npos) {
+    auto d = Decimal::parse(trim(tool.substr(slash + 1)));
+    auto n = d.value ? d.value->to_integer() : std::nullopt;
+    if (!n || *n < 1 || *n > 32000) fail(slash + 1, "the edge (D) after '/' is a number 1 … 32000");
+    edge = *n;
+    tool = trim(tool.substr(0, slash));
+  }
+  if (tool.size() >= 2 && tool.front() == '"' && tool.back() == '"') tool = tool.substr(1, tool.size() - 2);
+  if (tool.empty()) fail(0, "the tool (a number or a name) is missing before '='");
+  std::int64_t number = 0;
+  auto as_number = Decimal::parse(tool);
+  if (auto n = as_number.value ? as_number.value->to_integer() : std::nullopt) {
+    if (*n < 1 || *n > 32000) fail(0, "tool numbers are 1 … 32000");
+    number = *n;
+  } else if (auto named = number_of(std::string(tool))) {
+    number = *named;
+  } else {
+    // A name not in the table yet gets a number no edge and no name uses (TOOL-NAME-1 selects by name).
+    number = 32000;
+    auto used = [&](std::int64_t t) {
+      for (const auto& [key, e] : edges_)
+        if (key.first == t) return true;
+      for (const auto& [name, t2] : names_)
+        if (t2 == t) return true;
+      return false;
+    };
+    while (used(number)) --number;
+    names_[std::string(tool)] = number;
+  }
+  EdgeData& e = edges_[{number, edge}];
+  if (e.type.is_zero()) e.type = e.values[1] = Decimal::from_int(120);  // an end mill unless the table says
+  e.radius = e.values[6] = *radius.value;
+}
+
 void OffsetTable::set(int index, int axis, Decimal value) {
   Point3& p = offsets_[index];
   coord(p, axis) = value;

@@ -38,6 +38,9 @@ class ToolTable {
   std::optional<std::int64_t> number_of(const std::string& name) const;
   // TOOL-FILE-1: a tool-offset archive (TO_INI.INI convention). Errors name the file and line.
   void load(std::istream& in, const std::string& source_name);
+  // TOOL-FILE-2: one edge from the command line, "TOOL[/EDGE]=RADIUS" (TOOL a number or a name).
+  // Errors: InputError with line 0 and the column in the text.
+  void define(std::string_view spec);
 
  private:
   std::map<std::pair<std::int64_t, std::int64_t>, EdgeData> edges_;
