@@ -296,6 +296,8 @@ std::string folder_with(const std::string& name, const std::vector<std::pair<std
 TEST(Parametric, RunModeActiveEdgeAndGivenParameters) {
   // A normal run: the block-search branch is not taken.
   EXPECT_EQ(end_x("IF $P_SEARCH OR $P_ISTEST OR $P_DRYRUN OR $P_SEARCHL GOTOF SKIP\nG1 X7 F100\nSKIP: G1 Y1\n"), "7");
+  EXPECT_EQ(end_x("IF $P_SIM GOTOF SKIP\nG1 X8 F100\nSKIP: G1 Y1\n"), "8");
+  EXPECT_EQ(end_x("T4\nG1 X=$P_TOOLP F100\n"), "4");
   // $P_AD[6]: the radius of the edge in force (T2 D3), 0 with D0.
   EXPECT_EQ(end_x("$TC_DP6[2,3]=4.5\nT2 D3\nG1 X=$P_AD[6]*2 F100\nD0\nX=$P_AD[6]+1\n"), "1");
   EXPECT_EQ(end_x("$TC_DP6[2,3]=4.5\n$TC_DP1[2,3]=120\nT2 D3\nG1 X=$P_AD[6]*2+$P_AD[1] F100\n"), "129");

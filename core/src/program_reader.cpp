@@ -102,8 +102,12 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
   if (n == "$P_PFRAME" || n == "$P_UIFR" || n == "$P_IFRAME") return frame_component(n, idx);  // NC-PARAM-FRAME-2
   if (n == "$P_UIFRNUM" && idx.empty()) return static_cast<double>(offset_index_);
   if (n == "$P_GG" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) return g_group_value(idx[0].number);
-  // NC-PARAM-SYS-3: cutcom simulates a normal run: no block search, no program test, no dry run.
-  if (idx.empty() && (n == "$P_SEARCH" || n == "$P_SEARCHL" || n == "$P_ISTEST" || n == "$P_DRYRUN")) return 0.0;
+  // NC-PARAM-SYS-3: cutcom shows a normal run: no block search, no program test, no dry run, not
+  // the control's own simulation; the tool programmed last.
+  if (idx.empty() && (n == "$P_SEARCH" || n == "$P_SEARCHL" || n == "$P_ISTEST" || n == "$P_DRYRUN" || n == "$P_SIM"))
+    return 0.0;
+  if (n == "$P_TOOLP" && idx.empty())
+    return static_cast<double>(state_.md_change_on_m6 && preselected_ ? *preselected_ : state_.tool);
   // $P_TOOLL[n]: the active edge's length n (1 … 3) with its wear, $TC_DP3..5 + $TC_DP12..14.
   if (n == "$P_TOOLL" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) {
     double v = idx[0].number;
