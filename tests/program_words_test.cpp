@@ -120,9 +120,8 @@ TEST(ProgramWords, RotaryAxesPositionAsActions) {
       EXPECT_NE(std::string(e.what()).find("not simulate"), std::string::npos) << e.what();
     }
   }
-  // Synchronized actions, interrupts, coupled motion, measuring: named with their family.
-  for (const char* w : {"WHEN $AA_IW[X]>10 DO $A_OUT[1]=1\n", "ID=1 WHENEVER $AA_IW[Z]<-5 DO $AC_OVR=50\n",
-                        "SETINT(1) PRIO=1 ABHEB\n", "TRAILON(Y,X)\n", "MEAS=1 G1 X10\n"}) {
+  // Interrupts, coupled motion, measuring: named with their family.
+  for (const char* w : {"SETINT(1) PRIO=1 ABHEB\n", "TRAILON(Y,X)\n", "MEAS=1 G1 X10\n"}) {
     try {
       read(w);
       ADD_FAILURE() << "accepted: " << w;
@@ -131,6 +130,43 @@ TEST(ProgramWords, RotaryAxesPositionAsActions) {
           << e.what();
     }
   }
+}
+
+// covers: NC-WORD-9
+TEST(ProgramWords, SynchronizedActionsAreActionsUnlessTheyMoveThePath) {
+  auto b = read(
+      "G1 X0 Y0 F100\nN5 WHEN $AA_IW[X]>10 DO $A_OUT[1]=1 M7 ; coolant\n"
+      "ID=1 WHENEVER $AA_IW[Z]<-5 DO $AA_OVR[X]=50 POS[A]=90\nR1=2\nG1 X=R1\nCANCEL(1)\nDO $R2=1\n");
+  ASSERT_EQ(b.size(), 6u);
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"WHEN $AA_IW[X]>10 DO $A_OUT[1]=1 M7"}));
+  EXPECT_NE(b[1].notice.find("synchronized action"), std::string::npos) << b[1].notice;
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"ID=1 WHENEVER $AA_IW[Z]<-5 DO $AA_OVR[X]=50 POS[A]=90"}));
+  EXPECT_EQ(b[3].end.x.to_string(), "2");
+  EXPECT_EQ(actions(b[4]), (std::vector<std::string>{"CANCEL(1)"}));
+  EXPECT_EQ(actions(b[5]), (std::vector<std::string>{"DO $R2=1"}));
+  // One that moves a plane axis, offsets the path or deletes the distance to go: not simulated.
+  for (const char* bad : {"WHEN $AA_IW[X]>5 DO POS[Y]=3 FA[Y]=100\n", "ID=2 WHENEVER TRUE DO $AA_OFF[X]=0.1\n",
+                          "WHEN $A_IN[1]==1 DO DELDTG\n", "WHEN $A_IN[1]==1\n"}) {
+    try {
+      read(bad);
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 1) << bad;
+    }
+  }
+}
+
+// covers: NC-PARAM-FLOW-7
+TEST(ProgramWords, GotosEndsTheRunAfterOnePass) {
+  for (const char* program : {"G1 X1 F100\nGOTOS\nM30\n", "G1 X1 F100\nIF 1 GOTOS\nG1 X9\nM30\n"}) {
+    auto b = read(program);
+    ASSERT_EQ(b.size(), 2u) << program;
+    EXPECT_TRUE(b[1].words.program_end);
+    EXPECT_NE(b[1].notice.find("one pass"), std::string::npos) << b[1].notice;
+  }
+  auto not_taken = read("G1 X1 F100\nIF 0 GOTOS\nG1 X9\nM30\n");
+  ASSERT_EQ(not_taken.size(), 3u);
+  EXPECT_EQ(not_taken[1].end.x.to_string(), "9");
 }
 
 // covers: NC-WORD-4

@@ -223,8 +223,9 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     if (!record->plan_tried) plan.emplace();
     record->plan_tried = true;
   }
-  if (statement(first, s, rest)) {  // a statement line yields no block
+  if (statement(first, s, rest)) {  // a statement line yields no block (but IF … GOTOS)
     out.clear();
+    out.swap(statement_block_);
     return;
   }
   if (call(s, i)) {
@@ -259,6 +260,14 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     std::size_t j = name_end(s, i);
     std::string n = upper_text(s.substr(i, j - i));
     std::size_t after = skip_space(s, j);
+    // NC-WORD-9: a synchronized action's condition and actions are read while the blocks run,
+    // not now: the rest of the block goes to the lexer as written.
+    if (n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS") {
+      plan.reset();
+      out.append(s, space, std::string::npos);
+      words = true;
+      break;
+    }
     // NC-PARAM-ERR-2: the program raises an alarm of its own and the control stops.
     if (n == "SETAL" && after < s.size() && s[after] == '(') {
       std::size_t e = after + 1;
@@ -283,6 +292,18 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       words = true;
       i = e + 1;
       continue;
+    }
+    // NC-PARAM-FLOW-7: GOTOS, back to the program's start: one pass is shown, so it ends the run
+    // as M30 would (the lexer keeps it as the block's end).
+    if (n == "GOTOS") {
+      if (stack_.size() > 1)
+        throw InputError(cx().line, static_cast<int>(start) + 1,
+                         "GOTOS in a subprogram (a jump to its start) is SINUMERIK NC that cutcom does not simulate");
+      plan.reset();
+      control_flow_ = true;
+      out.append(s, space, std::string::npos);
+      words = true;
+      break;
     }
     // Jumps end a block's words (NC-PARAM-FLOW-1).
     if (n == "GOTOF" || n == "GOTOB" || n == "GOTO" || n == "GOTOC") {

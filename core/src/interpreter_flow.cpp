@@ -37,6 +37,14 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     bool c = condition(rest, end);
     std::size_t j = name_end(s, end);
     std::string jump_word = upper_text(s.substr(end, j - end));
+    if (jump_word == "GOTOS") {  // NC-PARAM-FLOW-7: taken, it ends the run as a block GOTOS
+      nothing_after(j, "GOTOS");
+      if (stack_.size() > 1)
+        throw InputError(cx().line, static_cast<int>(end) + 1,
+                         "GOTOS in a subprogram (a jump to its start) is SINUMERIK NC that cutcom does not simulate");
+      if (c) statement_block_ = "GOTOS";
+      return true;
+    }
     if (jump_word == "GOTOF" || jump_word == "GOTOB" || jump_word == "GOTO" || jump_word == "GOTOC") {
       // NC-PARAM-FLOW-1: a conditional jump.
       std::size_t t = skip_space(s, j);

@@ -25,6 +25,8 @@ constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS",
                                               // NC-WORD-8: rotary axes as positioning axes, their feed
                                               "POS", "POSA", "FA"};
 constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
+                                             // NC-WORD-9: synchronized actions cancelled, locked, unlocked
+                                             "CANCEL", "LOCK", "UNLOCK",
                                              // NC-WORD-7: channel coordination, piece count, feed group
                                              "WAITM", "WAITMC", "WAITE", "WAITS", "SETM", "CLEARM", "SETPIECE",
                                              "FGROUP"};
@@ -76,16 +78,6 @@ constexpr Unsupported kUnsupported[] = {
     {"TOFFON", "tool offsets in the program"},
     {"CROT", "frame functions"},
     // Named so a program stops with the family, not as an unknown word (NC-ERR-3).
-    {"WHEN", "synchronized actions"},
-    {"WHENEVER", "synchronized actions"},
-    {"EVERY", "synchronized actions"},
-    {"FROM", "synchronized actions"},
-    {"DO", "synchronized actions"},
-    {"ID", "synchronized actions"},
-    {"IDS", "synchronized actions"},
-    {"CANCEL", "synchronized actions"},
-    {"LOCK", "synchronized actions"},
-    {"UNLOCK", "synchronized actions"},
     {"SETINT", "interrupt routines"},
     {"ENABLE", "interrupt routines"},
     {"DISABLE", "interrupt routines"},

@@ -485,6 +485,12 @@ void ProgramReader::resolve(Block& b) {
          fmt::format("the rotary axis {} positions during this rapid move: the path shows X, Y and Z as programmed",
                      w.rotary_with_plane));
   }
+  if (w.repeats_from_start)
+    note(b, "NC-PARAM-FLOW-7", "GOTOS: the control runs the program again from its start; the path shows one pass");
+  if (w.synchronized_action)
+    note(b, "NC-WORD-9",
+         "the synchronized action acts while the program runs (outputs, overrides, variables); it moves no "
+         "geometry axis, so the path is as programmed");
   if (w.approach) s.approach = *w.approach;
   if (w.corner) s.corner = *w.corner;
   if (w.disc) s.disc = *w.disc;

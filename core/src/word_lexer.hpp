@@ -316,6 +316,8 @@ class WordLexer {
   void contour_value(const std::string& n, std::size_t at);
   // Multi-letter words other than the compensation parameters.
   void named_word(const std::string& n, std::size_t at);
+  // NC-WORD-9: ID=n/IDS=n, WHEN/WHENEVER/EVERY/FROM … DO …: the rest of the block, kept as written.
+  void synchronized_action(std::size_t at);
   void word();
   // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
   void tool(std::size_t at);

@@ -195,8 +195,56 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   fail(unknown_message(n), at);
 }
 
+// NC-WORD-9: a synchronized action runs in the interpolation cycle while the blocks move; its
+// condition is read then, not now. One that acts on the path of X, Y, Z is not simulated.
+void WordLexer::synchronized_action(std::size_t at) {
+  bool quoted = false;
+  while (!at_end() && (quoted || peek() != ';')) {
+    if (peek() == '"') quoted = !quoted;
+    ++i_;
+  }
+  std::string text = written(at);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.pop_back();
+  // Words that move a geometry axis, change the offsets or delete the distance to go.
+  static constexpr std::string_view kMovesThePath[] = {"DELDTG",  "FTOC",   "SYNFCT", "PRESETON",
+                                                       "TRAILON", "LEADON", "$AA_OFF"};
+  std::size_t do_at = std::string::npos;
+  for (std::size_t k = 0; k < text.size();) {
+    if (!is_letter(text[k]) && text[k] != '$' && text[k] != '_') {
+      ++k;
+      continue;
+    }
+    std::size_t e = k + 1;
+    while (e < text.size() && (is_name_char(text[e]) || text[e] == '$')) ++e;
+    std::string_view w = std::string_view(text).substr(k, e - k);
+    if (w == "DO" && do_at == std::string::npos) do_at = k;
+    bool moves = std::find(std::begin(kMovesThePath), std::end(kMovesThePath), w) != std::end(kMovesThePath);
+    if (!moves && do_at != std::string::npos && (w == "POS" || w == "MOV" || w == "POSA")) {
+      std::size_t b = e;
+      while (b < text.size() && text[b] == ' ') ++b;
+      if (b + 1 < text.size() && text[b] == '[') {
+        std::size_t a = b + 1;
+        while (a < text.size() && text[a] == ' ') ++a;
+        moves = a < text.size() && (text[a] == 'X' || text[a] == 'Y' || text[a] == 'Z') &&
+                (a + 1 >= text.size() || !is_name_char(text[a + 1]));
+      }
+    }
+    if (moves)
+      fail(fmt::format("a synchronized action with {} (it moves or offsets the path while the blocks run) is "
+                       "SINUMERIK NC that cutcom does not simulate",
+                       w),
+           at + k);
+    k = e;
+  }
+  if (do_at == std::string::npos) fail("a synchronized action needs DO and its actions", at);
+  add_text_action(std::move(text), at);
+  out_.synchronized_action = true;
+}
+
 // A word of more than one letter: keywords without a value (NC-LEX-3), then those with one.
 void WordLexer::keyword(const std::string& n, std::size_t at) {
+  if (n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS")
+    return synchronized_action(at);
   if (n == "NORM") return set_once(out_.approach, ApproachMode::kNorm, "NORM/KONT", at);
   if (n == "KONT") return set_once(out_.approach, ApproachMode::kKont, "NORM/KONT", at);
   if (n == "KONTC") return set_once(out_.approach, ApproachMode::kKontC, "NORM/KONT", at);
@@ -204,6 +252,12 @@ void WordLexer::keyword(const std::string& n, std::size_t at) {
   if (n == "CDON") return set_once(out_.collision, CollisionMode::kCdon, "CDON/CDOF", at);
   if (n == "CDOF") return set_once(out_.collision, CollisionMode::kCdof, "CDON/CDOF", at);
   if (n == "CDOF2") return set_once(out_.collision, CollisionMode::kCdof2, "CDON/CDOF", at);
+  if (n == "GOTOS") {  // NC-PARAM-FLOW-7: the program runs again from its start; one pass is shown
+    add_text_action(n, at);
+    out_.program_end = true;
+    out_.repeats_from_start = true;
+    return;
+  }
   if (n == "STOPRE") {
     out_.stopre = true;
     return;

@@ -164,8 +164,10 @@ struct BlockWordFields {
   // of them; allowed only in a rapid move without compensation (the reader decides).
   char rotary_with_plane = 0;
   int rotary_column = 0;
-  bool modal_call = false;      // MCALL: the cycle in `not_simulated` runs after every move
-  bool modal_call_end = false;  // MCALL alone
+  bool modal_call = false;           // MCALL: the cycle in `not_simulated` runs after every move
+  bool modal_call_end = false;       // MCALL alone
+  bool repeats_from_start = false;   // GOTOS (NC-PARAM-FLOW-7): also a program end
+  bool synchronized_action = false;  // NC-WORD-9: WHEN/WHENEVER/EVERY/FROM/DO … kept as an action
 
   bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
 };

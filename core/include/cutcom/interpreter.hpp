@@ -293,6 +293,7 @@ class Interpreter {
   std::int64_t backward_jumps_ = 0;
   std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded
   bool control_flow_ = false;
+  std::string statement_block_;  // a block a statement yields (IF … GOTOS: GOTOS)
   friend class InterpreterLookup;
 };
 
