@@ -120,8 +120,11 @@ TEST(ProgramWords, RotaryAxesPositionAsActions) {
       EXPECT_NE(std::string(e.what()).find("not simulate"), std::string::npos) << e.what();
     }
   }
-  // Interrupts, coupled motion, measuring: named with their family.
-  for (const char* w : {"SETINT(1) PRIO=1 ABHEB\n", "TRAILON(Y,X)\n", "MEAS=1 G1 X10\n"}) {
+  auto orientation = read("ORIRESET(0, 90)\nG1 X5 F100\n");
+  EXPECT_EQ(actions(orientation[0]), (std::vector<std::string>{"ORIRESET(0, 90)"}));
+  // Interrupts, coupled motion, measuring, frame rotations, tool holders: named with their family.
+  for (const char* w :
+       {"SETINT(1) PRIO=1 ABHEB\n", "TRAILON(Y,X)\n", "MEAS=1 G1 X10\n", "TOROT\n", "PAROT\n", "TCARR=1 TCOFR\n"}) {
     try {
       read(w);
       ADD_FAILURE() << "accepted: " << w;
@@ -389,6 +392,11 @@ TEST(ProgramWords, CyclesAreNotSimulatedAndLeaveThePositionUnknown) {
   EXPECT_NE(p[2].notice.find("the position of XY is not known since POCKET3"), std::string::npos) << p[2].notice;
   EXPECT_THROW(read("G41 T1 D1 X1 Y1\nCYCLE81(5,0,1,-10)\n"), InputError);
   EXPECT_THROW(read("POCKET3(5,0,1,-10)\nG1 G41 T1 D1 X5\n"), InputError);  // Y unknown under G41
+  // G74/G75 name their axes with the extension 1 (and G75 its fixed point): actions of the block.
+  auto home = read("G0 X10 Y10 Z5\nG74 X1=0 Y1=0 Z1=0\nG75 FP=2 Z1=0 A1=0\nG0 X1 Y1 Z1\n");
+  EXPECT_EQ(home[1].words.not_simulated, "G74");
+  EXPECT_EQ(actions(home[2]), (std::vector<std::string>{"FP=2", "Z1=0", "A1=0"}));
+  EXPECT_THROW(read("G1 X1=0 F100\n"), InputError);  // only after G74/G75
 }
 
 // covers: NC-CYCLE-1 PATH-ACTION-1

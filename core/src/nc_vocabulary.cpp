@@ -18,13 +18,19 @@ constexpr std::string_view kActionKeywords[] = {
     // NC-WORD-7: single block and display suppression, path and feed modes, orientation and tool
     // offset references, rotations off, spindle position control: nothing of the 2D path.
     "SBLOF", "SBLON", "DISPLOF", "DISPLON", "CP", "PTP", "PTPG0", "FNORM", "ORIWKS", "ORIMKS", "TOWSTD", "PAROTOF",
-    "TOROTOF", "SPCON", "SPCOF"};
+    "TOROTOF", "SPCON", "SPCOF",
+    // NC-WORD-7: the preprocessing buffer's control
+    "FIFOCTRL", "STOPFIFO", "STARTFIFO"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
                                               // NC-WORD-7: compressor tolerances, axis dynamics
                                               "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM",
                                               // NC-WORD-8: rotary axes as positioning axes, their feed
-                                              "POS", "POSA", "FA"};
+                                              "POS", "POSA", "FA",
+                                              // NC-CYCLE-1: the fixed point of G75
+                                              "FP"};
 constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
+                                             // NC-WORD-8: the rotary axes set to an orientation
+                                             "ORIRESET",
                                              // NC-WORD-9: synchronized actions cancelled, locked, unlocked
                                              "CANCEL", "LOCK", "UNLOCK",
                                              // NC-WORD-7: channel coordination, piece count, feed group
@@ -77,6 +83,14 @@ constexpr Unsupported kUnsupported[] = {
     {"DL", "sum and setup offsets"},
     {"TOFFON", "tool offsets in the program"},
     {"CROT", "frame functions"},
+    {"PAROT", "frame functions: the workpiece's rotation"},
+    {"TOROT", "frame functions: the tool's orientation"},
+    {"TOFRAME", "frame functions: the tool's orientation"},
+    {"ROTS", "frame functions: solid angles"},
+    {"AROTS", "frame functions: solid angles"},
+    {"TCARR", "orientable tool holders"},
+    {"TCOABS", "orientable tool holders"},
+    {"TCOFR", "orientable tool holders"},
     // Named so a program stops with the family, not as an unknown word (NC-ERR-3).
     {"SETINT", "interrupt routines"},
     {"ENABLE", "interrupt routines"},

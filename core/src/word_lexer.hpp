@@ -322,6 +322,7 @@ class WordLexer {
   // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
   void tool(std::size_t at);
   void rotary_axis(const std::string& n, std::size_t at);
+  bool reference_axis(const std::string& n, std::size_t at);
   void plane_axis_after_rotary(std::size_t at);
   static std::string area_limit_message(int g) {
     return fmt::format(

@@ -308,7 +308,17 @@ void WordLexer::word() {
     case 'A':
     case 'B':
     case 'C':
+      if (reference_axis(n, at)) return;
       return rotary_axis(n, at);
+    case 'X':
+    case 'Y':
+    case 'Z':
+      if (reference_axis(n, at)) return;
+      break;
+    default:
+      break;
+  }
+  switch (n[0]) {
     case 'X':
       plane_axis_after_rotary(at);
       return positional(out_.axis[0], "X", at, true, false);
@@ -341,6 +351,19 @@ void WordLexer::word() {
       break;
   }
   fail(unknown_message(n), at);
+}
+
+// NC-CYCLE-1: G74 X1=0 Y1=0 (reference point), G75 FP=2 Z1=0 (fixed point): the axes with the
+// extension 1 say which axes move there, kept as written; the move is not simulated.
+bool WordLexer::reference_axis(const std::string& n, std::size_t at) {
+  if (!is_digit(peek()) || !extended_address_follows()) return false;
+  if (out_.not_simulated != "G74" && out_.not_simulated != "G75")
+    fail(fmt::format("{}{}= (an axis with an extension) is read only after G74 or G75", n, peek()), at);
+  digits("axis extension");
+  equals();
+  number(n);
+  add_text_action(written(at), at);
+  return true;
 }
 
 // NC-WORD-8: a rotary axis A, B or C (A90, A=DC(90), C=ACP(45), B=IC(-5)) positions the workpiece
