@@ -312,6 +312,14 @@ bool parted_after_touching(const RunResult& ref, std::size_t from, std::size_t u
 }  // namespace
 
 namespace {
+// PROP-DIFF-1: an equidistant radius of exactly 0 (R = r in programmed decimals) is decided in
+// integers by both engines (TRC-ARC-EQ-1 and the collapsed circles of TRC-CD-2): no knife edge.
+bool decided_exactly_at_zero(const Decision& d) {
+  return d.margin_exact == "0" &&
+         (d.clause == "TRC-ARC-EQ-1" ||
+          (d.clause == "TRC-CD-2" && (d.branch == "collapsed" || d.branch == "after-collapse")));
+}
+
 // The sign of a decision's margin: fast's double, or ref's text whose sign is exact ("0" only
 // for an exact tie). Empty for a NaN, which no rule admits.
 std::optional<int> margin_sign(const Decision& d) {
@@ -415,7 +423,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     // A decision without a margin never parts the runs legitimately. Where ref's margin lies in the
     // band the other branch may also show as another clause next (an element that exists in fast
     // and collapses in ref is searched first: TRC-CD-6 before TRC-ARC-EQ-1).
-    if (r.has_margin && std::fabs(margin_value(r)) <= tol.band(r.clause)) {
+    if (r.has_margin && std::fabs(margin_value(r)) <= tol.band(r.clause) && !decided_exactly_at_zero(r)) {
       if (resumed < 0) {  // legitimate: ref's margin lies inside the band
         knife.kind = Verdict::Kind::kKnifeEdge;
         knife.clause = std::string(r.clause);

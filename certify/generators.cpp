@@ -566,6 +566,11 @@ void zero_equidistant(ContourCase& c, std::int64_t hair) {
     Step b{};
     b.dy = -a.dy;
     c.steps = {a, half, b};
+    // On the inside (the equidistant collapses to the centre) and every other time with CDON:
+    // a collapsed circle at a collision check's entry (TRC-CD-2) or in the window an approach
+    // searches further ahead (TRC-CD-6, with G460/G461).
+    c.right = !half.ccw;
+    if (*rc::gen::arbitrary<bool>()) c.cdon = true;
   }
 }
 
