@@ -176,6 +176,24 @@ TEST(Comparison, AZeroLengthElementOfFastIsADivergence) {
   EXPECT_FALSE(compare(ref, fast, tolerance()).explanation.find("ref element") != std::string::npos);
 }
 
+// A circle of radius exactly r on the inside: both engines decide its collapse in integers, so
+// another branch of fast at ref's margin of exactly 0 is no knife edge (mutant 22).
+// covers: PROP-DIFF-1 TRC-CD-2 TRC-ARC-EQ-1
+TEST(Comparison, ACollapseAtAnExactZeroRadiusIsNoKnifeEdge) {
+  RunResult ref, fast;
+  ref.decisions = {decision("TRC-CD-2", "collapsed", 0, "0")};
+  fast.decisions = {decision("TRC-CD-2", "inner", 0.5)};
+  Verdict v = compare(ref, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  ref.decisions = {decision("TRC-ARC-EQ-1", "collapses", 0, "0")};
+  fast.decisions = {decision("TRC-ARC-EQ-1", "concentric", 1e-300)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kDiverge);
+  // A radius a rounding from 0 that is not exactly 0 stays a knife edge.
+  ref.decisions = {decision("TRC-ARC-EQ-1", "collapses", -1e-12, "-1.0e-12")};
+  fast.decisions = {decision("TRC-ARC-EQ-1", "concentric", 1e-12)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kKnifeEdge);
+}
+
 // covers: PROP-DIFF-2
 TEST(Comparison, AKnifeEdgeDoesNotHideWhatFollowsIt) {
   auto at = [](Decision d, int line) {
