@@ -606,6 +606,26 @@ void look_ahead_at_candidate_start(ContourCase& c, std::int64_t hair) {
   tail.dx = 5 * v;
   c.steps = {open, up, candidate, tail};
 }
+
+// TRC-CD-6 at a collapsed circle: a G460/G461 approach onto a first block too short for its
+// inner corner (it runs backwards; TRC-EDGE-5 finds the hit on the next block), then with CDON the
+// later blocks of the window are searched: the third is a half circle on the inside of radius
+// exactly r (its equidistant collapses to the centre and is not searched), or a nanometre off.
+void approach_window_collapsed_circle(ContourCase& c, std::int64_t hair) {
+  std::int64_t v = *inRange<std::int64_t>(1, 8) * kMm / 4, r = 4 * v;
+  c.radius_um = r;
+  c.right = false, c.cdon = true, c.kont_select = false;
+  c.edge_select = *element(460, 461);
+  c.md20240 = std::max(c.md20240, 3);
+  c.start_x = c.first_x - 2 * r, c.start_y = c.first_y + 2 * r;  // the approach crosses the next equidistant
+  Step first{}, up{}, half{}, down{};
+  first.dx = v;
+  up.dy = 3 * r;
+  half.arc = true, half.ccw = true;  // from +y round to -y, on the left: the tool inside
+  half.ci = -(r + hair), half.dx = -2 * (r + hair);
+  down.dy = -3 * r;
+  c.steps = {first, up, half, down};
+}
 }  // namespace
 
 rc::Gen<ContourCase> exact_situations() {
@@ -613,9 +633,14 @@ rc::Gen<ContourCase> exact_situations() {
     ContourCase c = *random_walk();
     exact_frame(c);
     std::int64_t hair = *element<std::int64_t>(0, 0, 1, -1);
-    static constexpr const char* kKinds[] = {"corner-on-md",     "start-on-boundary", "line-tangent-to-circle-carrier",
-                                             "zero-equidistant", "full-circle",       "look-ahead-at-candidate-start"};
-    int kind = *inRange(0, 6);
+    static constexpr const char* kKinds[] = {"corner-on-md",
+                                             "start-on-boundary",
+                                             "line-tangent-to-circle-carrier",
+                                             "zero-equidistant",
+                                             "full-circle",
+                                             "look-ahead-at-candidate-start",
+                                             "approach-window-collapsed-circle"};
+    int kind = *inRange(0, 7);
     switch (kind) {
       case 0:
         corner_on_md(c, hair);
@@ -632,8 +657,11 @@ rc::Gen<ContourCase> exact_situations() {
       case 4:
         full_circle(c, hair);
         break;
-      default:
+      case 5:
         look_ahead_at_candidate_start(c, hair);
+        break;
+      default:
+        approach_window_collapsed_circle(c, hair);
         break;
     }
     c.style = std::string("exact/") + kKinds[kind] +
