@@ -35,6 +35,11 @@ struct CompiledExpression {
   NcValue evaluate(const NcValue* const* variables, const std::map<int, double>& r, int line) const;
 };
 
+// A value as a REAL (a string or a frame is an error naming the line and column) and as an INT
+// (NC-PARAM-TYPE-1: rounded to the nearest, halves away from 0).
+double as_number(const NcValue& v, int line, std::size_t at);
+std::int64_t as_int(const NcValue& v, int line, std::size_t at);
+
 // The parser's operations, shared by the compiled form (NC-PARAM-EXPR-1/3, NC-PARAM-TYPE-1).
 NcValue nc_negate(NcValue v, int line, std::size_t at);
 NcValue nc_sum(const NcValue& a, const NcValue& b, bool plus, int line, std::size_t at);
