@@ -158,8 +158,9 @@ rc::Shrinkable<ContourCase> generate(std::uint64_t seed, long k) {
 }
 }  // namespace
 
-ReplayVerdict replay(const std::string& program, const MachineData& md, const std::string& folder) {
-  Outcome o = judge(run_program(program, md, false, folder));
+ReplayVerdict replay(const std::string& program, const MachineData& md, const std::string& folder,
+                     const std::function<void(ProgramReader&)>& setup) {
+  Outcome o = judge(run_program(program, md, false, folder, setup));
   return {o.verdict, o.clause, o.explanation, o.error, o.ratio};
 }
 

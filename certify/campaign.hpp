@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "cutcom/machine_data.hpp"
+#include "cutcom/reader.hpp"
 
 namespace cutcom::props {
 
@@ -107,7 +109,8 @@ struct ReplayVerdict {
   double error = 0, ratio = 0;  // agree: largest coordinate error (mm) and its share of the tolerance
 };
 // `folder`: where the program's subprograms are (empty: it calls none; no file is looked at).
-ReplayVerdict replay(const std::string& program, const MachineData& md, const std::string& folder = {});
+ReplayVerdict replay(const std::string& program, const MachineData& md, const std::string& folder = {},
+                     const std::function<void(ProgramReader&)>& setup = {});
 
 // Case k of a campaign: its program text and machine data (NAME=VALUE lines), to replay it.
 std::pair<std::string, std::string> campaign_case(std::uint64_t seed, long k);

@@ -1,6 +1,7 @@
 // Running a generated case through both engines.
 #pragma once
 
+#include <functional>
 #include <sstream>
 
 #include "compare.hpp"
@@ -25,22 +26,27 @@ inline MachineData machine_data_of(const ContourCase& c) {
   return md;
 }
 
+// The control's data a user's program needs (tool table, offsets, GUD, subprogram folders): set
+// on each reader after the default below. Empty for generated cases.
+using ReaderSetup = std::function<void(ProgramReader&)>;
+
 // Subprograms of a program given as text are looked for in `folder` only (none: no file is one).
-inline void look_for_subprograms(ProgramReader& reader, const std::string& folder) {
+inline void look_for_subprograms(ProgramReader& reader, const std::string& folder, const ReaderSetup& setup = {}) {
   if (folder.empty())
     reader.no_subprogram_files();
   else
     reader.set_search_path({folder});
+  if (setup) setup(reader);
 }
 
 // Both engines on one program text, and the tolerance read off it.
 inline CaseRuns run_program(const std::string& text, const MachineData& md, bool exact_checks = false,
-                            const std::string& folder = {}) {
+                            const std::string& folder = {}, const ReaderSetup& setup = {}) {
   CaseRuns out;
   {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
-    look_for_subprograms(reader, folder);
+    look_for_subprograms(reader, folder, setup);
     CollectingSink sink;
     try {
       ref::run(reader, md, sink, exact_checks ? &out.exact : nullptr);
@@ -52,7 +58,7 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
   {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
-    look_for_subprograms(reader, folder);
+    look_for_subprograms(reader, folder, setup);
     CollectingSink sink;
     try {
       fast::run(reader, md, sink);
@@ -63,7 +69,7 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
   }
   std::istringstream in(text);
   ProgramReader reader(in, md.initial_state());
-  look_for_subprograms(reader, folder);
+  look_for_subprograms(reader, folder, setup);
   std::vector<Block> blocks;
   Block b;
   while (reader.next(b)) blocks.push_back(b);

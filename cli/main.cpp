@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -349,6 +350,7 @@ struct CertifyOptions {
   std::vector<std::string> merge, replay, from;
   long neighbours = 200;  // --from: generated neighbours of each program
   long show = -1;
+  RunOptions control;  // --replay/--from: the control's data the programs need (tools, offsets, GUD)
 };
 
 // A program and its machine data (FILE.md beside it, as in tests/corpus), for --replay and --from.
@@ -377,13 +379,34 @@ std::string program_folder(const std::string& file) {
   return folder.empty() ? "." : folder;
 }
 
+// The control's data for one program of --replay/--from (its folder first for subprograms), as
+// `cutcom run` sets it up.
+std::function<void(cutcom::ProgramReader&)> reader_setup(const RunOptions& control, const std::string& file) {
+  RunOptions o = control;
+  o.program = file;
+  ControlData data = control_data(o);
+  return [data](cutcom::ProgramReader& reader) { data.into(reader); };
+}
+
+// A program of --replay/--from that the reader rejects: the error names the file.
+template <class F>
+auto naming_the_file(const std::string& file, F f) {
+  try {
+    return f();
+  } catch (const cutcom::InputError& e) {
+    throw FileError(fmt::format("{}: {}", file, e.what()));
+  }
+}
+
 // `certify --replay`: each program (with its FILE.md machine data beside it, as in tests/corpus)
 // through both engines, judged as a campaign case; exit 1 on an unexplained divergence.
-int replay_programs(const std::vector<std::string>& files) {
+int replay_programs(const std::vector<std::string>& files, const RunOptions& control) {
   bool diverged = false;
   for (const auto& f : files) {
     ProgramWithData p = read_program_with_data(f);
-    cutcom::props::ReplayVerdict v = cutcom::props::replay(p.text, p.md, program_folder(f));
+    auto setup = reader_setup(control, f);
+    cutcom::props::ReplayVerdict v =
+        naming_the_file(f, [&] { return cutcom::props::replay(p.text, p.md, program_folder(f), setup); });
     diverged = diverged || v.verdict == "diverge";
     std::cout << fmt::format("{}: {}", f, v.verdict);
     if (!v.clause.empty()) std::cout << " (" << v.clause << ")";
@@ -398,10 +421,11 @@ int replay_programs(const std::vector<std::string>& files) {
 // `certify --from`: each program and `count` neighbours of it (values moved by small steps and
 // onto exact ties, machine data near theirs), judged as campaign cases. A neighbour that
 // diverges is written beside the program (NAME.neighbour-K.mpf and .md) to replay; exit 1.
-int certify_from(const std::vector<std::string>& files, long count, std::uint64_t seed) {
+int certify_from(const std::vector<std::string>& files, long count, std::uint64_t seed, const RunOptions& control) {
   bool diverged = false;
   for (const auto& f : files) {
     ProgramWithData p = read_program_with_data(f);
+    auto setup = reader_setup(control, f);
     std::map<std::string, long> verdicts, knife_edges;
     long rejected = 0;
     double worst = 0;
@@ -410,8 +434,12 @@ int certify_from(const std::vector<std::string>& files, long count, std::uint64_
       if (k > 0) n = cutcom::props::neighbour_of(p.text, p.md, seed, k);
       cutcom::props::ReplayVerdict v;
       try {
-        v = cutcom::props::replay(n.text, n.md, program_folder(f));
-      } catch (const std::exception& e) {  // a neighbour the reader rejects (an unreachable CR=, say)
+        v = cutcom::props::replay(n.text, n.md, program_folder(f), setup);
+      } catch (const cutcom::InputError& e) {  // a neighbour the reader rejects (an unreachable CR=, say)
+        if (k == 0) throw FileError(fmt::format("{}: {}", f, e.what()));
+        ++rejected;
+        continue;
+      } catch (const std::exception& e) {
         if (k == 0) throw;
         ++rejected;
         continue;
@@ -443,8 +471,8 @@ int certify_from(const std::vector<std::string>& files, long count, std::uint64_
 
 int certify_command(CertifyOptions& o) {
   using cutcom::props::CampaignSummary;
-  if (!o.replay.empty()) return replay_programs(o.replay);
-  if (!o.from.empty()) return certify_from(o.from, o.neighbours, o.campaign.seed);
+  if (!o.replay.empty()) return replay_programs(o.replay, o.control);
+  if (!o.from.empty()) return certify_from(o.from, o.neighbours, o.campaign.seed, o.control);
   if (o.show >= 0) {  // one case, to replay it with `cutcom run`
     auto [program, md] = cutcom::props::campaign_case(o.campaign.seed, o.show);
     std::string words = md.substr(0, md.size() - 1);
@@ -605,6 +633,16 @@ int main(int argc, char** argv) {
   certify->add_option("--neighbours", co.neighbours, "--from: neighbours of each program (default 200)")
       ->check(CLI::Range(0L, 10'000'000L));
   certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop");
+  // TOOL-FILE-1/2, NC-OFFSET-2, NC-PARAM-VAR-3, NC-PARAM-SUB-1: a user's programs need the control's data.
+  certify->add_option("--tools", co.control.tool_files, "--replay/--from: tool-offset archive (as for run)");
+  certify->add_option("--tool", co.control.tool_edges,
+                      "--replay/--from: one tool edge TOOL[/EDGE]=RADIUS (as for run)");
+  certify->add_option("--offsets", co.control.offsets_file, "--replay/--from: settable work offsets (as for run)");
+  certify->add_option("--definitions", co.control.definition_files, "--replay/--from: global user data (as for run)");
+  certify
+      ->add_option("--search-path", co.control.search_path,
+                   "--replay/--from: folder where subprograms are looked for after the program's own")
+      ->check(CLI::ExistingDirectory);
 
   try {
     app.parse(argc, argv);

@@ -352,6 +352,17 @@ TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
   Result missing = sh("{ " + kCli + " certify --replay " + dir + "/no-such-program.mpf 2>&1; }");
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.out.find("cannot open program"), std::string::npos) << missing.out;
+  // A program whose tool lives in the control's table: certified with the table given as for run;
+  // without it the error names the program.
+  std::string named = dir + "/certify-named-tool.mpf";
+  std::ofstream(named) << "T=\"FLAT 10\" D1\nG0 X-10 Y-10\nG1 G41 X0 Y0 F500\nX40\nY30\nX0\nG40 X-10 Y40\nM30\n";
+  Result tool = sh(kCli + " certify --from " + named + " --neighbours 10 --tool '\"FLAT 10\"=5'");
+  EXPECT_EQ(tool.status, 0) << tool.out;
+  EXPECT_NE(tool.out.find("the program and 10 neighbours: "), std::string::npos) << tool.out;
+  Result no_tool = sh("{ " + kCli + " certify --from " + named + " --neighbours 10 2>&1; }");
+  EXPECT_EQ(no_tool.status, 2);
+  EXPECT_NE(no_tool.out.find("certify-named-tool.mpf: line 1, column 1: tool \"FLAT 10\""), std::string::npos)
+      << no_tool.out;
 }
 }  // namespace
 
