@@ -114,7 +114,7 @@ void Compensation::run_held_back_uncompensated() {
   dummy_count = 0;
 }
 
-bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool at_normal_end,
+bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool at_normal_end,
                               const Candidate* candidate) {
   const Element& e = open_el;
   double margin;
@@ -150,7 +150,8 @@ bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool a
   } else {
     // A whole full circle ends where it starts, exactly (ref's start and end are the same point;
     // an ulp apart the arc would read as a sliver or as nearly a full turn).
-    if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end));
+    // The snapped end is where the next element starts too (no gap of a rounding after the circle).
+    if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end)), end_point = open_start;
     // PATH-ELEMENT-2: a circle that turns more than half a turn but whose end, rounded, lies just
     // past its start (within 1e-8 of the radius) would read as a sliver: it ends at its start.
     // Nor may it end where its direction from the centre is the start's within rounding: whether
@@ -169,7 +170,7 @@ bool Compensation::close_open(Vec2 end_point, const BlockPlace& alarm_at, bool a
     bool unreadable = std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
     double reads = signed_rotation(u, v, e.sense);
     bool just_past = reads > 0 && norm(end_point - open_start) <= snap;
-    if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end));
+    if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end)), end_point = open_start;
     // And a circle that turns less than half a turn, its end a rounding from its start (an
     // equidistant cut between two intersections of touching carriers), whose points cannot be
     // read or read as nearly a whole turn: it is its chord, a line a rounding long.

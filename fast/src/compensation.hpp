@@ -194,7 +194,7 @@ class Compensation {
     double radius;
   };
   // at_normal_end: end_point is the normal end by construction (as ref's close_open).
-  bool close_open(Vec2 end_point, const BlockPlace& alarm_at, bool at_normal_end = false,
+  bool close_open(Vec2& end_point, const BlockPlace& alarm_at, bool at_normal_end = false,
                   const Candidate* candidate = nullptr);
 
   // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
