@@ -73,7 +73,7 @@ class SystemValues {
 struct InterpreterLimits {
   // NC-PARAM-FLOW-6: jumps back (loop passes and backward GOTOs) before a program is taken as
   // running away.
-  std::int64_t max_backward_jumps = 10'000'000;
+  std::int64_t max_backward_jumps = 1'000'000;
   // Text of program lines kept in memory for loops and calls to read again (all files together).
   std::size_t line_cache_bytes = std::size_t{16} << 20;
 };
