@@ -492,6 +492,14 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   // of its points past it, at most 1e-8 of max(1 mm, the radius): where ref writes a whole turn
   // and then such a rest, fast may write the whole turn alone (campaign 20261216, case 106440: a
   // full circle opened 4.1e-8 mm before its normal start by an intersection at sine 2e-5).
+  // After touching carriers (a decision in its band) the closing point is known only to within
+  // Tolerance::touching: a rest that short is the knife edge's (campaign 20261223, case 721238:
+  // a G461 retraction circle internally tangent to a full circle's equidistant at its end; fast's
+  // hit lay 2.2e-6 mm past the start).
+  const Decision* touch = nullptr;  // the first touching decision: coordinates within `touching`
+  for (const Decision& d : ref.decisions)
+    if (!touch && touching_carriers(d, tol)) touch = &d;
+  const PathElement* rest_after_touching = nullptr;
   auto rest_after_whole_turn = [&](const PathElement& e, const PathElement* before) {
     if (!before || e.type != ElementType::kArc || before->type != ElementType::kArc) return false;
     bool whole =
@@ -499,7 +507,11 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     if (!whole || before->origin.line != e.origin.line || distance(before->center, e.center) != 0) return false;
     std::optional<double> sweep = sweep_of(e);
     double r = radius_of(e);
-    return sweep && *sweep * r <= 1e-8 * std::max(1.0, r);
+    if (!sweep) return false;
+    if (*sweep * r <= 1e-8 * std::max(1.0, r)) return true;
+    if (!touch || !(*sweep * r <= tol.touching)) return false;
+    if (!rest_after_touching) rest_after_touching = &e;
+    return true;
   };
   auto without_slivers = [&](const std::vector<PathElement>& path) {
     std::vector<const PathElement*> out;
@@ -523,9 +535,12 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
         fmt::format("; the runs took the same branches again at line {} and are compared after it", resumed);
   }
   if (rp.size() != fp.size()) return diverge(fmt::format("ref output {} elements, fast {}", rp.size(), fp.size()));
-  const Decision* touch = nullptr;  // the first touching decision: coordinates within `touching`
-  for (const Decision& d : ref.decisions)
-    if (!touch && touching_carriers(d, tol)) touch = &d;
+  if (rest_after_touching && v.kind != Verdict::Kind::kKnifeEdge)
+    v.kind = Verdict::Kind::kKnifeEdge, v.clause = std::string(touch->clause),
+    v.explanation = fmt::format(
+        "a rest of {} after a whole turn at line {}, after touching carriers at line {} "
+        "(within {:.3g} mm)",
+        describe(rest_after_touching->origin), rest_after_touching->origin.line, touch->line, tol.touching);
   for (std::size_t i = 0; i < rp.size(); ++i) {
     const PathElement& r = *rp[i];
     const PathElement& f = *fp[i];
