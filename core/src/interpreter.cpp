@@ -262,7 +262,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     std::size_t after = skip_space(s, j);
     // NC-WORD-9: a synchronized action's condition and actions are read while the blocks run,
     // not now: the rest of the block goes to the lexer as written.
-    if (n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS") {
+    if (starts_synchronized_action(n)) {
       plan.reset();
       out.append(s, space, std::string::npos);
       words = true;
@@ -296,9 +296,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
     // NC-PARAM-FLOW-7: GOTOS, back to the program's start: one pass is shown, so it ends the run
     // as M30 would (the lexer keeps it as the block's end).
     if (n == "GOTOS") {
-      if (stack_.size() > 1)
-        throw InputError(cx().line, static_cast<int>(start) + 1,
-                         "GOTOS in a subprogram (a jump to its start) is SINUMERIK NC that cutcom does not simulate");
+      gotos_in_the_main_program(start);
       plan.reset();
       control_flow_ = true;
       out.append(s, space, std::string::npos);

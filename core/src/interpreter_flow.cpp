@@ -39,9 +39,7 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     std::string jump_word = upper_text(s.substr(end, j - end));
     if (jump_word == "GOTOS") {  // NC-PARAM-FLOW-7: taken, it ends the run as a block GOTOS
       nothing_after(j, "GOTOS");
-      if (stack_.size() > 1)
-        throw InputError(cx().line, static_cast<int>(end) + 1,
-                         "GOTOS in a subprogram (a jump to its start) is SINUMERIK NC that cutcom does not simulate");
+      gotos_in_the_main_program(end);
       if (c) statement_block_ = "GOTOS";
       return true;
     }
@@ -233,6 +231,13 @@ void Interpreter::assign_counter(const std::string& name, double value, std::siz
 }
 
 // NC-PARAM-FLOW-6: a program that keeps jumping back (loop passes, backward jumps, P runs) stops.
+// NC-PARAM-FLOW-7: GOTOS ends the run of the main program; in a subprogram it is not simulated.
+void Interpreter::gotos_in_the_main_program(std::size_t at) const {
+  if (stack_.size() > 1)
+    throw InputError(cx().line, static_cast<int>(at) + 1,
+                     "GOTOS in a subprogram (a jump to its start) is SINUMERIK NC that cutcom does not simulate");
+}
+
 void Interpreter::count_backward_jump() {
   if (++backward_jumps_ > limits_.max_backward_jumps)
     throw InputError(cx().line, 1,

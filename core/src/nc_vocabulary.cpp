@@ -118,6 +118,10 @@ bool all_digits(std::string_view s) {
 
 }  // namespace
 
+bool starts_synchronized_action(std::string_view n) {
+  return n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS";
+}
+
 NamedWord classify_named_word(std::string_view n) {
   if (contains(kActionKeywords, n)) return NamedWord::kActionKeyword;
   if (contains(kActionValues, n)) return NamedWord::kActionValue;

@@ -21,6 +21,8 @@ enum class NamedWord {
 
 NamedWord classify_named_word(std::string_view upper_name);
 bool is_action_value_wrapper(std::string_view upper_name);  // DC, ACP, ACN, AC, IC
+// NC-WORD-9: ID, IDS, WHEN, WHENEVER, FROM, EVERY, DO: a synchronized action to the block's end.
+bool starts_synchronized_action(std::string_view upper_name);
 // NC-WORD-7: a PLC interface or synchronized-action variable a program writes ($A_OUT, $A_DBB, …).
 bool is_machine_output(std::string_view upper_name);
 

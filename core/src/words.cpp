@@ -243,8 +243,7 @@ void WordLexer::synchronized_action(std::size_t at) {
 
 // A word of more than one letter: keywords without a value (NC-LEX-3), then those with one.
 void WordLexer::keyword(const std::string& n, std::size_t at) {
-  if (n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS")
-    return synchronized_action(at);
+  if (starts_synchronized_action(n)) return synchronized_action(at);
   if (n == "NORM") return set_once(out_.approach, ApproachMode::kNorm, "NORM/KONT", at);
   if (n == "KONT") return set_once(out_.approach, ApproachMode::kKont, "NORM/KONT", at);
   if (n == "KONTC") return set_once(out_.approach, ApproachMode::kKontC, "NORM/KONT", at);
@@ -311,21 +310,15 @@ void WordLexer::word() {
       if (reference_axis(n, at)) return;
       return rotary_axis(n, at);
     case 'X':
-    case 'Y':
-    case 'Z':
       if (reference_axis(n, at)) return;
-      break;
-    default:
-      break;
-  }
-  switch (n[0]) {
-    case 'X':
       plane_axis_after_rotary(at);
       return positional(out_.axis[0], "X", at, true, false);
     case 'Y':
+      if (reference_axis(n, at)) return;
       plane_axis_after_rotary(at);
       return positional(out_.axis[1], "Y", at, true, false);
     case 'Z':
+      if (reference_axis(n, at)) return;
       plane_axis_after_rotary(at);
       return positional(out_.axis[2], "Z", at, true, false);
     case 'I':

@@ -182,6 +182,7 @@ class Interpreter {
   // Runs one line's statements and assignments; `out` is the plain block (empty: none).
   void run_line(const std::string& text, std::string& out);
   bool statement(std::string_view keyword, std::string_view line, std::size_t rest);
+  void gotos_in_the_main_program(std::size_t at) const;
   void define(std::string_view line, std::size_t at, std::map<std::string, Variable>& into);
   void store(Variable& var, std::size_t offset, const NcValue& value, std::size_t at);
   std::vector<NcValue> values(std::string_view line, std::size_t& i, char close, InterpreterLookup& lookup);
