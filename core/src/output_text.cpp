@@ -9,16 +9,22 @@ namespace {
 // Written out when the buffer holds this much: few large writes instead of one per line.
 constexpr std::size_t kFlushSize = 1 << 16;
 
-// "(x, y, z)" with four decimals; -0 prints as 0.
-void append_point(std::string& out, const PathPoint& p) {
+// "(x, y, z)" with four decimals at `p` (room for 3 numbers of 352 characters); -0 prints as 0.
+char* put_point(char* p, const PathPoint& point) {
   auto c = [](double v) { return v == 0 ? 0.0 : v; };
-  out += '(';
-  text::append_fixed(out, c(p.x), 4);
-  out += ", ";
-  text::append_fixed(out, c(p.y), 4);
-  out += ", ";
-  text::append_fixed(out, c(p.z), 4);
-  out += ')';
+  *p++ = '(';
+  p = text::put_fixed(p, c(point.x), 4);
+  p = text::put(p, ", ");
+  p = text::put_fixed(p, c(point.y), 4);
+  p = text::put(p, ", ");
+  p = text::put_fixed(p, c(point.z), 4);
+  *p++ = ')';
+  return p;
+}
+
+void append_point(std::string& out, const PathPoint& p) {
+  char text[1100];
+  out.append(text, put_point(text, p));
 }
 
 std::string pt(const PathPoint& p) {
@@ -58,26 +64,31 @@ void TextWriter::written() {
   if (buffer_.size() >= kFlushSize) flush();
 }
 
+// The line is put together in a local array (bounded: two points of at most 3 x 352 characters)
+// and appended at once: the writers emit millions of lines (issue "Performance").
 void TextWriter::element(const PathElement& e) {
   ++count_;
+  char line[2400];
+  char* p = line;
+  p = text::put_right_integer(p, count_, 4);
+  *p++ = ' ';
+  p = text::put_right_integer(p, e.origin.line, 5);
+  *p++ = ' ';
+  p = text::put(p, e.type == ElementType::kLine ? "line  " : (e.ccw ? "arc+  " : "arc-  "));
+  char* field = p;
+  p = text::put(p, move_name(e));
+  p = text::put_padding(p, field, 6);
+  *p++ = ' ';
+  field = p;
+  p = put_point(p, e.start);
+  p = text::put_padding(p, field, 28);
+  *p++ = ' ';
+  field = p;
+  p = put_point(p, e.end);
+  p = text::put_padding(p, field, 28);
+  *p++ = ' ';
   std::string& b = buffer_;
-  text::append_right_integer(b, count_, 4);
-  b += ' ';
-  text::append_right_integer(b, e.origin.line, 5);
-  b += ' ';
-  b += e.type == ElementType::kLine ? "line  " : (e.ccw ? "arc+  " : "arc-  ");
-  std::size_t field = b.size();
-  b += move_name(e);
-  text::pad_to(b, field, 6);
-  b += ' ';
-  field = b.size();
-  append_point(b, e.start);
-  text::pad_to(b, field, 28);
-  b += ' ';
-  field = b.size();
-  append_point(b, e.end);
-  text::pad_to(b, field, 28);
-  b += ' ';
+  b.append(line, p);
   append_description(b, e.origin);
   if (e.origin.source != 0 && sources_) {
     b += " (in ";
@@ -85,11 +96,13 @@ void TextWriter::element(const PathElement& e) {
     b += ')';
   }
   if (e.type == ElementType::kArc) {
-    b += "  centre ";
-    append_point(b, e.center);
-    b += e.ccw ? " ccw" : " cw";
+    p = text::put(line, "  centre ");
+    p = put_point(p, e.center);
+    p = text::put(p, e.ccw ? " ccw\n" : " cw\n");
+    b.append(line, p);
+  } else {
+    b += '\n';
   }
-  b += '\n';
   written();
 }
 

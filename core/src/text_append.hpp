@@ -4,7 +4,9 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -16,29 +18,65 @@ inline void append_integer(std::string& out, std::int64_t v) {
   out.append(digits, r.ptr);
 }
 
-// Fixed notation with `places` decimals ("-12.3400" for places 4).
+// Fixed notation with `places` decimals ("-12.3400" for places 4), the digits of std::to_chars,
+// written at `p` (room for 352 characters); returns the end. Most values take a short path:
+// scaled by 10^places below 2^40 the product is within 2^-13 of the exact one, so unless its
+// fraction lies within 1e-3 of one half, rounding it to an integer gives to_chars's correctly
+// rounded digits; the rest (ties, huge values, NaN) go to to_chars.
+inline char* put_fixed(char* p, double v, int places) {
+  static constexpr double kScale[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
+  static constexpr std::uint64_t kPower[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
+  if (places >= 0 && places <= 6) {
+    double y = std::fabs(v) * kScale[places];
+    if (y < 1099511627776.0) {  // 2^40; false for NaN and infinities
+      double whole = std::floor(y);
+      double fraction = y - whole;  // exact
+      if (std::fabs(fraction - 0.5) > 1e-3) {
+        std::uint64_t n = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+        std::uint64_t integer = n / kPower[places];
+        std::uint64_t fixed = n % kPower[places];
+        if (std::signbit(v)) *p++ = '-';
+        int length = 1;
+        for (std::uint64_t k = integer; k >= 10; k /= 10) ++length;
+        char* end = p + length + (places > 0 ? places + 1 : 0);
+        char* q = end;
+        for (int k = 0; k < places; ++k, fixed /= 10) *--q = static_cast<char>('0' + fixed % 10);
+        if (places > 0) *--q = '.';
+        do {
+          *--q = static_cast<char>('0' + integer % 10);
+          integer /= 10;
+        } while (integer != 0);
+        return end;
+      }
+    }
+  }
+  return std::to_chars(p, p + 352, v, std::chars_format::fixed, places).ptr;
+}
+
 inline void append_fixed(std::string& out, double v, int places) {
   char digits[352];  // the longest binary64 in fixed notation with up to 16 places
-  auto r = std::to_chars(digits, digits + sizeof digits, v, std::chars_format::fixed, places);
-  out.append(digits, r.ptr);
+  out.append(digits, put_fixed(digits, v, places));
 }
 
-// Spaces up to `width` characters since `field_start`, as "{:<width}" did (never truncates).
-inline void pad_to(std::string& out, std::size_t field_start, std::size_t width) {
-  std::size_t used = out.size() - field_start;
-  if (used < width) out.append(width - used, ' ');
+// The text at `p`; returns the end.
+inline char* put(char* p, std::string_view s) {
+  std::memcpy(p, s.data(), s.size());
+  return p + s.size();
 }
 
-// "{:>width}": the text right-aligned in `width` characters.
-inline void append_right(std::string& out, std::string_view s, std::size_t width) {
-  if (s.size() < width) out.append(width - s.size(), ' ');
-  out.append(s);
-}
-
-inline void append_right_integer(std::string& out, std::int64_t v, std::size_t width) {
+// `v` right-aligned in `width` characters at `p` ("{:>width}"); returns the end.
+inline char* put_right_integer(char* p, std::int64_t v, std::size_t width) {
   char digits[24];
   auto r = std::to_chars(digits, digits + sizeof digits, v);
-  append_right(out, std::string_view(digits, static_cast<std::size_t>(r.ptr - digits)), width);
+  auto n = static_cast<std::size_t>(r.ptr - digits);
+  for (; n < width; --width) *p++ = ' ';
+  return put(p, std::string_view(digits, n));
+}
+
+// Spaces at `p` up to `width` characters since `field_start` ("{:<width}"); returns the end.
+inline char* put_padding(char* p, const char* field_start, std::size_t width) {
+  for (auto used = static_cast<std::size_t>(p - field_start); used < width; ++used) *p++ = ' ';
+  return p;
 }
 
 }  // namespace cutcom::text
