@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "campaign.hpp"
+#include "cutcom/background_sink.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/machine_data.hpp"
 #include "cutcom/output.hpp"
@@ -224,19 +225,34 @@ class OutputFile {
 
 // CLI-1: the document is closed whatever happens: bad input found half-way ends it with the
 // error (a JSON reader still parses it), then the error goes on to the caller (exit status 2).
+// The writer runs on its own thread (BackgroundSink): all it was handed is written first.
 template <class Writer, class Run>
-bool run_to_the_end(Writer& writer, Run run, const RunOptions& o, std::ostream& out) {
+bool run_to_the_end(Writer& writer, cutcom::BackgroundSink& background, Run run, const RunOptions& o,
+                    std::ostream& out) {
   bool ok = false;
   try {
     ok = run();
   } catch (const cutcom::InputError& e) {
+    background.finish();
     writer.error(o.program == "-" ? "stdin" : o.program, e.line(), e.column(), e.detail());
     writer.finish();
     out.flush();
     throw;
   }
+  background.finish();
   writer.finish();
   return ok;
+}
+
+// The text and JSON writers: formatted on a second thread while the engine runs.
+template <class Writer>
+bool run_writing(Writer& writer, cutcom::ProgramReader& reader, const cutcom::MachineData& md, const RunOptions& o,
+                 std::ostream& out) {
+  cutcom::BackgroundSink background(writer, o.trace);
+  background.set_upstream_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
+  writer.set_sources(background.sources());
+  return run_to_the_end(
+      writer, background, [&] { return run_engine(o.engine, reader, md, background, o); }, o, out);
 }
 
 int run_command(const RunOptions& o) {
@@ -311,16 +327,12 @@ int run_command(const RunOptions& o) {
     cutcom::JsonWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
-    writer.set_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
-    ok = run_to_the_end(
-        writer, [&] { return run_engine(o.engine, reader, md, writer, o); }, o, *out);
+    ok = run_writing(writer, reader, md, o, *out);
   } else {
     cutcom::TextWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
-    writer.set_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
-    ok = run_to_the_end(
-        writer, [&] { return run_engine(o.engine, reader, md, writer, o); }, o, *out);
+    ok = run_writing(writer, reader, md, o, *out);
   }
   out->flush();
   if (in->bad()) throw std::runtime_error("read error on the program");
