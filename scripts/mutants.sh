@@ -5,7 +5,9 @@
 # PROP-KNIFE-1: the quickest killer), then, if it survives, by the CI properties (ctest -L props).
 # Prints one Markdown row per mutant (killed / survived, the killing check, seconds to kill) and
 # the score. Usage: scripts/mutants.sh [mutants/NN-name.patch ...]   (default: all; BUILD=dir;
-# CAMPAIGN_ONLY=1: the campaign alone, a survivor marked so, about a minute per mutant)
+# CAMPAIGN_ONLY=1: the campaign alone, a survivor marked so, about a minute per mutant).
+# A patch that no longer applies (fast changed around it) is regenerated: make the one-line
+# change by hand, then `git diff fast > patch` under its "Mutant:" line; ctest MutantsApply checks.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD:-build}
