@@ -1,0 +1,225 @@
+// PROP-HAIR-1: the generator of exact situations, one function per situation a spec rule
+// distinguishes, each exactly on its threshold or a nanometre to either side.
+#include <algorithm>
+#include <cmath>
+
+#include "generators.hpp"
+
+namespace cutcom::props {
+
+namespace {
+using rc::gen::element;
+using rc::gen::inRange;
+}  // namespace
+
+namespace {
+// PROP-HAIR-1: the exact situations a spec rule distinguishes, and the same a nanometre (the
+// program grid, decimals = 9) to either side. `hair` is 0 (exactly), +1 or -1 (nm).
+constexpr std::int64_t kMm = 1000000000;  // nm in a millimetre: these cases are written with 9 decimals
+
+// Every position of the case in nm: start and end on the compensation side, well away.
+void exact_frame(ContourCase& c) {
+  c.decimals = 9;
+  c.start_x *= 1000, c.start_y *= 1000, c.first_x *= 1000, c.first_y *= 1000, c.end_x *= 1000, c.end_y *= 1000;
+  c.radius_um = c.radius_um == 0 ? kMm : std::abs(c.radius_um) * 1000;
+  for (Step& st : c.steps) st.flip = false, st.dummies = 0;
+  c.plane = 17;
+}
+
+// TRC-CORNER-3/4 (MD20230) and TRC-CORNER-2 (MD20210): a corner whose contour angle is exactly
+// the machine datum (45, 90 or 135 degrees), or a nanometre across it.
+void corner_on_md(ContourCase& c, std::int64_t hair) {
+  std::int64_t l = *inRange<std::int64_t>(2, 40) * kMm / 2;
+  int angle = *element(45, 90, 135);
+  bool md20230 = angle != 135 && *rc::gen::arbitrary<bool>();
+  if (md20230)
+    c.md20230 = angle;
+  else
+    c.md20210 = angle;
+  bool left_turn = *rc::gen::arbitrary<bool>();
+  std::int64_t turn = left_turn ? 1 : -1;
+  Step a{}, b{};
+  a.dx = l;
+  // The second direction at `angle` from the first: (l, l), (0, l), (-l, l), mirrored for a
+  // right turn; the hair moves its end across (the contour angle changes by about hair / l).
+  b.dx = angle == 45 ? l : angle == 90 ? 0 : -l, b.dy = turn * l;
+  b.dx += hair;
+  c.steps = {a, b};
+  Step tail{};
+  tail.dx = b.dx, tail.dy = b.dy;  // continue straight: one corner only
+  c.steps.push_back(tail);
+  c.g451_select = *rc::gen::arbitrary<bool>();
+  c.steps[1].g451 = c.g451_select;
+}
+
+// TRC-KONT-1 / TRC-KONT-2: the start position on the first block's tangent line (on it counts as
+// in front) or on the circle of radius r about the contour's start (on it counts as room).
+void start_on_boundary(ContourCase& c, std::int64_t hair) {
+  std::int64_t l = *inRange<std::int64_t>(2, 40) * kMm / 2, r = c.radius_um / 5 * 5;
+  c.radius_um = r;
+  Step a{};
+  a.dx = l;
+  Step b{};
+  b.dx = l / 2, b.dy = (*rc::gen::arbitrary<bool>() ? 1 : -1) * l / 2;
+  c.steps = {a, b};
+  c.kont_select = true;
+  std::int64_t side = c.right ? -1 : 1;  // the compensation side is +y for G41 along +x
+  if (*rc::gen::arbitrary<bool>()) {
+    // On the tangent line (y = first_y), before or after the start, a hair to either side.
+    std::int64_t along = *element<std::int64_t>(-3, -1, 1) * l / 2;
+    c.start_x = c.first_x + along, c.start_y = c.first_y + hair;
+  } else {
+    // Behind the contour, exactly r away on a 3-4-5 triangle, a hair nearer or farther.
+    std::int64_t sx = *rc::gen::arbitrary<bool>() ? 1 : -1;
+    c.start_x = c.first_x + sx * (r / 5) * 3 + sx * hair, c.start_y = c.first_y - side * (r / 5) * 4;
+  }
+}
+
+// TRC-ARC-CORNER-1: a line after a circle whose equidistant carrier is exactly tangent to the
+// circle's equidistant (cos = 3/5 against the circle's tangent, R = 10u, r = 2u), or the tool
+// radius a nanometre off, so that the carriers cross twice or miss.
+void line_tangent_to_circle_carrier(ContourCase& c, std::int64_t hair) {
+  std::int64_t u = *inRange<std::int64_t>(1, 8) * kMm / 2;
+  std::int64_t big = 10 * u;
+  c.radius_um = 2 * u + hair;
+  Step arc{};
+  arc.arc = true, arc.ccw = *rc::gen::arbitrary<bool>();
+  // A quarter circle: its centre C = start + (R, 0) (I, J from the start).
+  arc.ci = big, arc.cj = 0;
+  arc.dx = big, arc.dy = arc.ccw ? -big : big;  // ends below (ccw) or above (cw) the centre
+  // At the end V = C + (0, ∓R) the circle runs along +x either way; the line leaves at cos = 3/5.
+  Step line{};
+  line.dx = 3 * u, line.dy = (*rc::gen::arbitrary<bool>() ? 4 : -4) * u;
+  Step tail{};
+  tail.dx = line.dx, tail.dy = line.dy;
+  c.steps = {arc, line, tail};
+  c.g451_select = true;  // inner and outer corners by intersection
+  c.steps[1].g451 = true;
+}
+
+// TRC-ELEMENT-1 at zero: a straight block of exactly 2r between two inner corners (its
+// equidistant vanishes), or a circle of radius exactly r on the inside; a nanometre off.
+void zero_equidistant(ContourCase& c, std::int64_t hair) {
+  std::int64_t r = c.radius_um, l = *inRange<std::int64_t>(3, 8) * r;
+  if (*rc::gen::arbitrary<bool>()) {
+    c.right = false;  // G41: the tool inside the U
+    c.steps = {Step{}, Step{}, Step{}};
+    c.steps[0].dx = l;
+    c.steps[1].dy = 2 * r + hair;
+    c.steps[2].dx = -l;
+  } else {
+    Step half{};  // a half circle of radius r + hair
+    half.arc = true, half.ccw = *rc::gen::arbitrary<bool>();
+    half.ci = r + hair, half.dx = 2 * (r + hair);
+    Step a{};
+    a.dy = half.ccw ? -l : l;
+    Step b{};
+    b.dy = -a.dy;
+    c.steps = {a, half, b};
+    // On the inside (the equidistant collapses to the centre) and every other time with CDON:
+    // a collapsed circle at a collision check's entry (TRC-CD-2) or in the window an approach
+    // searches further ahead (TRC-CD-6, with G460/G461).
+    c.right = !half.ccw;
+    if (*rc::gen::arbitrary<bool>()) c.cdon = true;
+  }
+}
+
+// PATH-ELEMENT-2: a full circle, and the same circle ending a nanometre short of or past its
+// start (a sliver or nearly a full turn: the sweep must agree, not only the end points).
+void full_circle(ContourCase& c, std::int64_t hair) {
+  std::int64_t big = *inRange<std::int64_t>(2, 30) * kMm / 2 + c.radius_um;
+  Step lead{};
+  lead.dx = big;
+  Step circle{};
+  circle.arc = true, circle.ccw = *rc::gen::arbitrary<bool>();
+  circle.cj = (*rc::gen::arbitrary<bool>() ? 1 : -1) * big;
+  circle.dx = hair, circle.dy = 0;
+  Step out{};
+  out.dx = big;
+  c.steps = {lead, circle, out};
+}
+
+// TRC-LOOK-2: a look-ahead whose intersection is exactly the candidate's equidistant start (an
+// intersection at the start is valid), or a nanometre before or after it. G41 along +x, a block
+// up by 2v, too short for r = 5v at that inner corner, then the candidate along (3, -4): its
+// equidistant starts at 4v along and 5v up from the corner, on the open equidistant (5v up);
+// the hair moves it up or down.
+void look_ahead_at_candidate_start(ContourCase& c, std::int64_t hair) {
+  std::int64_t v = *inRange<std::int64_t>(1, 8) * kMm / 4;
+  c.radius_um = 5 * v;
+  c.right = false;
+  c.md20240 = std::max(c.md20240, 3);
+  Step open{}, up{}, candidate{}, tail{};
+  open.dx = *inRange<std::int64_t>(3, 10) * v;
+  up.dy = 2 * v + hair;
+  candidate.dx = 3 * v, candidate.dy = -4 * v;
+  tail.dx = 5 * v;
+  c.steps = {open, up, candidate, tail};
+}
+
+// TRC-CD-6 at a collapsed circle: a G460/G461 approach onto a first block too short for its
+// inner corner (it runs backwards; TRC-EDGE-5 finds the hit on the next block), then with CDON the
+// later blocks of the window are searched: the third is a half circle on the inside of radius
+// exactly r (its equidistant collapses to the centre and is not searched), or a nanometre off.
+void approach_window_collapsed_circle(ContourCase& c, std::int64_t hair) {
+  std::int64_t v = *inRange<std::int64_t>(1, 8) * kMm / 4, r = 4 * v;
+  c.radius_um = r;
+  c.right = false, c.cdon = true, c.kont_select = false;
+  c.edge_select = *element(460, 461);
+  c.md20240 = std::max(c.md20240, 3);
+  c.start_x = c.first_x - 2 * r, c.start_y = c.first_y + 2 * r;  // the approach crosses the next equidistant
+  Step first{}, up{}, half{}, down{};
+  first.dx = v;
+  up.dy = 3 * r;
+  half.arc = true, half.ccw = true;  // from +y round to -y, on the left: the tool inside
+  half.ci = -(r + hair), half.dx = -2 * (r + hair);
+  down.dy = -3 * r;
+  c.steps = {first, up, half, down};
+}
+}  // namespace
+
+rc::Gen<ContourCase> exact_situations() {
+  return rc::gen::exec([] {
+    ContourCase c = *random_walk();
+    exact_frame(c);
+    std::int64_t hair = *element<std::int64_t>(0, 0, 1, -1);
+    static constexpr const char* kKinds[] = {"corner-on-md",
+                                             "start-on-boundary",
+                                             "line-tangent-to-circle-carrier",
+                                             "zero-equidistant",
+                                             "full-circle",
+                                             "look-ahead-at-candidate-start",
+                                             "approach-window-collapsed-circle"};
+    int kind = *inRange(0, 7);
+    switch (kind) {
+      case 0:
+        corner_on_md(c, hair);
+        break;
+      case 1:
+        start_on_boundary(c, hair);
+        break;
+      case 2:
+        line_tangent_to_circle_carrier(c, hair);
+        break;
+      case 3:
+        zero_equidistant(c, hair);
+        break;
+      case 4:
+        full_circle(c, hair);
+        break;
+      case 5:
+        look_ahead_at_candidate_start(c, hair);
+        break;
+      default:
+        approach_window_collapsed_circle(c, hair);
+        break;
+    }
+    c.style = std::string("exact/") + kKinds[kind] +
+              (hair == 0  ? "/exactly"
+               : hair > 0 ? "/a-hair-above"
+                          : "/a-hair-below");
+    return c;
+  });
+}
+
+}  // namespace cutcom::props
