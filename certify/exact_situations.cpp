@@ -2,6 +2,9 @@
 // distinguishes, each exactly on its threshold or a nanometre to either side.
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <tuple>
+#include <utility>
 
 #include "generators.hpp"
 
@@ -176,6 +179,42 @@ void approach_window_collapsed_circle(ContourCase& c, std::int64_t hair) {
   down.dy = -3 * r;
   c.steps = {first, up, half, down};
 }
+// SAR-SIDE-2: a smooth approach by a circle (G247/G347) with G143, so that the side is that of
+// the start P0 against the tangent at P4: P0 exactly on the tangent line (alarm 10744), or off it
+// by a cross product of 1 nm^2, a distance of 1/|d| nm (d the first block, 2 to 20 mm long:
+// below 10^-12 mm), far finer than the grid's nanometre. d's components are coprime, and the
+// step off the line solves d x e = 1 (extended Euclid).
+void sar_start_on_tangent(ContourCase& c, std::int64_t hair) {
+  std::int64_t a = *inRange<std::int64_t>(2 * kMm, 20 * kMm), b = *inRange<std::int64_t>(-20 * kMm, 20 * kMm);
+  while (std::gcd(a, b) != 1) ++b;
+  // a x + b y = 1; then e = (-y, x) has d x e = a x + b y = 1.
+  std::int64_t r0 = a, r1 = b, x0 = 1, x1 = 0, y0 = 0, y1 = 1;
+  while (r1 != 0) {
+    std::int64_t q = r0 / r1;
+    std::tie(r0, r1) = std::make_pair(r1, r0 - q * r1);
+    std::tie(x0, x1) = std::make_pair(x1, x0 - q * x1);
+    std::tie(y0, y1) = std::make_pair(y1, y0 - q * y1);
+  }
+  if (r0 < 0) x0 = -x0, y0 = -y0;  // gcd 1 up to its sign
+  std::int64_t ex = -y0, ey = x0;
+  Step first{};
+  first.dx = a, first.dy = b;
+  Step turn{};
+  turn.dx = -b / 2, turn.dy = a / 2;
+  c.steps = {first, turn};
+  std::int64_t back = *inRange<std::int64_t>(1, 3);  // P0 behind P4 along the tangent
+  c.start_x = c.first_x - back * a + hair * ex, c.start_y = c.first_y - back * b + hair * ey;
+  c.kont_select = false, c.cdon = false;
+  SarEnds& s = c.sar;
+  s = SarEnds{};
+  s.approach = true;
+  s.contour_in = *element(247, 347);
+  s.side_in = 143;
+  s.seg_in = *element(340, 341);
+  s.disr_in = c.radius_um + *inRange<std::int64_t>(1, 10) * kMm;
+  s.start_h = *inRange<std::int64_t>(1, 30) * kMm;
+}
+
 }  // namespace
 
 rc::Gen<ContourCase> exact_situations() {
@@ -189,8 +228,9 @@ rc::Gen<ContourCase> exact_situations() {
                                              "zero-equidistant",
                                              "full-circle",
                                              "look-ahead-at-candidate-start",
-                                             "approach-window-collapsed-circle"};
-    int kind = *inRange(0, 7);
+                                             "approach-window-collapsed-circle",
+                                             "sar-start-on-tangent"};
+    int kind = *inRange(0, 8);
     switch (kind) {
       case 0:
         corner_on_md(c, hair);
@@ -210,8 +250,11 @@ rc::Gen<ContourCase> exact_situations() {
       case 5:
         look_ahead_at_candidate_start(c, hair);
         break;
-      default:
+      case 6:
         approach_window_collapsed_circle(c, hair);
+        break;
+      default:
+        sar_start_on_tangent(c, hair);
         break;
     }
     c.style = std::string("exact/") + kKinds[kind] +
