@@ -57,6 +57,14 @@ ContourCase apply(const ContourCase& c, const PlaneMap& f) {
   o.radius_um = c.radius_um * f.radius_factor * pow10(extra);
   o.decimals = c.decimals + extra;
   if (f.mirror) o.right = !c.right;
+  // SAR (SAR-*): DISR is a length in the plane; the levels are along the infeed axis, which the
+  // map leaves (only their unit changes); a reflection swaps SAR from the left and the right.
+  SarEnds& s = o.sar;
+  s.disr_in *= f.radius_factor * pow10(extra), s.disr_out *= f.radius_factor * pow10(extra);
+  s.start_h *= pow10(extra), s.end_h *= pow10(extra);
+  s.discl_in_v *= pow10(extra), s.discl_out_v *= pow10(extra);
+  auto swapped = [&f](int side) { return f.mirror && (side == 141 || side == 142) ? 283 - side : side; };
+  s.side_in = swapped(s.side_in), s.side_out = swapped(s.side_out);
   return o;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string_view>
 
 #include "cutcom/ref/exact_checks.hpp"
 #include "exact_path.hpp"
@@ -41,6 +42,29 @@ ExactPoint image(const ExactPoint& p, const AffineMap& map) {
 
 bool equal(const ExactPoint& a, const ExactPoint& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
+bool reflects(const AffineMap& map) {
+  const auto& m = map.m;
+  long det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  return det < 0;
+}
+
+// SAR-SIDE-1/2 name the side of the contour's tangent: a reflection swaps left and right (and
+// G141/G142, which a mirroring frame swaps too: NC-FRAME-3). Other branches are relative to the
+// contour (inner, outer, ...) and stay.
+std::string image_branch(std::string_view clause, std::string_view branch, bool reflected) {
+  std::string b(branch);
+  if (!reflected || clause.substr(0, 8) != "SAR-SIDE") return b;
+  auto swap = [&b](std::string_view x, std::string_view y) {
+    if (auto at = b.find(x); at != std::string::npos) return b.replace(at, x.size(), y), true;
+    if (auto at = b.find(y); at != std::string::npos) return b.replace(at, y.size(), x), true;
+    return false;
+  };
+  swap("left", "right");
+  swap("G141", "G142");
+  return b;
+}
+
 }  // namespace
 
 std::string exact_image_mismatch(const std::string& original, const std::string& mapped, const MachineData& md,
@@ -51,7 +75,7 @@ std::string exact_image_mismatch(const std::string& original, const std::string&
   for (std::size_t i = 0; i < a.result.decisions.size(); ++i) {
     const Decision& x = a.result.decisions[i];
     const Decision& y = b.result.decisions[i];
-    if (x.clause != y.clause || x.branch != y.branch || x.line != y.line)
+    if (x.clause != y.clause || image_branch(x.clause, x.branch, reflects(map)) != y.branch || x.line != y.line)
       return fmt::format("decision {}: {} {} line {} against {} {} line {}", i, x.clause, x.branch, x.line, y.clause,
                          y.branch, y.line);
   }
