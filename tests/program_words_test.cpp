@@ -64,6 +64,7 @@ TEST(ProgramWords, SetUpWordsAreActionsKeptAsWritten) {
   EXPECT_EQ(actions(b[4]), (std::vector<std::string>{"G9"}));
   EXPECT_FALSE(b[1].moves_in_plane());
   EXPECT_THROW(read("G64 G642\n"), InputError);  // one group, twice
+  EXPECT_EQ(actions(read("COMPSURF\nG1 X1 F100\n")[0]), (std::vector<std::string>{"COMPSURF"}));
 }
 
 // covers: NC-WORD-7

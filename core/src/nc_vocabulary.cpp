@@ -13,8 +13,8 @@ namespace cutcom {
 namespace {
 
 constexpr std::string_view kActionKeywords[] = {
-    "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN", "COMPON", "COMPCAD", "COMPCURV", "COMPOF",
-    "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA",
+    "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN", "COMPON", "COMPCAD", "COMPCURV", "COMPSURF",
+    "COMPOF", "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA",
     // NC-WORD-7: single block and display suppression, path and feed modes, orientation and tool
     // offset references, rotations off, spindle position control: nothing of the 2D path.
     "SBLOF", "SBLON", "DISPLOF", "DISPLON", "CP", "PTP", "PTPG0", "FNORM", "ORIWKS", "ORIMKS", "TOWSTD", "PAROTOF",
