@@ -47,8 +47,8 @@ class BackgroundSink : public PathSink {
   };
   using Event = std::variant<PathElement, ActionEvent, OwnedDecision, Alarm, Notice, SarVariables>;
   using Batch = std::vector<Event>;
-  static constexpr std::size_t kBatch = 1024;
-  static constexpr std::size_t kQueued = 4;  // batches waiting at most: the memory bound
+  static constexpr std::size_t kBatch = 256;
+  static constexpr std::size_t kQueued = 2;  // batches waiting at most: the memory bound
 
   void push(Event&& e);
   void copy_sources(std::uint32_t up_to);
