@@ -222,42 +222,22 @@ rc::Gen<ContourCase> exact_situations() {
     ContourCase c = *random_walk();
     exact_frame(c);
     std::int64_t hair = *element<std::int64_t>(0, 0, 1, -1);
-    static constexpr const char* kKinds[] = {"corner-on-md",
-                                             "start-on-boundary",
-                                             "line-tangent-to-circle-carrier",
-                                             "zero-equidistant",
-                                             "full-circle",
-                                             "look-ahead-at-candidate-start",
-                                             "approach-window-collapsed-circle",
-                                             "sar-start-on-tangent"};
-    int kind = *inRange(0, 8);
-    switch (kind) {
-      case 0:
-        corner_on_md(c, hair);
-        break;
-      case 1:
-        start_on_boundary(c, hair);
-        break;
-      case 2:
-        line_tangent_to_circle_carrier(c, hair);
-        break;
-      case 3:
-        zero_equidistant(c, hair);
-        break;
-      case 4:
-        full_circle(c, hair);
-        break;
-      case 5:
-        look_ahead_at_candidate_start(c, hair);
-        break;
-      case 6:
-        approach_window_collapsed_circle(c, hair);
-        break;
-      default:
-        sar_start_on_tangent(c, hair);
-        break;
-    }
-    c.style = std::string("exact/") + kKinds[kind] +
+    // One entry per situation: its name (the style the report counts) and what writes it.
+    struct Situation {
+      const char* name;
+      void (*write)(ContourCase&, std::int64_t);
+    };
+    static constexpr Situation kSituations[] = {{"corner-on-md", corner_on_md},
+                                                {"start-on-boundary", start_on_boundary},
+                                                {"line-tangent-to-circle-carrier", line_tangent_to_circle_carrier},
+                                                {"zero-equidistant", zero_equidistant},
+                                                {"full-circle", full_circle},
+                                                {"look-ahead-at-candidate-start", look_ahead_at_candidate_start},
+                                                {"approach-window-collapsed-circle", approach_window_collapsed_circle},
+                                                {"sar-start-on-tangent", sar_start_on_tangent}};
+    const Situation& situation = kSituations[*inRange<std::size_t>(0, std::size(kSituations))];
+    situation.write(c, hair);
+    c.style = std::string("exact/") + situation.name +
               (hair == 0  ? "/exactly"
                : hair > 0 ? "/a-hair-above"
                           : "/a-hair-below");
