@@ -410,6 +410,10 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   auto skip = [&](const std::vector<Decision>& d, std::size_t& k) {
     while (k < d.size() && d[k].line <= parted_upto) ++k;
   };
+  // ref's margin lies inside the clause's band: either branch is legitimate (PROP-DIFF-1).
+  auto in_band = [&](const Decision& d) {
+    return d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause) && !decided_exactly_at_zero(d);
+  };
   std::size_t ir = 0, jf = 0, resumed_at = 0;
   for (;; ++ir, ++jf) {
     skip(ref.decisions, ir), skip(fast.decisions, jf);
@@ -423,7 +427,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     // A decision without a margin never parts the runs legitimately. Where ref's margin lies in the
     // band the other branch may also show as another clause next (an element that exists in fast
     // and collapses in ref is searched first: TRC-CD-6 before TRC-ARC-EQ-1).
-    if (r.has_margin && std::fabs(margin_value(r)) <= tol.band(r.clause) && !decided_exactly_at_zero(r)) {
+    if (in_band(r)) {
       if (resumed < 0) {  // legitimate: ref's margin lies inside the band
         knife.kind = Verdict::Kind::kKnifeEdge;
         knife.clause = std::string(r.clause);
@@ -432,18 +436,49 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       if (!can_resume) return knife;
       // Decisions about the next `window` blocks may follow from the knife edge (a corner, a
       // look-ahead, a bottleneck check reach that far): they are the knife edge's too.
-      std::vector<int> later;
       auto moves = [&](int line) {
         return tol.plane_lines.empty() || std::binary_search(tol.plane_lines.begin(), tol.plane_lines.end(), line);
       };
-      for (std::size_t k = ir; k < ref.decisions.size(); ++k)
-        if (ref.decisions[k].line > std::max(r.line, f.line) && moves(ref.decisions[k].line))
-          later.push_back(ref.decisions[k].line);
-      std::sort(later.begin(), later.end());
-      later.erase(std::unique(later.begin(), later.end()), later.end());
-      if (later.size() <= static_cast<std::size_t>(tol.window)) return knife;
-      parted_upto = std::max(parted_upto, later[static_cast<std::size_t>(tol.window) - 1]);
+      // The last line of the blocks a knife edge at `line` (ref's decision `from` on) owns; empty
+      // where the program ends before them.
+      auto reach = [&](std::size_t from, int line) -> std::optional<int> {
+        std::vector<int> later;
+        for (std::size_t k = from; k < ref.decisions.size(); ++k)
+          if (ref.decisions[k].line > line && moves(ref.decisions[k].line)) later.push_back(ref.decisions[k].line);
+        std::sort(later.begin(), later.end());
+        later.erase(std::unique(later.begin(), later.end()), later.end());
+        if (later.size() <= static_cast<std::size_t>(tol.window)) return std::nullopt;
+        return later[static_cast<std::size_t>(tol.window) - 1];
+      };
+      std::optional<int> upto = reach(ir, std::max(r.line, f.line));
+      if (!upto) return knife;
+      parted_upto = std::max(parted_upto, *upto);
+      const std::size_t ir_parted = ir, jf_parted = jf;
       skip(ref.decisions, ir), skip(fast.decisions, jf);
+      // A parting among those blocks' decisions that lies in ref's band too (the same clause and
+      // line, another branch in fast) is a knife edge of its own, and the blocks after it are its
+      // (campaign 20261225, case 399951: a touching crossing two blocks after a KONT knife edge).
+      for (bool grew = true; grew;) {
+        grew = false;
+        for (std::size_t k = ir_parted + 1; k < ir; ++k) {
+          const Decision& d = ref.decisions[k];
+          if (!in_band(d)) continue;
+          bool same = false, other = false;
+          for (std::size_t m = jf_parted; m < jf; ++m) {
+            const Decision& e = fast.decisions[m];
+            if (e.clause != d.clause || e.line != d.line) continue;
+            (e.branch == d.branch ? same : other) = true;
+          }
+          if (same || !other) continue;
+          std::optional<int> nested = reach(k, d.line);
+          if (nested && *nested <= parted_upto) continue;
+          knife.explanation += fmt::format("; then ref {} line {} {} (margin {}) in its band too", d.clause, d.line,
+                                           d.branch, d.margin_exact);
+          if (!nested) return knife;
+          parted_upto = *nested, grew = true;
+        }
+        if (grew) skip(ref.decisions, ir), skip(fast.decisions, jf);
+      }
       // The runs part for good: a knife edge, as far as they can be compared.
       if (ir == ref.decisions.size() || jf == fast.decisions.size()) return knife;
       if (!same_decision(ref.decisions[ir], fast.decisions[jf])) return knife;

@@ -257,6 +257,51 @@ TEST(Comparison, AKnifeEdgeDoesNotHideWhatFollowsIt) {
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
 }
 
+// covers: PROP-DIFF-2
+TEST(Comparison, AKnifeEdgeInsideAnotherOwnsTheBlocksAfterIt) {
+  // Campaign 20261225, case 399951, in small: the runs part at line 5 in the band (window 1: line
+  // 6 is the knife edge's); at line 6 ref decides at margin 0 (there a touching crossing, here
+  // the look-ahead) and fast takes the other branch. Its consequences reach line 8, where ref
+  // decides on a circle and fast checks a collision first. That second parting is a knife edge of
+  // its own: the blocks after it are its, and the runs are compared again from line 9.
+  auto made = [](std::string_view clause, std::string_view branch, int line, double margin, const char* exact) {
+    Decision d = decision(clause, branch, margin, exact ? exact : "");
+    d.line = line;
+    return d;
+  };
+  Tolerance tol = tolerance();
+  tol.window = 1;
+  RunResult ref, fast;
+  ref.decisions = {
+      made("TRC-KONT-1", "in-front", 5, 0, "0"),         made("TRC-LOOK-1", "reaches", 6, 0, "0"),
+      made("ARC-CENTRE-2", "within", 8, -0.01, "-0.01"), made("TRC-ARC-EQ-1", "concentric", 8, 0.012, "0.012"),
+      made("TRC-ELEMENT-1", "fits", 9, 0.5, "0.5"),      made("TRC-ELEMENT-1", "fits", 10, 0.5, "0.5"),
+      made("TRC-ELEMENT-1", "fits", 11, 0.5, "0.5")};
+  fast.decisions = {
+      made("TRC-KONT-1", "behind", 5, -5e-17, nullptr),      made("TRC-LOOK-1", "too-short", 6, -8e-8, nullptr),
+      made("ARC-CENTRE-2", "within", 8, -0.01, nullptr),     made("TRC-CD-2", "outer", 8, -1, nullptr),
+      made("TRC-ARC-EQ-1", "concentric", 8, 0.012, nullptr), made("TRC-ELEMENT-1", "fits", 9, 0.5, nullptr),
+      made("TRC-ELEMENT-1", "fits", 10, 0.5, nullptr),       made("TRC-ELEMENT-1", "fits", 11, 0.5, nullptr)};
+  Verdict v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_NE(v.explanation.find("then ref TRC-LOOK-1 line 6 reaches (margin 0) in its band too"), std::string::npos)
+      << v.explanation;
+  EXPECT_NE(v.explanation.find("again at line 9"), std::string::npos) << v.explanation;
+  // What follows is still compared: a parting at line 10 outside the band is a divergence.
+  fast.decisions[6].branch = "vanishes", fast.decisions[6].margin = 0;
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  fast.decisions[6] = made("TRC-ELEMENT-1", "fits", 10, 0.5, nullptr);
+  // Outside the band, the look-ahead at line 6 is no knife edge: the parting at line 8 is unexplained.
+  ref.decisions[1] = made("TRC-LOOK-1", "reaches", 6, 0.25, "0.25");
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  EXPECT_NE(v.explanation.find("unexplained"), std::string::npos) << v.explanation;
+  // Nor is a decision in the band that fast took the same way.
+  ref.decisions[1] = made("TRC-LOOK-1", "reaches", 6, 0, "0");
+  fast.decisions[1] = made("TRC-LOOK-1", "reaches", 6, 1e-17, nullptr);
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+}
+
 // Every rule names a clause of the spec and a branch its engines trace.
 // covers: PROP-BOUNDARY-1
 TEST(Comparison, EveryBoundaryRuleNamesAClauseOfTheSpec) {
