@@ -12,6 +12,12 @@ PathPiece PathPiece::segment(const Point& from, const Point& to) {
   return p;
 }
 
+PathPiece PathPiece::segment(const Point& from, const Point& to, const Carrier<Kernel>& line) {
+  PathPiece p = segment(from, to);
+  p.support = line;
+  return p;
+}
+
 PathPiece PathPiece::circle(const Point& from, const Point& to, const Point& centre, const FT& radius, int sense,
                             bool full_turn) {
   PathPiece p;
@@ -21,6 +27,7 @@ PathPiece PathPiece::circle(const Point& from, const Point& to, const Point& cen
 }
 
 Carrier<Kernel> PathPiece::carrier() const {
+  if (support) return *support;
   Carrier<Kernel> c;
   c.circle = arc;
   c.point = arc ? centre : a;
@@ -181,13 +188,14 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
       FT across = CGAL::determinant(h.direction, c.point - h.point);
       FT gap = CGAL::abs(across) / length;
       if (CGAL::sign(across) == CGAL::ZERO) {
-        FT ta = (e.a - held.a) * h.direction, tb = (e.b - held.a) * h.direction, l2 = h.direction.squared_length();
+        Vector along = held.b - held.a;  // (the carrier's direction may have another length)
+        FT ta = (e.a - held.a) * along, tb = (e.b - held.a) * along, l2 = along.squared_length();
         const FT& lo = CGAL::compare(ta, tb) == CGAL::SMALLER ? ta : tb;
         const FT& hi = CGAL::compare(ta, tb) == CGAL::SMALLER ? tb : ta;
         if (CGAL::compare(lo, l2) == CGAL::LARGER)
-          gap = (lo - l2) / length;  // the entry piece lies beyond the held piece's end
+          gap = (lo - l2) / exact_root(l2);  // the entry piece lies beyond the held piece's end
         else if (CGAL::sign(hi) == CGAL::NEGATIVE)
-          gap = -hi / length;  // before its start
+          gap = -hi / exact_root(l2);  // before its start
         else
           gap = FT(0), out.overlap = true;
       }

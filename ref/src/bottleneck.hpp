@@ -20,8 +20,13 @@ struct PathPiece {
   FT radius;
   int sense = 1;
   bool full_turn = false;
+  // The line a segment lies on, as its element defines it (the equidistant of the programmed
+  // block), where known: shallower than one through its ends, which may be cut points of nested
+  // radicals whose zero tests cost CORE minutes (campaign 20261224, case 663362: 100 s).
+  std::optional<Carrier<Kernel>> support;
 
   static PathPiece segment(const Point& from, const Point& to);
+  static PathPiece segment(const Point& from, const Point& to, const Carrier<Kernel>& line);
   static PathPiece circle(const Point& from, const Point& to, const Point& centre, const FT& radius, int sense,
                           bool full_turn = false);
   Carrier<Kernel> carrier() const;

@@ -20,7 +20,7 @@ std::optional<Compensation::Entry> Compensation::entry_of(const Block& m, const 
   Point end = equidistant_point<Kernel>(next.b, next.end_normal(), sr);
   auto equidistant_from = [&](const Point& from, bool full) {
     return next.is_arc() ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
-                         : PathPiece::segment(from, end);
+                         : PathPiece::segment(from, end, carrier_of(next, en.radius));
   };
   en.before_element = element_of(before);
   const ContourElement& prev = en.before_element;
@@ -47,7 +47,7 @@ std::optional<Compensation::Entry> Compensation::entry_of(const Block& m, const 
     en.own_start = *g451_point_;
     en.lead = Entry::Lead::kExtension;
     en.pieces.push_back(prev.is_arc() ? PathPiece::circle(prev_end, en.own_start, prev.centre, prev_radius, prev.sense)
-                                      : PathPiece::segment(prev_end, en.own_start));
+                                      : PathPiece::segment(prev_end, en.own_start, carrier_of(prev, prev_radius)));
     en.pieces.push_back(equidistant_from(en.own_start, false));
     return en;
   }
@@ -103,14 +103,17 @@ bool Compensation::outer_corner_is_circle(const Block& m, const ContourElement& 
 PathPiece Compensation::piece_of(const HeldRecord& r) {
   const ExactPath::Element& e = r.exact;
   Point a = e.start.plane(e.axes), b = e.end.plane(e.axes);
-  if (r.element->type == ElementType::kLine) return PathPiece::segment(a, b);
+  if (r.element->type == ElementType::kLine) {
+    if (!e.offset_of) return PathPiece::segment(a, b);
+    return PathPiece::segment(a, b, ref::carrier_of(*e.offset_of, FT(0), e.side_radius));
+  }
   return PathPiece::circle(a, b, e.centre->plane(e.axes), CGAL::abs(e.side_radius), r.element->ccw ? 1 : -1, a == b);
 }
 
 PathPiece Compensation::open_piece() const {
   const ContourElement& e = *open_;
   Point end = equidistant_point<Kernel>(e.b, e.end_normal(), comp_->side_radius);
-  if (!e.is_arc()) return PathPiece::segment(open_start_, end);
+  if (!e.is_arc()) return PathPiece::segment(open_start_, end, carrier_of(e, open_radius_));
   return PathPiece::circle(open_start_, end, e.centre, open_radius_, e.sense, e.full_circle && open_at_normal_start_);
 }
 
@@ -260,9 +263,9 @@ PathPiece Compensation::curve_piece(const EdgeCurve& curve) const {
   const Carrier<Kernel>& k = curve.carrier;
   if (k.circle)
     return PathPiece::circle(k.point + Vector(k.radius, 0), k.point + Vector(k.radius, 0), k.point, k.radius, 1, true);
-  if (curve.bound == EdgeCurve::Bound::kSegment) return PathPiece::segment(k.point, k.point + k.direction);
+  if (curve.bound == EdgeCurve::Bound::kSegment) return PathPiece::segment(k.point, k.point + k.direction, k);
   FT far = FT(10'000'000'000'000L) * FT(1'000'000'000L) / exact_root(k.direction.squared_length());
-  return PathPiece::segment(k.point, k.point + k.direction * far);
+  return PathPiece::segment(k.point, k.point + k.direction * far, k);
 }
 
 }  // namespace cutcom::ref::detail
