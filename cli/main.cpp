@@ -93,7 +93,9 @@ void load_file(Table& table, const std::string& file, const char* what) {
   try {
     table.load(in, file);
   } catch (const cutcom::InputError& e) {
-    throw FileError(fmt::format("{}:{}:{}: {}", file, e.line(), e.column(), e.detail()));
+    std::string_view detail = e.detail();  // (the table names the file too: once is enough)
+    if (detail.starts_with(file + ": ")) detail.remove_prefix(file.size() + 2);
+    throw FileError(fmt::format("{}:{}:{}: {}", file, e.line(), e.column(), detail));
   }
 }
 

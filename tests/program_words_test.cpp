@@ -97,6 +97,78 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_THROW(read("WAITM 1\n"), InputError);        // a call needs its arguments in (…)
 }
 
+// covers: NC-WORD-7
+TEST(ProgramWords, FeedProfileOrientationAndDialectWordsAreActions) {
+  auto b = read(
+      "FLIN FCUB FENDNORM G62 CPRECON ORIAXES LFON DRFOF\n"
+      "OVR=50 FGREF[C]=10 WAITP(Z) BRISKA(X,Y) SOFTA G290 G621 CPRECOF LFOF\n"
+      "G1 X10 F100\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(actions(b[0]),
+            (std::vector<std::string>{"FLIN", "FCUB", "FENDNORM", "G62", "CPRECON", "ORIAXES", "LFON", "DRFOF"}));
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"OVR=50", "FGREF[C]=10", "WAITP(Z)", "BRISKA(X,Y)", "SOFTA",
+                                                     "G290", "G621", "CPRECOF", "LFOF"}));
+  EXPECT_EQ(b[2].end.x.to_string(), "10");
+  EXPECT_THROW(read("G62 G621\n"), InputError);  // one group
+  try {
+    read("G291\n");
+    ADD_FAILURE() << "the ISO dialect was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.detail().find("ISO dialect"), std::string::npos) << e.detail();
+  }
+}
+
+// covers: NC-WORD-10
+TEST(ProgramWords, ProgrammedToolLengthOffsetsAreActions) {
+  auto b = read("TOFFON(Z,1.5) TOFFL=2 TOFF[X]=0.5\nG1 X10 F100\nTOFFOF() TOFFOF\n");
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"TOFFON(Z,1.5)", "TOFFL=2", "TOFF[X]=0.5"}));
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b[1].end.x.to_string(), "10");  // the tip stays on the programmed point
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"TOFFOF()", "TOFFOF"}));
+  try {
+    read("TOFFR=0.1\n");
+    ADD_FAILURE() << "TOFFR was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.detail().find("not simulate"), std::string::npos) << e.detail();
+  }
+}
+
+// covers: TOOL-SUM-1 TRC-UNSUP-1
+TEST(ProgramWords, SumOffsetsLeaveTheRadiusAlone) {
+  const std::string head = "$TC_DP1[1,1]=120 $TC_DP6[1,1]=5\n$TC_SCP13[1,1]=0.2 $TC_ECP23[1,1]=0.1 $TC_SCP16[1,1]=0\n";
+  auto b = read(head + "T1 D1 DL=1\nG0 X0 Y0\nDL=2\nD1\n");
+  ASSERT_EQ(b.size(), 6u);  // (the two lines of tool data are blocks too)
+  EXPECT_EQ(b[2].state.sum_offset, 1);
+  EXPECT_EQ(b[2].state.effective_radius(), dec("5"));
+  EXPECT_EQ(b[4].state.sum_offset, 2);
+  EXPECT_EQ(b[5].state.sum_offset, 0);  // a new D brings MD20272 (0)
+  MachineData md;
+  md.set("MD20272", "3");
+  auto m = read(head + "T1 D1\nD0\nDL=4\n", md.initial_state());
+  ASSERT_EQ(m.size(), 5u);
+  EXPECT_EQ(m[2].state.sum_offset, 3);
+  EXPECT_EQ(m[3].state.sum_offset, 0);  // D0: no sum offset
+  EXPECT_EQ(m[4].state.sum_offset, 0);
+  EXPECT_THROW(read("$TC_SCP16[1,1]=0.05\n"), InputError);  // a radius part: not simulated
+  EXPECT_THROW(read("$TC_SCP12[1,1]=1\n"), InputError);     // no such parameter
+  EXPECT_THROW(read("DL=7\n"), InputError);
+  EXPECT_THROW(md.set("MD20272", "7"), MachineDataError);
+  // The same path with and without DL; a DL while compensation is active is a D change: refused.
+  const std::string contour = "G0 X0 Y0\nG41 G1 X10 F100\nX20\nX20 Y10\nG40 X0 Y20\nM30\n";
+  Both with = run_both(head + "T1 D1 DL=1\n" + contour), without = run_both(head + "T1 D1\n" + contour);
+  ASSERT_EQ(with.ref.path.size(), 4u);  // approach, two offsets, retraction
+  for (const auto& [w, o] : {std::pair{&with.fast, &without.fast}, std::pair{&with.ref, &without.ref}}) {
+    ASSERT_EQ(w->path.size(), o->path.size());
+    for (std::size_t k = 0; k < w->path.size(); ++k) {
+      EXPECT_EQ(w->path[k].start.x, o->path[k].start.x);
+      EXPECT_EQ(w->path[k].end.y, o->path[k].end.y);
+    }
+  }
+  EXPECT_EQ(with.ref.path[1].start.y, 5);  // offset by the radius of $TC_DP6 alone
+  EXPECT_THROW(run_both(head + "T1 D1\nG0 X0 Y0\nG41 G1 X10 F100\nX20 DL=1\nX20 Y10\nG40 X0 Y20\nM30\n"),
+               UnsupportedError);
+}
+
 // covers: NC-WORD-8 NC-ERR-3
 TEST(ProgramWords, RotaryAxesPositionAsActions) {
   auto b = read("R1=45\nG0 X0 Y0\nA90 C=ACP(R1)\nB=IC(-5) POS[A]=0 POSA[C]=R1*2 FA[A]=1000\nG1 X10 F100\n");

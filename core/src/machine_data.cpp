@@ -26,6 +26,8 @@ const std::vector<MachineDatumInfo>& machine_data_catalogue() {
        "blocks without motion in the compensation plane between two compensated blocks", "MD-20250-1"},
       {"MD20270", "$MC_CUTTING_EDGE_DEFAULT", "", "-1 .. 32000",
        "edge active after a tool change: > 0 that edge, 0 none (D0), -1 the D number stays", "TOOL-CHANGE-2"},
+      {"MD20272", "$MC_SUMCORR_DEFAULT", "", "0 .. 6",
+       "sum offset (DL) active when an edge becomes active: 0 none, n DL=n", "TOOL-SUM-1"},
       {"MD22550", "$MC_TOOL_CHANGE_MODE", "", "0, 1", "0: T changes the tool; 1: T preselects, M6 changes",
        "TOOL-CHANGE-1"},
       {"MD21000", "$MC_CIRCLE_ERROR_CONST", "mm", ">= 0",
@@ -55,7 +57,7 @@ const MachineDatumInfo& lookup(std::string_view name) {
     if (u == d.id || u == d.name) return d;
   throw MachineDataError(
       fmt::format("unknown machine datum '{}' (known: MD20150[47], MD20202, MD20204, MD20210, "
-                  "MD20220, MD20230, MD20240, MD20250, MD20270, MD22550, MD21000, MD21010)",
+                  "MD20220, MD20230, MD20240, MD20250, MD20270, MD20272, MD22550, MD21000, MD21010)",
                   name));
 }
 
@@ -98,6 +100,8 @@ void MachineData::set(std::string_view name, std::string_view value) {
     cutcom_maxnum_dummy_blocks = count_in(d, value, 0, kMaxDummyBlocks);
   } else if (id == "MD20270") {
     cutting_edge_default = count_in(d, value, -1, 32000);
+  } else if (id == "MD20272") {
+    sum_offset_default = count_in(d, value, 0, 6);
   } else if (id == "MD22550") {
     tool_change_mode = count_in(d, value, 0, 1);
   } else if (id == "MD21000") {
@@ -136,6 +140,7 @@ ModalState MachineData::initial_state() const {
   ModalState s;
   s.edge_strategy = group48_reset;
   s.md_edge_default = cutting_edge_default;
+  s.md_sum_offset_default = sum_offset_default;
   s.md_change_on_m6 = tool_change_mode == 1;
   return s;
 }
@@ -151,6 +156,7 @@ std::string machine_datum_value(const MachineData& md, std::string_view id) {
   if (id == "MD20240") return std::to_string(md.cutcom_maxnum_check_blocks);
   if (id == "MD20250") return std::to_string(md.cutcom_maxnum_dummy_blocks);
   if (id == "MD20270") return std::to_string(md.cutting_edge_default);
+  if (id == "MD20272") return std::to_string(md.sum_offset_default);
   if (id == "MD22550") return std::to_string(md.tool_change_mode);
   if (id == "MD21000") return md.circle_error_const.to_string();
   if (id == "MD21010") return md.circle_error_factor.to_string();

@@ -14,20 +14,30 @@ namespace {
 
 constexpr std::string_view kActionKeywords[] = {
     "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN", "COMPON", "COMPCAD", "COMPCURV", "COMPSURF",
-    "COMPOF", "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA",
+    "COMPOF", "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA", "DRIVEA",
     // NC-WORD-7: single block and display suppression, path and feed modes, orientation and tool
     // offset references, rotations off, spindle position control: nothing of the 2D path.
     "SBLOF", "SBLON", "DISPLOF", "DISPLON", "CP", "PTP", "PTPG0", "FNORM", "ORIWKS", "ORIMKS", "TOWSTD", "PAROTOF",
     "TOROTOF", "SPCON", "SPCOF",
     // NC-WORD-7: the preprocessing buffer's control
-    "FIFOCTRL", "STOPFIFO", "STARTFIFO"};
+    "FIFOCTRL", "STOPFIFO", "STARTFIFO",
+    // NC-WORD-7: feed profiles, corner deceleration off, contour precision, orientation
+    // interpolation, fast retraction for threads, handwheel offsets off
+    "FLIN", "FCUB", "FENDNORM", "CPRECON", "CPRECOF", "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "LFON", "LFOF",
+    "DRFOF",
+    // NC-WORD-10: tool length offsets: the tool tip stays on the programmed path
+    "TOFFOF"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
                                               // NC-WORD-7: compressor tolerances, axis dynamics
                                               "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM",
                                               // NC-WORD-8: rotary axes as positioning axes, their feed
                                               "POS", "POSA", "FA",
                                               // NC-CYCLE-1: the fixed point of G75
-                                              "FP"};
+                                              "FP",
+                                              // NC-WORD-7: programmable override, rotary feed radius
+                                              "OVR", "FGREF",
+                                              // NC-WORD-10: tool length offsets, programmed
+                                              "TOFFL", "TOFF"};
 constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
                                              // NC-WORD-8: the rotary axes set to an orientation
                                              "ORIRESET",
@@ -35,7 +45,11 @@ constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", 
                                              "CANCEL", "LOCK", "UNLOCK",
                                              // NC-WORD-7: channel coordination, piece count, feed group
                                              "WAITM", "WAITMC", "WAITE", "WAITS", "SETM", "CLEARM", "SETPIECE",
-                                             "FGROUP"};
+                                             "FGROUP",
+                                             // NC-WORD-7: waiting for positioning axes
+                                             "WAITP",
+                                             // NC-WORD-10: tool length offsets, programmed
+                                             "TOFFON"};
 
 // Known SINUMERIK words cutcom does not simulate, and why (the message names the family).
 struct Unsupported {
@@ -80,8 +94,9 @@ constexpr Unsupported kUnsupported[] = {
     {"CUT3DFF", "3D compensation"},
     {"CUT3DFS", "3D compensation"},
     {"CUT3DCC", "3D compensation"},
-    {"DL", "sum and setup offsets"},
-    {"TOFFON", "tool offsets in the program"},
+    {"TOFFR", "a programmed tool radius offset"},
+    {"G291", "the ISO dialect; G290, the SINUMERIK dialect, is read"},
+    {"PRESETON", "setting the actual value"},
     {"CROT", "frame functions"},
     {"PAROT", "frame functions: the workpiece's rotation"},
     {"TOROT", "frame functions: the tool's orientation"},

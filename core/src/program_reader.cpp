@@ -308,6 +308,10 @@ void ProgramReader::change_tool(Block& b, ModalState& s) {
     else if (s.md_edge_default > 0)
       s.edge = s.md_edge_default;
   }
+  // TOOL-SUM-1: a new edge brings MD20272's sum offset; DL in the block wins. The sum offsets act on
+  // the lengths only (the tool tip stays on the programmed path): DL changes no radius.
+  if (change || w.edge) s.sum_offset = s.edge == 0 ? 0 : s.md_sum_offset_default;
+  if (w.sum_offset) s.sum_offset = s.edge == 0 ? 0 : *w.sum_offset;
   if (change || w.edge) {  // TOOL-EDGE-2: the edge data are taken now
     const EdgeData* e = (s.tool != 0 && s.edge != 0) ? tools_.find(s.tool, s.edge) : nullptr;
     s.edge_defined = e != nullptr;

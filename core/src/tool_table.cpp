@@ -79,7 +79,9 @@ void archive_lines(std::istream& in, const std::string& source_name, F f) {
 
 void ToolTable::load(std::istream& in, const std::string& source_name) {
   archive_lines(in, source_name, [&](int n, const std::string& line, const std::string& u) {
-    bool ours = u.rfind("$TC_DP", 0) == 0 || u.rfind("$TC_TP2[", 0) == 0 || u.rfind("$TC_TP2 ", 0) == 0;
+    // (Sum and setup offsets are read too: a radius part other than 0 is refused, TOOL-SUM-1.)
+    bool ours = u.rfind("$TC_DP", 0) == 0 || u.rfind("$TC_TP2[", 0) == 0 || u.rfind("$TC_TP2 ", 0) == 0 ||
+                u.rfind("$TC_SCP", 0) == 0 || u.rfind("$TC_ECP", 0) == 0;
     if (!ours) {
       // Other tool management data ($TC_TP8, $TC_MOP…, $TC_ADPT…, $A_…): no effect on the path.
       if (u[0] == '$') return;

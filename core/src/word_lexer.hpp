@@ -32,6 +32,8 @@ enum GGroup : unsigned {
   kGroupFeedType = 1u << 5,     // group 15: G93 G94 G95 G96 G97 G961 G971
   kGroupOffset = 1u << 6,       // group 8: G500 G54…G57 G505…G599
   kGroupSuppression = 1u << 7,  // group 9: G53 G153
+  kGroupCornerFeed = 1u << 8,   // group 57: G62 G621 (FENDNORM)
+  kGroupDialect = 1u << 9,      // group 47: G290 G291
 };
 
 class WordLexer {
@@ -337,6 +339,8 @@ class WordLexer {
   void tool_edge_data(int p, std::size_t at);
   // $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).
   void tool_name_data(std::size_t at);
+  // $TC_SCPkp[t,d]=v, $TC_ECPkp[t,d]=v: sum and setup offsets (TOOL-SUM-1).
+  void sum_offset_data(const std::string& full, std::size_t at);
   // $TC_TP1, $TC_TP3 … $TC_TP11 (duplo number, size, place type, …): no effect on the path.
   void ignored_tool_parameter(const std::string& what);
 

@@ -84,6 +84,11 @@ void WordLexer::keyword_value(const std::string& n, std::size_t at) {
     set_once(out_.cw_set().rp, v, "RP", at);
   } else if (n == "AR") {
     set_once(out_.cw_set().ar, plain_value("AR", true), "AR", at);  // NC-CONTOUR-5
+  } else if (n == "DL") {                                           // TOOL-SUM-1: the sum offset of the edge
+    if (!equals()) fail("DL needs '=' (write DL=n; DL=0 deselects)");
+    std::int64_t v = integer("DL");
+    if (v < 0 || v > 6) fail("DL: a sum offset number 0 … 6", at);
+    set_once(out_.sum_offset, v, "DL", at);
   } else if (n == "TURN") {
     if (!equals()) fail("TURN needs '=' (write TURN=...)");
     std::int64_t v = integer("TURN");
@@ -121,8 +126,17 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   for (const auto& [name, f] : kFrames)
     if (n == name) return set_once(out_.frame, f, "a frame instruction", at);  // NC-FRAME-1
   switch (classify_named_word(n)) {
-    case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, TRAFOOF, …
-      return add_text_action(n, at);
+    case NamedWord::kActionKeyword: {  // NC-WORD-5/6: SOFT, FFWON, CFC, TRAFOOF, …
+      // (with the axes it acts on: BRISKA(X,Y), TOFFOF())
+      std::size_t after = i_;
+      skip_space();
+      if (peek() != '(') {
+        i_ = after;
+        return add_text_action(n, at);
+      }
+      balanced_arguments(n, at);
+      return add_text_action(written(at), at);
+    }
     case NamedWord::kActionValue: {  // NC-WORD-5/3/7: ADIS=, LIMS=, SPOS=, SPOS[n]=, ACC[X]=
       if (peek() == '[') {
         ++i_;

@@ -68,6 +68,11 @@ void WordLexer::g_code(std::size_t at) {
     case 602:
     case 603:
       return action(kGroupStopWindow, "exact stop window (G601/G602/G603)");
+    case 62:
+    case 621:  // NC-WORD-7: the feed slows at (inside) corners; the path is the same
+      return action(kGroupCornerFeed, "corner deceleration (G62/G621)");
+    case 290:  // NC-WORD-7: the SINUMERIK dialect, which cutcom reads (G291, ISO dialect: not simulated)
+      return action(kGroupDialect, "dialect (G290/G291)");
     case 70:
       g_group(kGroupUnits, "units", at);
       o.units = Units::kG70;

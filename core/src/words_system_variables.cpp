@@ -21,6 +21,7 @@ void WordLexer::system_variable() {
     return tool_edge_data(p, at);
   }
   if (n == "TC_TP2") return tool_name_data(at);
+  if (n.rfind("TC_SCP", 0) == 0 || n.rfind("TC_ECP", 0) == 0) return sum_offset_data(full, at);
   if (is_machine_output(full)) {  // NC-WORD-7: $A_OUT[n]=v, $A_DBB[n]=v, …: the machine's, kept as written
     index_open(full);
     digits(full + " index");
@@ -34,7 +35,7 @@ void WordLexer::system_variable() {
     return ignored_tool_parameter(full);
   }
   fail(fmt::format("system variable '{}' is SINUMERIK NC that cutcom does not simulate (supported: $TC_DP1 … "
-                   "$TC_DP25, $TC_TP1 … $TC_TP11)",
+                   "$TC_DP25, $TC_TP1 … $TC_TP11, $TC_SCP13 … $TC_SCP71, $TC_ECP13 … $TC_ECP71)",
                    full),
        at);
 }
@@ -68,6 +69,36 @@ void WordLexer::tool_edge_data(int p, std::size_t at) {
   if (d > 32000) fail("edge numbers go up to 32000", at);
   if (out_.tool_data_count == BlockWords::kMaxToolData) fail("too many tool data assignments in one block", at);
   out_.tool_data[static_cast<std::size_t>(out_.tool_data_count++)] = {p, static_cast<int>(t), static_cast<int>(d), v};
+}
+
+// TOOL-SUM-1: $TC_SCPkp[t,d]=v, $TC_ECPkp[t,d]=v, parameter p (3 … 11, as $TC_DPp) of sum or
+// setup offset k (1 … 6), numbered 10 k + p. The lengths and angles leave the path alone; a radius
+// part (p = 6) other than 0 would change the radius and is not simulated.
+void WordLexer::sum_offset_data(const std::string& full, std::size_t at) {
+  std::string num = full.substr(7);
+  bool ok = num.size() == 2 && std::all_of(num.begin(), num.end(), is_digit);
+  int n = ok ? std::stoi(num) : 0;
+  int k = (n - 3) / 10, p = n - 10 * k;
+  if (!ok || n < 13 || n > 71 || k < 1 || k > 6 || p < 3 || p > 11)
+    fail(fmt::format("'{}' is not a sum offset parameter ({}13 … {}71: 10 × DL + parameter 3 … 11)", full,
+                     full.substr(0, 7), full.substr(0, 7)),
+         at);
+  index_open(full);
+  digits("tool number");
+  skip_space();
+  if (peek() != ',') fail(fmt::format("',' expected between tool and edge number (write {}[t,d])", full));
+  ++i_;
+  skip_space();
+  digits("edge number");
+  index_close();
+  if (!equals()) fail("'=' expected");
+  Decimal v = number(full + " value");
+  if (p == 6 && !v.is_zero())
+    fail(fmt::format("{}: a sum offset of the radius is SINUMERIK NC that cutcom does not simulate (the sum offsets "
+                     "of the lengths leave the path alone)",
+                     full),
+         at);
+  add_text_action(written(at), at);
 }
 
 // $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).

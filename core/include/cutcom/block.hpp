@@ -136,6 +136,7 @@ struct BlockWordFields {
   Opt<Decimal> feed;
   Opt<std::int64_t> tool;
   Opt<std::int64_t> edge;
+  Opt<std::int64_t> sum_offset;  // DL=n (TOOL-SUM-1)
   Opt<Decimal> offn;
   Opt<Decimal> disc;
   Opt<Decimal> disr;
@@ -219,8 +220,9 @@ struct ModalState {
   FeedType feed_type = FeedType::kG94;
   PathMode path_mode = PathMode::kG60;
   Decimal feed;
-  std::int64_t tool = 0;  // 0: no tool active
-  std::int64_t edge = 0;  // 0: D0, no edge active
+  std::int64_t tool = 0;        // 0: no tool active
+  std::int64_t edge = 0;        // 0: D0, no edge active
+  std::int64_t sum_offset = 0;  // DL: 0 none (TOOL-SUM-1)
   Decimal offn;
   // Edge data captured when T or D was programmed (spec TOOL-EDGE-2).
   Decimal edge_radius;  // $TC_DP6
@@ -229,8 +231,9 @@ struct ModalState {
 
   // Settings of the reader that machine data decide, not the program (TOOL-CHANGE-1/2):
   // MD20270 $MC_CUTTING_EDGE_DEFAULT and MD22550 $MC_TOOL_CHANGE_MODE.
-  std::int64_t md_edge_default = 1;  // >0 that edge, 0 D0, -1 keep the D number
-  bool md_change_on_m6 = false;      // MD22550 = 1: T preselects, M6 changes
+  std::int64_t md_edge_default = 1;        // >0 that edge, 0 D0, -1 keep the D number
+  std::int64_t md_sum_offset_default = 0;  // MD20272 $MC_SUMCORR_DEFAULT: the DL a new edge brings
+  bool md_change_on_m6 = false;            // MD22550 = 1: T preselects, M6 changes
 
   // TRC-RADIUS-1: effective radius = $TC_DP6 + $TC_DP15 + OFFN (may be negative).
   Decimal effective_radius() const { return edge_radius + edge_wear + offn; }

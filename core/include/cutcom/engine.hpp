@@ -16,9 +16,11 @@ class UnsupportedError : public InputError {
 
 // The effective radius and the edge it came from; a change while active is a D change (decision 30).
 struct ActiveEdge {
-  std::int64_t tool = 0, edge = 0;
+  std::int64_t tool = 0, edge = 0, sum_offset = 0;  // (a DL acts on the path as a D does: TOOL-SUM-1)
   Decimal radius, wear, offn;
-  static ActiveEdge of(const ModalState& s) { return {s.tool, s.edge, s.edge_radius, s.edge_wear, s.offn}; }
+  static ActiveEdge of(const ModalState& s) {
+    return {s.tool, s.edge, s.sum_offset, s.edge_radius, s.edge_wear, s.offn};
+  }
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
 };
 
@@ -34,7 +36,7 @@ inline void reject_kontc_kontt(const Block& b, bool retraction) {
 inline void reject_change_while_active(const Block& b, const ActiveEdge& active) {
   if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
   if (!(ActiveEdge::of(b.state) == active))
-    throw UnsupportedError(b.words.line, "change of tool, D number or OFFN while compensation is active");
+    throw UnsupportedError(b.words.line, "change of tool, D number, DL or OFFN while compensation is active");
   reject_kontc_kontt(b, false);
 }
 

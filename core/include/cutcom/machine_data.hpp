@@ -32,6 +32,7 @@ struct MachineData {
   int cutcom_maxnum_dummy_blocks = 5;                                 // MD20250
   EdgeStrategy group48_reset = EdgeStrategy::kG462;                   // MD20150 $MC_GCODE_RESET_VALUES[47]
   int cutting_edge_default = 1;                                       // MD20270
+  int sum_offset_default = 0;                                         // MD20272
   int tool_change_mode = 0;                                           // MD22550
   Decimal circle_error_const = Decimal::from_units(10'000'000);       // MD21000, 0.01 mm
   Decimal circle_error_factor = Decimal::from_units(1'000'000);       // MD21010, 0.001
