@@ -169,6 +169,28 @@ TEST(ProgramWords, SumOffsetsLeaveTheRadiusAlone) {
                UnsupportedError);
 }
 
+// covers: NC-WORD-11
+TEST(ProgramWords, UnderTraoriTheToolTipFollowsTheProgram) {
+  auto b = read(
+      "TRAORI(1)\nG0 X0 Y0 Z5 A0 C0\nG1 X10 Y5 A30 C10 F100\nX20 A3=0 B3=0.5 C3=1\nLEAD=10 TILT=0\n"
+      "G41 T1 D1 X30\nC20\nG40 X40\nTRAFOOF\n");
+  ASSERT_EQ(b.size(), 9u);
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"TRAORI(1)"}));
+  EXPECT_EQ(b[2].end, pt("10", "5", "5"));
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"A30", "C10"}));
+  EXPECT_EQ(b[2].notice_clause, "NC-WORD-11");
+  EXPECT_EQ(actions(b[3]), (std::vector<std::string>{"A3=0", "B3=0.5", "C3=1"}));
+  EXPECT_EQ(b[3].end.x.to_string(), "20");
+  EXPECT_FALSE(b[6].moves_in_plane());  // an orientation change between compensated blocks
+  EXPECT_EQ(actions(b[8]), (std::vector<std::string>{"TRAFOOF"}));
+  // Tilting along a compensated contour, TRAORI under compensation, orientation without TRAORI,
+  // and simultaneous rotary motion after TRAFOOF: errors.
+  EXPECT_THROW(read("TRAORI\nG41 T1 D1 G1 X10 F100\nX20 A3=1\n"), InputError);
+  EXPECT_THROW(read("G41 T1 D1 G1 X10 F100\nTRAORI\n"), InputError);
+  EXPECT_THROW(read("G1 X10 A3=1 F100\n"), InputError);
+  EXPECT_THROW(read("TRAORI\nTRAFOOF\nG1 X10 A30 F100\n"), InputError);
+}
+
 // covers: NC-WORD-8 NC-ERR-3
 TEST(ProgramWords, RotaryAxesPositionAsActions) {
   auto b = read("R1=45\nG0 X0 Y0\nA90 C=ACP(R1)\nB=IC(-5) POS[A]=0 POSA[C]=R1*2 FA[A]=1000\nG1 X10 F100\n");

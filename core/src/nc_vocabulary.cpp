@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::string_view kActionKeywords[] = {
     "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN", "COMPON", "COMPCAD", "COMPCURV", "COMPSURF",
-    "COMPOF", "TRAFOOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA", "DRIVEA",
+    "COMPOF", "UPATH", "SPATH", "CUT2D", "SOFTA", "BRISKA", "DRIVEA",
     // NC-WORD-7: single block and display suppression, path and feed modes, orientation and tool
     // offset references, rotations off, spindle position control: nothing of the 2D path.
     "SBLOF", "SBLON", "DISPLOF", "DISPLON", "CP", "PTP", "PTPG0", "FNORM", "ORIWKS", "ORIMKS", "TOWSTD", "PAROTOF",
@@ -85,7 +85,6 @@ constexpr Unsupported kUnsupported[] = {
     {"BSPLINE", "splines"},
     {"CSPLINE", "splines"},
     {"POLY", "polynomials"},
-    {"TRAORI", "transformations"},
     {"TRANSMIT", "transformations"},
     {"TRACYL", "transformations"},
     {"CUT2DF", "compensation in a frame plane"},

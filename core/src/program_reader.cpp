@@ -379,12 +379,34 @@ void ProgramReader::resolve(Block& b) {
   // NC-WORD-8: a rotary axis with X, Y or Z. In a rapid move without compensation it positions
   // while the tool travels (3+2 set-ups: the path shows X, Y and Z as programmed); anywhere else it
   // is simultaneous 4/5-axis motion, not simulated.
-  if (w.rotary_with_plane) {
+  // NC-WORD-11: under TRAORI X, Y, Z are the tool tip in the workpiece system whatever the rotary
+  // axes do: without compensation they may move together in any block.
+  if (w.orientation_transformation) {
+    if (s.side != Side::kOff)
+      fail(fmt::format("{} while compensation is active is SINUMERIK NC that cutcom does not simulate",
+                       *w.orientation_transformation ? "TRAORI" : "TRAFOOF"));
+    s.orientation_transformation = *w.orientation_transformation;
+  }
+  if (!w.orientation_word.empty() && !s.orientation_transformation)
+    fail(fmt::format("{}= (the tool's orientation) is read under TRAORI, which is not in force", w.orientation_word));
+  if (!w.rotary_with_plane.empty() && s.orientation_transformation) {
+    if (s.side != Side::kOff)
+      throw InputError(
+          w.line, w.rotary_column,
+          fmt::format("{} moving with X, Y or Z under TRAORI with compensation (the tool's orientation "
+                      "changing along a compensated contour) is SINUMERIK NC that cutcom does not simulate",
+                      w.rotary_with_plane));
+    note(b, "NC-WORD-11",
+         fmt::format("TRAORI: {} orients the tool while X, Y, Z move; the path is the tool tip's in the workpiece "
+                     "system, as programmed",
+                     w.rotary_with_plane));
+  } else if (!w.rotary_with_plane.empty()) {
     if (s.motion != Motion::kRapid || s.side != Side::kOff)
       throw InputError(w.line, w.rotary_column,
                        fmt::format("the rotary axis {0} moving with X, Y or Z in a block other than a rapid move "
                                    "without compensation (4/5-axis motion) is SINUMERIK NC that cutcom does not "
-                                   "simulate; {0} alone, or with X, Y, Z in G0 under G40, is kept as an action",
+                                   "simulate; {0} alone, or with X, Y, Z in G0 under G40 (or in any block under TRAORI "
+                                   "without compensation), is kept as an action",
                                    w.rotary_with_plane));
     note(b, "NC-WORD-8",
          fmt::format("the rotary axis {} positions during this rapid move: the path shows X, Y and Z as programmed",

@@ -326,6 +326,8 @@ class WordLexer {
   void rotary_axis(const std::string& n, std::size_t at);
   bool reference_axis(const std::string& n, std::size_t at);
   void plane_axis_after_rotary(std::size_t at);
+  void orientation(const std::string& n, std::size_t at);
+  static std::string_view orientation_literal(std::string_view n);
   static std::string area_limit_message(int g) {
     return fmt::format(
         "G{} with axis words (a programmable working area limitation) is SINUMERIK NC that cutcom does not "
@@ -346,8 +348,8 @@ class WordLexer {
 
   std::string_view s_;
   std::size_t i_ = 0;
-  std::size_t rotary_at_ = std::string_view::npos;  // NC-WORD-8: where a rotary axis word stands
-  int area_limit_ = 0;                              // NC-WORD-8: G25 or G26 in the block
+  std::string_view rotary_name_;  // NC-WORD-8: the rotary axis word in the block so far (a literal)
+  int area_limit_ = 0;            // NC-WORD-8: G25 or G26 in the block
   int line_;
   BlockWords& out_;
   unsigned groups_ = 0;

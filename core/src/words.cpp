@@ -89,6 +89,8 @@ void WordLexer::keyword_value(const std::string& n, std::size_t at) {
     std::int64_t v = integer("DL");
     if (v < 0 || v > 6) fail("DL: a sum offset number 0 … 6", at);
     set_once(out_.sum_offset, v, "DL", at);
+  } else if (n == "LEAD" || n == "TILT" || n == "THETA" || n == "PSI") {
+    orientation(n, at);  // NC-WORD-11
   } else if (n == "TURN") {
     if (!equals()) fail("TURN needs '=' (write TURN=...)");
     std::int64_t v = integer("TURN");
@@ -275,6 +277,16 @@ void WordLexer::keyword(const std::string& n, std::size_t at) {
     out_.stopre = true;
     return;
   }
+  if (n == "TRAORI" || n == "TRAFOOF") {  // NC-WORD-11: the 5-axis transformation on (its number) or off
+    std::size_t after = i_;
+    skip_space();
+    if (n == "TRAORI" && peek() == '(')
+      balanced_arguments(n, at);
+    else
+      i_ = after;
+    set_once(out_.orientation_transformation, n == "TRAORI", "TRAORI/TRAFOOF", at);
+    return add_text_action(written(at), at);
+  }
   keyword_value(n, at);
 }
 
@@ -321,6 +333,12 @@ void WordLexer::word() {
     case 'A':
     case 'B':
     case 'C':
+      if ((peek() == '2' || peek() == '3') && extended_address_follows()) {  // NC-WORD-11: angles, vector
+        std::string name = n;
+        name += peek();
+        ++i_;
+        return orientation(name, at);
+      }
       if (reference_axis(n, at)) return;
       return rotary_axis(n, at);
     case 'X':
@@ -378,19 +396,36 @@ bool WordLexer::reference_axis(const std::string& n, std::size_t at) {
 // written. Moved together with X, Y or Z it is noted for the reader, which allows it only in a
 // rapid move without compensation (program_reader.cpp).
 void WordLexer::rotary_axis(const std::string& n, std::size_t at) {
+  std::string_view name = orientation_literal(n);
   for (const AxisWord& a : out_.axis)
-    if (a.present && !out_.rotary_with_plane)
-      out_.rotary_with_plane = n[0], out_.rotary_column = static_cast<int>(at) + 1;
+    if (a.present && out_.rotary_with_plane.empty())
+      out_.rotary_with_plane = name, out_.rotary_column = static_cast<int>(at) + 1;
   equals();
   action_value(n);
-  rotary_at_ = at;
+  rotary_name_ = name;
   add_text_action(written(at), at);
+}
+
+// NC-WORD-11: the tool's orientation under TRAORI: Euler or RPY angles A2= B2= C2=, a direction
+// vector A3= B3= C3=, the angles LEAD= TILT= THETA= PSI=. Kept as actions like a rotary axis; the
+// reader allows them only with TRAORI in force.
+void WordLexer::orientation(const std::string& n, std::size_t at) {
+  if (out_.orientation_word.empty()) out_.orientation_word = orientation_literal(n);
+  rotary_axis(n, at);
+}
+
+std::string_view WordLexer::orientation_literal(std::string_view n) {
+  static constexpr std::string_view kNames[] = {"A",  "B",  "C",    "A2",   "B2",    "C2", "A3",
+                                                "B3", "C3", "LEAD", "TILT", "THETA", "PSI"};
+  for (std::string_view k : kNames)
+    if (k == n) return k;
+  return "A";  // (never: the callers pass one of the names above)
 }
 
 void WordLexer::plane_axis_after_rotary(std::size_t at) {
   if (area_limit_) fail(area_limit_message(area_limit_), at);
-  if (rotary_at_ != std::string_view::npos && !out_.rotary_with_plane)
-    out_.rotary_with_plane = static_cast<char>(s_[rotary_at_] & ~0x20), out_.rotary_column = static_cast<int>(at) + 1;
+  if (!rotary_name_.empty() && out_.rotary_with_plane.empty())
+    out_.rotary_with_plane = rotary_name_, out_.rotary_column = static_cast<int>(at) + 1;
 }
 
 // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).

@@ -163,12 +163,14 @@ struct BlockWordFields {
 
   // NC-WORD-8: a rotary axis (A, B or C) programmed with X, Y or Z, and the column of the first
   // of them; allowed only in a rapid move without compensation (the reader decides).
-  char rotary_with_plane = 0;
+  std::string_view rotary_with_plane;  // the rotary axis or orientation word moving with X, Y or Z (a literal)
   int rotary_column = 0;
-  bool modal_call = false;           // MCALL: the cycle in `not_simulated` runs after every move
-  bool modal_call_end = false;       // MCALL alone
-  bool repeats_from_start = false;   // GOTOS (NC-PARAM-FLOW-7): also a program end
-  bool synchronized_action = false;  // NC-WORD-9: WHEN/WHENEVER/EVERY/FROM/DO … kept as an action
+  std::string_view orientation_word;     // A2…C3, LEAD, TILT, THETA, PSI: the tool's orientation (NC-WORD-11)
+  Opt<bool> orientation_transformation;  // TRAORI (true), TRAFOOF (false): NC-WORD-11
+  bool modal_call = false;               // MCALL: the cycle in `not_simulated` runs after every move
+  bool modal_call_end = false;           // MCALL alone
+  bool repeats_from_start = false;       // GOTOS (NC-PARAM-FLOW-7): also a program end
+  bool synchronized_action = false;      // NC-WORD-9: WHEN/WHENEVER/EVERY/FROM/DO … kept as an action
 
   bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
 };
@@ -220,9 +222,10 @@ struct ModalState {
   FeedType feed_type = FeedType::kG94;
   PathMode path_mode = PathMode::kG60;
   Decimal feed;
-  std::int64_t tool = 0;        // 0: no tool active
-  std::int64_t edge = 0;        // 0: D0, no edge active
-  std::int64_t sum_offset = 0;  // DL: 0 none (TOOL-SUM-1)
+  std::int64_t tool = 0;                    // 0: no tool active
+  std::int64_t edge = 0;                    // 0: D0, no edge active
+  std::int64_t sum_offset = 0;              // DL: 0 none (TOOL-SUM-1)
+  bool orientation_transformation = false;  // TRAORI in force (NC-WORD-11)
   Decimal offn;
   // Edge data captured when T or D was programmed (spec TOOL-EDGE-2).
   Decimal edge_radius;  // $TC_DP6
