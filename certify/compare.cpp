@@ -225,10 +225,40 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     PlaneAxes ax = plane_axes(Plane::kG17);
     for (const Block& blk : program)
       if (blk.words.line == line) ax = plane_axes(blk.state.plane);
-    auto [da, db] = tangent(a, ax, true);
-    auto [ta, tb] = tangent(b, ax, false);
+    auto moves = [&](const PathElement& e) {
+      auto [ea, eb] = tangent(e, ax, false);
+      return std::hypot(ea, eb) > 0;
+    };
+    // Infeeds between them do not turn the corner (campaign 20261226, case 804096: a side change
+    // whose approach line meets, past three infeeds in Z, an equidistant 7,000 mm out that the
+    // run never reached: it stopped with an alarm first). Then the programmed line tells.
+    const PathElement* before = &a;
+    const PathElement* after = &b;
+    std::optional<std::pair<double, double>> programmed;
+    if (approach) {
+      std::size_t j = k + 1;
+      while (j < ref.path.size() && !moves(ref.path[j])) ++j;
+      after = j < ref.path.size() ? &ref.path[j] : nullptr;
+      if (!after)
+        for (const Block& blk : program)
+          if (blk.words.line > line && blk.moves_in_plane() && !blk.is_arc()) {
+            programmed = std::pair{coord(blk.end, ax.abscissa).to_double() - coord(blk.start, ax.abscissa).to_double(),
+                                   coord(blk.end, ax.ordinate).to_double() - coord(blk.start, ax.ordinate).to_double()};
+            break;
+          } else if (blk.words.line > line && blk.moves_in_plane()) {
+            break;  // (an arc's tangent needs its centre: the path has it when the run gets there)
+          }
+    } else {
+      std::size_t j = k + 1;
+      while (j > 0 && !moves(ref.path[j - 1])) --j;
+      before = j > 0 ? &ref.path[j - 1] : nullptr;
+    }
+    if (!before || (!after && !programmed)) continue;
+    auto [da, db] = tangent(*before, ax, true);
+    auto [ta, tb] = after ? tangent(*after, ax, false) : *programmed;
     if (std::hypot(da, db) > 0 && std::hypot(ta, tb) > 0)
-      count_corner(c, da, db, ta, tb, a.type == ElementType::kArc || b.type == ElementType::kArc);
+      count_corner(c, da, db, ta, tb,
+                   before->type == ElementType::kArc || (after && after->type == ElementType::kArc));
   }
   // Carriers that nearly touch (a gap g, mm) cross at about sqrt(2 |g| / R), R <= L: the corner's
   // deflection may be large while the intersection is as ill-conditioned as a tangency. A gap
