@@ -156,8 +156,44 @@ std::optional<std::vector<Point>> line_crossing_at_an_end(const PathPiece& held,
 }
 }  // namespace
 
+void OnCarrierFacts::add(const Point& p, const Carrier<Kernel>& k) {
+  facts_.emplace_back(p, k);
+  if (facts_.size() > kKeep) facts_.pop_front();
+}
+
+namespace {
+// Two carriers are one: the same numbers, or (after the floating-point filter agrees) exactly equal
+// centre and radius, or parallel directions through each other's point.
+bool same_carrier(const Carrier<Kernel>& u, const Carrier<Kernel>& v) {
+  if (u.circle != v.circle) return false;
+  auto near = [](const FT& a, const FT& b) {
+    double x = rough(a), y = rough(b);
+    return std::fabs(x - y) <= 1e-6 * std::max({1.0, std::fabs(x), std::fabs(y)});
+  };
+  if (u.circle) {
+    if (!near(u.point.x(), v.point.x()) || !near(u.point.y(), v.point.y()) || !near(u.radius, v.radius)) return false;
+    return u.point == v.point && u.radius == v.radius;
+  }
+  double cross = rough(CGAL::determinant(u.direction, v.direction));
+  double scale = rough(u.direction.squared_length()) + rough(v.direction.squared_length());
+  if (std::fabs(cross) > 1e-6 * scale) return false;
+  return CGAL::sign(CGAL::determinant(u.direction, v.direction)) == CGAL::ZERO &&
+         CGAL::sign(CGAL::determinant(u.direction, v.point - u.point)) == CGAL::ZERO;
+}
+}  // namespace
+
+bool OnCarrierFacts::known(const Point& q, const Carrier<Kernel>& c) const {
+  for (const auto& [p, k] : facts_)
+    if (same_point(p, q) && same_carrier(k, c)) return true;
+  return false;
+}
+
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
-PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from) {
+PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from,
+                             const OnCarrierFacts* facts) {
+  auto lies_on = [&](const Carrier<Kernel>& c, const Point& q) {
+    return (facts && facts->known(q, c)) || on_carrier(c, q);
+  };
   PieceCrossing out;
   if (!held.arc && held.a == held.b) return out;
   Carrier<Kernel> h = held.carrier();
@@ -171,9 +207,9 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     std::vector<Point> xs;
     if (h.circle || c.circle) {  // (two lines: one intersection, cheap; or parallel, below)
       for (const Point* q : {&held.a, &held.b})
-        if (xs.empty() && on_carrier(c, *q)) xs = intersections_through(h, c, *q);
+        if (xs.empty() && lies_on(c, *q)) xs = intersections_through(h, c, *q);
       for (const Point* q : {&e.a, &e.b})
-        if (xs.empty() && on_carrier(h, *q)) xs = intersections_through(h, c, *q);
+        if (xs.empty() && lies_on(h, *q)) xs = intersections_through(h, c, *q);
     }
     std::optional<std::vector<Point>> at_end;
     if (!h.circle && !c.circle) at_end = line_crossing_at_an_end(held, e, h, c);

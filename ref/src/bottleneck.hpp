@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -72,6 +73,22 @@ inline FT lowered(const FT& slack, const std::optional<FT>& near) {
   return near && rough(-*near) < rough(slack) ? -*near : slack;
 }
 
-PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from = 0);
+// Points known to lie on a carrier because they were built there (an intersection, a cut): the
+// same numbers met again are on it without the exact zero test, which for nested radicals costs
+// CORE seconds to minutes (campaign 20261226, case 597: 8 s for a SAR element's end on the circle
+// it had been cut at). Holds the last kKeep facts: the collision window's reach, never the program.
+class OnCarrierFacts {
+ public:
+  void add(const Point& p, const Carrier<Kernel>& k);
+  // q is one of the points added (the very same numbers) on a carrier equal to c.
+  bool known(const Point& q, const Carrier<Kernel>& c) const;
+
+ private:
+  static constexpr std::size_t kKeep = 256;
+  std::deque<std::pair<Point, Carrier<Kernel>>> facts_;
+};
+
+PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from = 0,
+                             const OnCarrierFacts* facts = nullptr);
 
 }  // namespace cutcom::ref

@@ -61,6 +61,7 @@ std::optional<Compensation::Entry> Compensation::entry_of(const Block& m, const 
   }
   Carrier<Kernel> u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
   std::optional<Point> x = nearest_intersection(u, v, prev.b, next.start_dir);
+  if (x) facts_.add(*x, u), facts_.add(*x, v);
   if (!x) {
     decide("TRC-CD-2", line, "no-entry", u.circle || v.circle ? exact_mm(carrier_gap<Kernel>(u, v)) : "-inf");
     return std::nullopt;
@@ -95,6 +96,7 @@ bool Compensation::outer_corner_is_circle(const Block& m, const ContourElement& 
   }
   Carrier<Kernel> u = carrier_of(prev, prev_radius), v = carrier_of(next, next_radius);
   g451_point_ = nearest_intersection(u, v, prev.b, next.start_dir);
+  if (g451_point_) facts_.add(*g451_point_, u), facts_.add(*g451_point_, v);
   // The carriers may just touch: the margin is their gap (a knife edge at 0).
   decide("TRC-CD-2", m.words.line, g451_point_ ? "g451-meets" : "g451-misses", exact_mm(carrier_gap<Kernel>(u, v)));
   return !g451_point_;
@@ -131,11 +133,13 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
     compared = true;
     if (!entry) return std::nullopt;
     bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi && !looking_;
-    PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0);
+    PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0, &facts_);
     // The largest near miss (picked by the filter's value: see bottleneck.hpp).
     keep_largest(near, c.near_miss);
     overlap = overlap || c.overlap;
     if (!c.point) return std::nullopt;
+    facts_.add(*c.point, held.carrier());  // the cut point ends the held piece and starts the entry's
+    facts_.add(*c.point, entry->pieces[static_cast<std::size_t>(c.entry_piece)].carrier());
     return c;
   };
   const std::deque<HeldRecord>& records = held_.records();
@@ -244,10 +248,13 @@ bool Compensation::search_further_back(const Block& b, const EdgeCurve& curve) {
     const HeldRecord& r = records[i];
     if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
     compared = true;
-    PieceCrossing c = piece_crossing(piece_of(r), aux);
+    PathPiece held = piece_of(r);
+    PieceCrossing c = piece_crossing(held, aux, 0, &facts_);
     keep_largest(near, c.near_miss);
     overlap = overlap || c.overlap;
     if (!c.point) continue;
+    facts_.add(*c.point, held.carrier());
+    facts_.add(*c.point, aux[0].carrier());
     FT margin = lowered(c.slack, near);
     decide("TRC-CD-5", b.words.line, "earlier-block", exact_mm(margin));
     const Point x = *c.point;

@@ -372,6 +372,7 @@ class Compensation {
   PathSink& sink_;
   Trace& trace_;
   CollisionWindow& held_;  // stage 3: where output goes (collision_window.hpp)
+  OnCarrierFacts facts_;   // TRC-CD-3: cut points and corners, on the carriers they were built on
   ExactPath& path;         // rounds points as the output does
   std::deque<int> seq_;    // per kept block: the window's ordinal of the last traversing block up to it (TRC-CD-1)
   std::deque<char> actions_done_;  // per kept block
