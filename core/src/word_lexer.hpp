@@ -327,6 +327,8 @@ class WordLexer {
   bool reference_axis(const std::string& n, std::size_t at);
   void plane_axis_after_rotary(std::size_t at);
   void orientation(const std::string& n, std::size_t at);
+  // `(…)` after a word, if there: read whole (balanced); false (nothing read) otherwise.
+  bool optional_arguments(const std::string& n, std::size_t at);
   static std::string_view orientation_literal(std::string_view n);
   static std::string area_limit_message(int g) {
     return fmt::format(
@@ -339,6 +341,7 @@ class WordLexer {
   void index_open(const std::string& what);
   void index_close();
   void tool_edge_data(int p, std::size_t at);
+  std::pair<std::int64_t, std::int64_t> tool_edge_index(const std::string& what);
   // $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).
   void tool_name_data(std::size_t at);
   // $TC_SCPkp[t,d]=v, $TC_ECPkp[t,d]=v: sum and setup offsets (TOOL-SUM-1).

@@ -128,17 +128,8 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   for (const auto& [name, f] : kFrames)
     if (n == name) return set_once(out_.frame, f, "a frame instruction", at);  // NC-FRAME-1
   switch (classify_named_word(n)) {
-    case NamedWord::kActionKeyword: {  // NC-WORD-5/6: SOFT, FFWON, CFC, TRAFOOF, …
-      // (with the axes it acts on: BRISKA(X,Y), TOFFOF())
-      std::size_t after = i_;
-      skip_space();
-      if (peek() != '(') {
-        i_ = after;
-        return add_text_action(n, at);
-      }
-      balanced_arguments(n, at);
-      return add_text_action(written(at), at);
-    }
+    case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, …, with its axes: BRISKA(X,Y), TOFFOF()
+      return add_text_action(optional_arguments(n, at) ? written(at) : n, at);
     case NamedWord::kActionValue: {  // NC-WORD-5/3/7: ADIS=, LIMS=, SPOS=, SPOS[n]=, ACC[X]=
       if (peek() == '[') {
         ++i_;
@@ -175,8 +166,7 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
                       "DIAMON/DIAMOF/DIAM90", at);
     case NamedWord::kCycle:  // NC-CYCLE-1: a standard cycle is not simulated
       if (!out_.not_simulated.empty()) fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, n), at);
-      skip_space();
-      if (peek() == '(') balanced_arguments(n, at);
+      optional_arguments(n, at);
       out_.not_simulated = n;
       return;
     case NamedWord::kModalCall: {  // NC-CYCLE-2: MCALL CYCLEnn(…) / MCALL alone
@@ -278,14 +268,9 @@ void WordLexer::keyword(const std::string& n, std::size_t at) {
     return;
   }
   if (n == "TRAORI" || n == "TRAFOOF") {  // NC-WORD-11: the 5-axis transformation on (its number) or off
-    std::size_t after = i_;
-    skip_space();
-    if (n == "TRAORI" && peek() == '(')
-      balanced_arguments(n, at);
-    else
-      i_ = after;
+    bool arguments = n == "TRAORI" && optional_arguments(n, at);
     set_once(out_.orientation_transformation, n == "TRAORI", "TRAORI/TRAFOOF", at);
-    return add_text_action(written(at), at);
+    return add_text_action(arguments ? written(at) : n, at);
   }
   keyword_value(n, at);
 }
@@ -404,6 +389,17 @@ void WordLexer::rotary_axis(const std::string& n, std::size_t at) {
   action_value(n);
   rotary_name_ = name;
   add_text_action(written(at), at);
+}
+
+bool WordLexer::optional_arguments(const std::string& n, std::size_t at) {
+  std::size_t after = i_;
+  skip_space();
+  if (peek() != '(') {
+    i_ = after;
+    return false;
+  }
+  balanced_arguments(n, at);
+  return true;
 }
 
 // NC-WORD-11: the tool's orientation under TRAORI: Euler or RPY angles A2= B2= C2=, a direction

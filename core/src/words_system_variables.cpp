@@ -53,8 +53,8 @@ void WordLexer::index_close() {
   ++i_;
 }
 
-void WordLexer::tool_edge_data(int p, std::size_t at) {
-  std::string what = fmt::format("$TC_DP{}", p);
+// [t,d]= after a tool edge's variable: its tool and edge numbers.
+std::pair<std::int64_t, std::int64_t> WordLexer::tool_edge_index(const std::string& what) {
   index_open(what);
   std::int64_t t = digits("tool number");
   skip_space();
@@ -64,6 +64,12 @@ void WordLexer::tool_edge_data(int p, std::size_t at) {
   std::int64_t d = digits("edge number");
   index_close();
   if (!equals()) fail("'=' expected");
+  return {t, d};
+}
+
+void WordLexer::tool_edge_data(int p, std::size_t at) {
+  std::string what = fmt::format("$TC_DP{}", p);
+  auto [t, d] = tool_edge_index(what);
   Decimal v = number(what + " value");
   if (t < 1 || d < 1) fail("tool and edge numbers start at 1", at);
   if (d > 32000) fail("edge numbers go up to 32000", at);
@@ -83,15 +89,7 @@ void WordLexer::sum_offset_data(const std::string& full, std::size_t at) {
     fail(fmt::format("'{}' is not a sum offset parameter ({}13 … {}71: 10 × DL + parameter 3 … 11)", full,
                      full.substr(0, 7), full.substr(0, 7)),
          at);
-  index_open(full);
-  digits("tool number");
-  skip_space();
-  if (peek() != ',') fail(fmt::format("',' expected between tool and edge number (write {}[t,d])", full));
-  ++i_;
-  skip_space();
-  digits("edge number");
-  index_close();
-  if (!equals()) fail("'=' expected");
+  tool_edge_index(full);
   Decimal v = number(full + " value");
   if (p == 6 && !v.is_zero())
     fail(fmt::format("{}: a sum offset of the radius is SINUMERIK NC that cutcom does not simulate (the sum offsets "

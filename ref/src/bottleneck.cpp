@@ -162,8 +162,9 @@ void OnCarrierFacts::add(const Point& p, const Carrier<Kernel>& k) {
 }
 
 namespace {
-// Two carriers are one: the same numbers, or (after the floating-point filter agrees) exactly equal
-// centre and radius, or parallel directions through each other's point.
+// Two carriers are one: exactly equal centre and radius, or parallel directions through each
+// other's point. The floating-point filter only turns clearly different ones away early; a wrong
+// "different" costs time, never a decision (on_carrier then decides exactly).
 bool same_carrier(const Carrier<Kernel>& u, const Carrier<Kernel>& v) {
   if (u.circle != v.circle) return false;
   auto near = [](const FT& a, const FT& b) {
