@@ -239,15 +239,13 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
       std::size_t j = k + 1;
       while (j < ref.path.size() && !moves(ref.path[j])) ++j;
       after = j < ref.path.size() ? &ref.path[j] : nullptr;
-      if (!after)
-        for (const Block& blk : program)
-          if (blk.words.line > line && blk.moves_in_plane() && !blk.is_arc()) {
-            programmed = std::pair{coord(blk.end, ax.abscissa).to_double() - coord(blk.start, ax.abscissa).to_double(),
-                                   coord(blk.end, ax.ordinate).to_double() - coord(blk.start, ax.ordinate).to_double()};
-            break;
-          } else if (blk.words.line > line && blk.moves_in_plane()) {
-            break;  // (an arc's tangent needs its centre: the path has it when the run gets there)
-          }
+      auto next = after ? program.end() : std::find_if(program.begin(), program.end(), [&](const Block& blk) {
+        return blk.words.line > line && blk.moves_in_plane();
+      });
+      // (An arc's tangent needs its centre: the path has it when the run gets there.)
+      if (next != program.end() && !next->is_arc())
+        programmed = std::pair{coord(next->end, ax.abscissa).to_double() - coord(next->start, ax.abscissa).to_double(),
+                               coord(next->end, ax.ordinate).to_double() - coord(next->start, ax.ordinate).to_double()};
     } else {
       std::size_t j = k + 1;
       while (j > 0 && !moves(ref.path[j - 1])) --j;
@@ -257,8 +255,7 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     auto [da, db] = tangent(*before, ax, true);
     auto [ta, tb] = after ? tangent(*after, ax, false) : *programmed;
     if (std::hypot(da, db) > 0 && std::hypot(ta, tb) > 0)
-      count_corner(c, da, db, ta, tb,
-                   before->type == ElementType::kArc || (after && after->type == ElementType::kArc));
+      count_corner(c, da, db, ta, tb, before->type == ElementType::kArc || (after && after->type == ElementType::kArc));
   }
   // Carriers that nearly touch (a gap g, mm) cross at about sqrt(2 |g| / R), R <= L: the corner's
   // deflection may be large while the intersection is as ill-conditioned as a tangency. A gap
