@@ -62,7 +62,9 @@ struct ControlData {
   std::vector<std::string> search_path;  // NC-PARAM-SUB-1: the program's folder, then --search-path
   std::vector<std::pair<std::string, std::string>> definitions;  // NC-PARAM-VAR-3: (file, text)
   std::optional<std::string> arguments;                          // NC-PARAM-SUB-5
+  std::map<std::string, std::string> machine_values;             // NC-PARAM-SYS-4
   void into(cutcom::ProgramReader& reader) const {
+    reader.set_machine_values(machine_values);
     reader.tools() = tools;
     reader.offsets() = offsets;
     reader.set_limits(limits);
@@ -99,6 +101,17 @@ void load_file(Table& table, const std::string& file, const char* what) {
   }
 }
 
+cutcom::MachineData machine_data(const RunOptions& o) {
+  cutcom::MachineData md;
+  for (const auto& f : o.md_files) {
+    std::ifstream in(f);
+    if (!in) throw cutcom::MachineDataError(fmt::format("cannot open machine data file '{}'", f));
+    md.load(in, f);
+  }
+  for (const auto& a : o.md) md.set_assignment(a);
+  return md;
+}
+
 ControlData control_data(const RunOptions& o) {
   ControlData c;
   for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
@@ -120,22 +133,12 @@ ControlData control_data(const RunOptions& o) {
     c.definitions.emplace_back(f, text.str());
   }
   c.arguments = o.arguments;
+  c.machine_values = machine_data(o).program_values();
   std::filesystem::path folder =
       o.program == "-" ? std::filesystem::path(".") : std::filesystem::path(o.program).parent_path();
   c.search_path.push_back(folder.empty() ? "." : folder.string());
   for (const auto& d : o.search_path) c.search_path.push_back(d);
   return c;
-}
-
-cutcom::MachineData machine_data(const RunOptions& o) {
-  cutcom::MachineData md;
-  for (const auto& f : o.md_files) {
-    std::ifstream in(f);
-    if (!in) throw cutcom::MachineDataError(fmt::format("cannot open machine data file '{}'", f));
-    md.load(in, f);
-  }
-  for (const auto& a : o.md) md.set_assignment(a);
-  return md;
 }
 
 // Passes everything on and keeps the numbers of the alarms raised, for a hint after the run.

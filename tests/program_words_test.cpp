@@ -188,7 +188,7 @@ TEST(ProgramWords, UnderTraoriTheToolTipFollowsTheProgram) {
   EXPECT_THROW(read("TRAORI\nG41 T1 D1 G1 X10 F100\nX20 A3=1\n"), InputError);
   EXPECT_THROW(read("G41 T1 D1 G1 X10 F100\nTRAORI\n"), InputError);
   EXPECT_THROW(read("G1 X10 A3=1 F100\n"), InputError);
-  EXPECT_THROW(read("TRAORI\nTRAFOOF\nG1 X10 A30 F100\n"), InputError);
+  EXPECT_THROW(read("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nTRAORI\nTRAFOOF\nG1 G41 X10 A30 F100\n"), InputError);
 }
 
 // covers: NC-WORD-8 NC-ERR-3
@@ -205,9 +205,20 @@ TEST(ProgramWords, RotaryAxesPositionAsActions) {
   EXPECT_EQ(actions(rapid[0]), (std::vector<std::string>{"A0", "C=ACP(30)"}));
   EXPECT_EQ(rapid[0].end.z.to_string(), "10");
   EXPECT_NE(rapid[0].notice.find("positions during this rapid move"), std::string::npos) << rapid[0].notice;
-  // Anywhere else with X, Y or Z: simultaneous 4/5-axis motion, not simulated.
-  for (const char* bad : {"G1 X10 A30 F100\n", "G1 A30 X10 F100\n", "POS[X]=10\n",
-                          "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG0 G41 X10 A30\n"}) {
+  // In G1/G2/G3 without compensation X, Y, Z move as programmed while the axis turns, noted.
+  auto turning = read("G0 X0 Y0 Z0\nG1 X10 A30 F100\nG3 C=IC(90) X0 Y10 CR=10\nTRANS X5 B10\n");
+  ASSERT_EQ(turning.size(), 4u);
+  EXPECT_EQ(actions(turning[1]), (std::vector<std::string>{"A30"}));
+  EXPECT_EQ(turning[1].end.x.to_string(), "10");
+  EXPECT_EQ(turning[2].state.motion, Motion::kArcCcw);
+  EXPECT_EQ(actions(turning[2]), (std::vector<std::string>{"C=IC(90)"}));
+  for (int k : {1, 2})
+    EXPECT_NE(turning[k].notice.find("turns while X, Y and Z move"), std::string::npos) << turning[k].notice;
+  EXPECT_NE(turning[3].notice.find("the frame's value for the rotary axis B"), std::string::npos) << turning[3].notice;
+  // With compensation (4/5-axis motion along a compensated contour), or POS of a plane axis: not simulated.
+  for (const char* bad : {"$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG1 G41 X10 A30 F100\n", "POS[X]=10\n",
+                          "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG0 G41 X10 A30\n",
+                          "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG1 G41 X10 F100\nA30 Y5\n"}) {
     try {
       read(bad);
       ADD_FAILURE() << "accepted: " << bad;

@@ -14,6 +14,7 @@
 #include "interpreter_lookup.hpp"
 #include "interpreter_text.hpp"
 #include "nc_expression.hpp"
+#include "nc_vocabulary.hpp"
 
 namespace cutcom {
 
@@ -248,8 +249,9 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
                    (upper(s[i]) == 'P' && i + 1 < s.size() && (is_digit(s[i + 1]) || s[i + 1] == '='));
     if (!next_ok) return false;
     // A word the block reader knows (KONT, CDON, G17, X10, CYCLE81, …) is never a call, whatever
-    // files the folders hold.
-    if (!l_number && reader_knows(n)) return false;
+    // files the folders hold; but E_…/F_… are ShopMill cycles only by their prefix (NC-CYCLE-1), so
+    // the program's own subprogram of that name is called.
+    if (!l_number && reader_knows(n) && !(is_shopmill_cycle_name(n) && find_subprogram(n))) return false;
     if (!find_subprogram(n)) {
       if (l_number)
         throw InputError(

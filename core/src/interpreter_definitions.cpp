@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "cutcom/interpreter.hpp"
@@ -119,4 +120,26 @@ void Interpreter::define(std::string_view s, std::size_t i, std::map<std::string
     return;
   }
 }
+}  // namespace cutcom
+
+namespace cutcom {
+
+// NC-PARAM-SYS-4: machine and setting data by their $ names, as the machine data gave them.
+void Interpreter::set_machine_values(const std::map<std::string, std::string>& values) {
+  machine_values_.clear();
+  for (const auto& [name, text] : values) {
+    if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
+      machine_values_[name] = NcValue::string(text.substr(1, text.size() - 2));
+      continue;
+    }
+    double v = 0;
+    std::string_view t = text;
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size())
+      throw InputError(0, 0, fmt::format("{}: '{}' is neither a number nor a \"quoted\" text", name, text));
+    machine_values_[name] = NcValue::real(v);
+  }
+}
+
 }  // namespace cutcom

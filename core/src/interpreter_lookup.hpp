@@ -52,6 +52,7 @@ class InterpreterLookup : public ExpressionParser::Lookup {
       const auto& args = it_.cx().args;
       return NcValue::boolean(k < args.size() && args[k].has_value());
     }
+    if (is_machine_or_setting_datum(n)) return machine_datum(n, idx, at);  // NC-PARAM-SYS-4
     if (!n.empty() && n[0] == '$') {
       std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
       bool frame = n == "$P_PFRAME" || n == "$P_UIFR" || n == "$P_IFRAME";
@@ -70,6 +71,30 @@ class InterpreterLookup : public ExpressionParser::Lookup {
     Interpreter::Variable* v = it_.find_variable(n);
     if (!v) fail(at, fmt::format("undefined variable '{}'", n));
     return v->values[offset(n, *v, idx, at)];
+  }
+  // NC-PARAM-SYS-4: $MN_ $MC_ $MA_ $SN_ $SC_ $SA_: machine and setting data.
+  static bool is_machine_or_setting_datum(std::string_view n) {
+    return n.size() > 4 && n[0] == '$' && (n[1] == 'M' || n[1] == 'S') && (n[2] == 'N' || n[2] == 'C' || n[2] == 'A') &&
+           n[3] == '_';
+  }
+  NcValue machine_datum(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) const {
+    std::string key = n;
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      key += k == 0 ? '[' : ',';
+      if (idx[k].type == NcValue::Type::kString)
+        key += idx[k].text;
+      else if (idx[k].number == std::trunc(idx[k].number) && std::abs(idx[k].number) < 1e15)
+        key += fmt::format("{}", static_cast<long long>(idx[k].number));
+      else
+        fail(at, fmt::format("an index of {} must be a whole number or an axis name", n));
+    }
+    if (!idx.empty()) key += ']';
+    auto v = it_.machine_values_.find(key);
+    if (v == it_.machine_values_.end())
+      fail(at, fmt::format("{} is {} data that cutcom has no value for: give it with --md '{}=VALUE' (a number or "
+                           "\"text\", NC-PARAM-SYS-4)",
+                           key, n[1] == 'M' ? "machine" : "setting", key));
+    return v->second;
   }
   bool is_variable(const std::string& n) const override { return it_.find_variable(n) != nullptr; }
 

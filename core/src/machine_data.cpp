@@ -11,6 +11,8 @@ const std::vector<MachineDatumInfo>& machine_data_catalogue() {
   static const std::vector<MachineDatumInfo> k = {
       {"MD20150[47]", "$MC_GCODE_RESET_VALUES[47]", "", "1 (G460), 2 (G461), 3 (G462)",
        "initial setting of G group 48 (approach/retraction behaviour)", "MD-20150-1"},
+      {"MD20150[5]", "$MC_GCODE_RESET_VALUES[5]", "", "1 (G17), 2 (G18), 3 (G19)",
+       "initial setting of G group 6 (working plane; lathes start in G18)", "MD-20150-2"},
       {"MD20202", "$MC_WAB_MAXNUM_DUMMY_BLOCKS", "blocks", "0 .. 50",
        "blocks without traversing motion between a SAR block and the direction-defining block", "MD-20202-1"},
       {"MD20204", "$MC_WAB_CLEARANCE_TOLERANCE", "mm", ">= 0", "tolerance of the SAR direction-reversal check",
@@ -56,8 +58,9 @@ const MachineDatumInfo& lookup(std::string_view name) {
   for (const auto& d : machine_data_catalogue())
     if (u == d.id || u == d.name) return d;
   throw MachineDataError(
-      fmt::format("unknown machine datum '{}' (known: MD20150[47], MD20202, MD20204, MD20210, "
-                  "MD20220, MD20230, MD20240, MD20250, MD20270, MD20272, MD22550, MD21000, MD21010)",
+      fmt::format("unknown machine datum '{}' (known: MD20150[5], MD20150[47], MD20202, MD20204, MD20210, "
+                  "MD20220, MD20230, MD20240, MD20250, MD20270, MD20272, MD22550, MD21000, MD21010; "
+                  "a datum a program reads is given by its $ name: $MN_…, $MC_…, $MA_…, $SN_…, $SC_…, $SA_…)",
                   name));
 }
 
@@ -78,12 +81,48 @@ int count_in(const MachineDatumInfo& d, std::string_view text, int lo, int hi) {
 
 }  // namespace
 
+namespace {
+
+// NC-PARAM-SYS-4: $MN_ $MC_ $MA_ $SN_ $SC_ $SA_ (machine data of the NC, channel, axis; setting
+// data likewise), a name of letters, digits and '_', an optional index [i] or [i,j].
+bool is_readable_datum_name(std::string_view u) {
+  if (u.size() < 5 || u[0] != '$' || (u[1] != 'M' && u[1] != 'S') || u[3] != '_') return false;
+  if (u[2] != 'N' && u[2] != 'C' && u[2] != 'A') return false;
+  std::size_t k = 4;
+  while (k < u.size() && (std::isalnum(static_cast<unsigned char>(u[k])) || u[k] == '_')) ++k;
+  if (k == 4) return false;
+  if (k == u.size()) return true;
+  if (u[k] != '[' || u.back() != ']' || u.size() - k < 3) return false;
+  for (char c : u.substr(k + 1, u.size() - k - 2))
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != ',') return false;
+  return true;
+}
+
+}  // namespace
+
 void MachineData::set(std::string_view name, std::string_view value) {
+  std::string u;
+  for (char c : upper(trim(name)))
+    if (c != ' ' && c != '\t') u += c;
+  bool catalogued = std::any_of(machine_data_catalogue().begin(), machine_data_catalogue().end(),
+                                [&](const MachineDatumInfo& d) { return u == d.id || u == d.name; });
+  if (!catalogued && is_readable_datum_name(u)) {  // NC-PARAM-SYS-4: a value programs read
+    std::string_view v = trim(value);
+    bool text = v.size() >= 2 && v.front() == '"' && v.back() == '"' &&
+                v.substr(1, v.size() - 2).find('"') == std::string_view::npos;
+    if (!text && !Decimal::parse(v).value)
+      throw MachineDataError(fmt::format("{}: '{}' is neither a decimal number nor a \"quoted\" text", u, value));
+    readable[u] = std::string(v);
+    return;
+  }
   const MachineDatumInfo& d = lookup(name);
   std::string_view id = d.id;
   if (id == "MD20150[47]") {
     int v = count_in(d, value, 1, 3);
     group48_reset = v == 1 ? EdgeStrategy::kG460 : v == 2 ? EdgeStrategy::kG461 : EdgeStrategy::kG462;
+  } else if (id == "MD20150[5]") {
+    int v = count_in(d, value, 1, 3);
+    group6_reset = v == 1 ? Plane::kG17 : v == 2 ? Plane::kG18 : Plane::kG19;
   } else if (id == "MD20202") {
     wab_maxnum_dummy_blocks = count_in(d, value, 0, kMaxDummyBlocks);
   } else if (id == "MD20204") {
@@ -139,15 +178,23 @@ void MachineData::load(std::istream& in, const std::string& source_name) {
 ModalState MachineData::initial_state() const {
   ModalState s;
   s.edge_strategy = group48_reset;
+  s.plane = group6_reset;
   s.md_edge_default = cutting_edge_default;
   s.md_sum_offset_default = sum_offset_default;
   s.md_change_on_m6 = tool_change_mode == 1;
   return s;
 }
 
+std::map<std::string, std::string> MachineData::program_values() const {
+  std::map<std::string, std::string> v = readable;
+  for (const auto& d : machine_data_catalogue()) v[std::string(d.name)] = machine_datum_value(*this, d.id);
+  return v;
+}
+
 std::string machine_datum_value(const MachineData& md, std::string_view id) {
   if (id == "MD20150[47]")
     return md.group48_reset == EdgeStrategy::kG460 ? "1" : md.group48_reset == EdgeStrategy::kG461 ? "2" : "3";
+  if (id == "MD20150[5]") return md.group6_reset == Plane::kG17 ? "1" : md.group6_reset == Plane::kG18 ? "2" : "3";
   if (id == "MD20202") return std::to_string(md.wab_maxnum_dummy_blocks);
   if (id == "MD20204") return md.wab_clearance_tolerance.to_string();
   if (id == "MD20210") return md.cutcom_corner_limit.to_string();

@@ -132,6 +132,10 @@ bool all_digits(std::string_view s) {
 
 }  // namespace
 
+bool is_shopmill_cycle_name(std::string_view n) {
+  return (n.substr(0, 2) == "E_" || n.substr(0, 2) == "F_") && n.size() > 2;
+}
+
 bool starts_synchronized_action(std::string_view n) {
   return n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS";
 }
@@ -148,7 +152,7 @@ NamedWord classify_named_word(std::string_view n) {
   for (std::string_view p :
        {std::string_view("CYCLE"), std::string_view("POCKET"), std::string_view("SLOT"), std::string_view("HOLES")})
     if (n.substr(0, p.size()) == p && all_digits(n.substr(p.size()))) return NamedWord::kCycle;
-  if ((n.substr(0, 2) == "E_" || n.substr(0, 2) == "F_") && n.size() > 2) return NamedWord::kCycle;
+  if (is_shopmill_cycle_name(n)) return NamedWord::kCycle;
   for (const Unsupported& u : kUnsupported)
     if (u.word == n) return NamedWord::kNotSimulated;
   return NamedWord::kUnknown;

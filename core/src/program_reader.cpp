@@ -376,9 +376,9 @@ void ProgramReader::resolve(Block& b) {
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
   if (w.side) s.side = *w.side;
-  // NC-WORD-8: a rotary axis with X, Y or Z. In a rapid move without compensation it positions
-  // while the tool travels (3+2 set-ups: the path shows X, Y and Z as programmed); anywhere else it
-  // is simultaneous 4/5-axis motion, not simulated.
+  // NC-WORD-8: a rotary axis with X, Y or Z. Without compensation X, Y and Z move as programmed
+  // while it turns (a notice says what the path is not); with compensation it is 4/5-axis motion
+  // along the contour, not simulated.
   // NC-WORD-11: under TRAORI X, Y, Z are the tool tip in the workpiece system whatever the rotary
   // axes do: without compensation they may move together in any block.
   if (w.orientation_transformation) {
@@ -401,16 +401,26 @@ void ProgramReader::resolve(Block& b) {
                      "system, as programmed",
                      w.rotary_with_plane));
   } else if (!w.rotary_with_plane.empty()) {
-    if (s.motion != Motion::kRapid || s.side != Side::kOff)
+    if (s.side != Side::kOff)
       throw InputError(w.line, w.rotary_column,
-                       fmt::format("the rotary axis {0} moving with X, Y or Z in a block other than a rapid move "
-                                   "without compensation (4/5-axis motion) is SINUMERIK NC that cutcom does not "
-                                   "simulate; {0} alone, or with X, Y, Z in G0 under G40 (or in any block under TRAORI "
-                                   "without compensation), is kept as an action",
+                       fmt::format("the rotary axis {0} moving with X, Y or Z while compensation is active "
+                                   "(4/5-axis motion along a compensated contour) is SINUMERIK NC that cutcom does not "
+                                   "simulate; {0} alone, or with X, Y, Z without compensation, is kept as an action",
                                    w.rotary_with_plane));
-    note(b, "NC-WORD-8",
-         fmt::format("the rotary axis {} positions during this rapid move: the path shows X, Y and Z as programmed",
-                     w.rotary_with_plane));
+    if (w.frame)  // TRANS X… B…: the frame's part for the rotary axis
+      note(b, "NC-WORD-8",
+           fmt::format("the frame's value for the rotary axis {} is kept as an action: the path's frame takes X, Y "
+                       "and Z",
+                       w.rotary_with_plane));
+    else if (s.motion == Motion::kRapid)
+      note(b, "NC-WORD-8",
+           fmt::format("the rotary axis {} positions during this rapid move: the path shows X, Y and Z as programmed",
+                       w.rotary_with_plane));
+    else
+      note(b, "NC-WORD-8",
+           fmt::format("the rotary axis {} turns while X, Y and Z move: the path shows the linear axes as programmed, "
+                       "not the cut on the turning workpiece or head",
+                       w.rotary_with_plane));
   }
   if (w.repeats_from_start)
     note(b, "NC-PARAM-FLOW-7", "GOTOS: the control runs the program again from its start; the path shows one pass");

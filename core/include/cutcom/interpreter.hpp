@@ -105,6 +105,9 @@ class Interpreter {
   // NC-PARAM-SUB-5: the program is a subprogram run on its own with these arguments ("5, 2.5, , 1"),
   // as if called with them.
   void set_arguments(std::string_view list);
+  // NC-PARAM-SYS-4: machine and setting data a program may read ($MC_…, $MN_…, $SC_…), by name
+  // with its index ("$MN_AXCONF_MACHAX_NAME_TAB[0]") and the value's text (a number or "text").
+  void set_machine_values(const std::map<std::string, std::string>& values);
   // NC-PARAM-SUB-6: the reader read a block that moves; a modal call (MCALL) of this level runs
   // its subprogram before the next block.
   void block_moved() {
@@ -291,6 +294,7 @@ class Interpreter {
   std::vector<std::string> search_path_;
   bool subprogram_files_ = true;
   mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
+  std::map<std::string, NcValue, std::less<>> machine_values_;       // NC-PARAM-SYS-4
   std::int64_t backward_jumps_ = 0;
   std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded
   bool control_flow_ = false;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <istream>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -31,11 +32,17 @@ struct MachineData {
   int cutcom_maxnum_check_blocks = 3;                                 // MD20240
   int cutcom_maxnum_dummy_blocks = 5;                                 // MD20250
   EdgeStrategy group48_reset = EdgeStrategy::kG462;                   // MD20150 $MC_GCODE_RESET_VALUES[47]
+  Plane group6_reset = Plane::kG17;                                   // MD20150 $MC_GCODE_RESET_VALUES[5]
   int cutting_edge_default = 1;                                       // MD20270
   int sum_offset_default = 0;                                         // MD20272
   int tool_change_mode = 0;                                           // MD22550
   Decimal circle_error_const = Decimal::from_units(10'000'000);       // MD21000, 0.01 mm
   Decimal circle_error_factor = Decimal::from_units(1'000'000);       // MD21010, 0.001
+
+  // NC-PARAM-SYS-4: any other machine or setting datum a program reads ($MN_…, $MC_…, $MA_…,
+  // $SN_…, $SC_…, $SA_…, with its index: "$MN_AXCONF_MACHAX_NAME_TAB[0]"), as its value's text (a
+  // decimal number or a "quoted" string). cutcom models nothing by them.
+  std::map<std::string, std::string> readable;
 
   // Sets one datum from NAME=VALUE text; NAME is "MD20204" or "$MC_WAB_CLEARANCE_TOLERANCE".
   void set(std::string_view name, std::string_view value);
@@ -44,6 +51,9 @@ struct MachineData {
   void load(std::istream& in, const std::string& source_name);
   // The modal state at program start that machine data decide (group 48 initial setting).
   ModalState initial_state() const;
+  // NC-PARAM-SYS-4: what a program reads by the data's $ names: the modelled data (by their
+  // names in the catalogue) and `readable`.
+  std::map<std::string, std::string> program_values() const;
 };
 
 // Descriptions for documentation and `cutcom md`.

@@ -99,6 +99,8 @@ class ProgramReader : private SystemValues {
   void load_definitions(std::istream& in) { interpreter_.load_definitions(in); }
   // NC-PARAM-SUB-5: the program is a subprogram run on its own with these arguments.
   void set_arguments(std::string_view list) { interpreter_.set_arguments(list); }
+  // NC-PARAM-SYS-4: machine and setting data a program reads by their $ names (MachineData::program_values).
+  void set_machine_values(const std::map<std::string, std::string>& values) { interpreter_.set_machine_values(values); }
 
  private:
   bool read_block(Block& out);
