@@ -123,6 +123,43 @@ TEST(ProgramWords, FeedProfileOrientationAndDialectWordsAreActions) {
   EXPECT_NE(error_of("G291\n").find("ISO dialect"), std::string::npos) << error_of("G291\n");
 }
 
+// covers: NC-WORD-7
+TEST(ProgramWords, WorkingAreaTangentialControlAndFileWordsAreActions) {
+  auto b = read(
+      "WALIMON FL[X]=100 TANG(C,X,Y,1) TANGON(C,0)\nWRITE(R1,\"LOG\",\"A\") CALLPATH(\"/_N_WKS_DIR\")\n"
+      "TANGOF(C) WALIMOF\nG1 X10 F100\n");
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"WALIMON", "FL[X]=100", "TANG(C,X,Y,1)", "TANGON(C,0)"}));
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"WRITE(R1,\"LOG\",\"A\")", "CALLPATH(\"/_N_WKS_DIR\")"}));
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"TANGOF(C)", "WALIMOF"}));
+  EXPECT_EQ(b[3].end.x.to_string(), "10");
+}
+
+// covers: NC-WORD-12
+TEST(ProgramWords, ThreadCuttingAndTappingAreStraightMoves) {
+  auto b = read(
+      "G18 G0 X20 Z5\nG33 Z-20 K1.5 SF=45\nZ-30 K1.5 DITE=2\nG0 X30\nG17 G0 X50 Y50 Z5\n"
+      "G331 Z-10 K1.5 S500\nR1=$P_GG[1]\nG332 Z5 K1.5\nG1 X=R1 F100\n");
+  ASSERT_EQ(b.size(), 8u);  // (R1=… alone is no block)
+  EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"G33", "SF=45", "K1.5"}));
+  EXPECT_NE(b[1].notice.find("G33: thread cutting"), std::string::npos) << b[1].notice;
+  EXPECT_EQ(b[1].state.motion, Motion::kLinear);
+  EXPECT_FALSE(b[1].is_arc());
+  EXPECT_EQ(b[1].end.z.to_string(), "-20");
+  EXPECT_EQ(b[1].end.x.to_string(), "20");
+  // Modal: the next block is a thread too, its K a pitch; G0 ends it.
+  EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"DITE=2", "K1.5"}));
+  EXPECT_TRUE(b[2].notice.empty()) << b[2].notice;
+  EXPECT_EQ(b[3].state.motion, Motion::kRapid);
+  EXPECT_NE(b[5].notice.find("G331: tapping"), std::string::npos) << b[5].notice;
+  EXPECT_EQ(b[5].end.z.to_string(), "-10");
+  EXPECT_EQ(b[7].end.x.to_string(), "11");  // $P_GG[1] read under G331
+  // After G1 a K is a circle's word again; a thread under compensation is not simulated.
+  EXPECT_NE(error_of("G33 Z-5 K1\nG1 Z-10 K1\n").find("without G2/G3"), std::string::npos);
+  EXPECT_NE(error_of("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG1 G41 X10 F100\nG33 Z-5 K1\n").find("not simulate"),
+            std::string::npos);
+}
+
 // covers: NC-WORD-10
 TEST(ProgramWords, ProgrammedToolLengthOffsetsAreActions) {
   auto b = read("TOFFON(Z,1.5) TOFFL=2 TOFF[X]=0.5\nG1 X10 F100\nTOFFOF() TOFFOF\n");

@@ -121,7 +121,7 @@ TEST(Reader, BadInputNamesLineAndColumn) {
       {"G1 X10\nG1 Q5\n", 2, 4, "'Q' is not a SINUMERIK word cutcom knows"},
       {"G1 X10 X20\n", 1, 8, "X programmed twice"},
       {"G1 G2 X1\n", 1, 4, "two G codes of the motion group"},
-      {"G33 X1\n", 1, 1, "'G33' is SINUMERIK NC that cutcom does not simulate"},
+      {"G5 X1\n", 1, 1, "'G5' is SINUMERIK NC that cutcom does not simulate"},
       {"R1000=5\n", 1, 1, "R parameter R1000 does not exist"},
       {"G1 R_T=5\n", 1, 4, "'R_T' is not a SINUMERIK word cutcom knows"},
       {"G1 X=R1+XYZ\n", 1, 9, "undefined variable 'XYZ'"},

@@ -26,7 +26,9 @@ constexpr std::string_view kActionKeywords[] = {
     "FLIN", "FCUB", "FENDNORM", "CPRECON", "CPRECOF", "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "LFON", "LFOF",
     "DRFOF",
     // NC-WORD-10: tool length offsets: the tool tip stays on the programmed path
-    "TOFFOF"};
+    "TOFFOF",
+    // NC-WORD-7: the working area limitation on and off
+    "WALIMON", "WALIMOF"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
                                               // NC-WORD-7: compressor tolerances, axis dynamics
                                               "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM",
@@ -37,7 +39,11 @@ constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS",
                                               // NC-WORD-7: programmable override, rotary feed radius
                                               "OVR", "FGREF",
                                               // NC-WORD-10: tool length offsets, programmed
-                                              "TOFFL", "TOFF"};
+                                              "TOFFL", "TOFF",
+                                              // NC-WORD-12: thread start angle, run-in and run-out
+                                              "SF", "DITS", "DITE",
+                                              // NC-WORD-7: an axis's speed limit
+                                              "FL"};
 constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
                                              // NC-WORD-8: the rotary axes set to an orientation
                                              "ORIRESET",
@@ -49,7 +55,10 @@ constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", 
                                              // NC-WORD-7: waiting for positioning axes
                                              "WAITP",
                                              // NC-WORD-10: tool length offsets, programmed
-                                             "TOFFON"};
+                                             "TOFFON",
+                                             // NC-WORD-7: tangential follow-up of a rotary axis, a
+                                             // file written, the subprograms' search path
+                                             "TANG", "TANGON", "TANGOF", "WRITE", "CALLPATH"};
 
 // Known SINUMERIK words cutcom does not simulate, and why (the message names the family).
 struct Unsupported {

@@ -373,6 +373,7 @@ void ProgramReader::resolve(Block& b) {
   if (w.cw().circle_definition) circle_definition_ = *w.cw().circle_definition;
   if (w.cw().rndm) rounding_modal_ = length(*w.cw().rndm);  // NC-CONTOUR-2
   if (w.motion) s.motion = *w.motion;
+  if (w.motion || w.cw().circle_definition) thread_ = w.thread ? *w.thread : 0;  // NC-WORD-12
   if (w.plane) s.plane = *w.plane;
   if (w.absolute) s.absolute = *w.absolute;
   if (w.side) s.side = *w.side;
@@ -581,6 +582,29 @@ void ProgramReader::resolve(Block& b) {
     for (AxisWord& aw : w.axis) aw.present = false;                        // NC-FRAME-1: the frame's values, not a move
   if (w.programs_any_axis() || polar_move(w)) interpreter_.block_moved();  // NC-PARAM-SUB-6: MCALL
 
+  // NC-WORD-12: under G33 … G332 I, J, K are the thread's pitches, kept as actions; the block is a
+  // straight move. A thread under compensation is not simulated.
+  if (thread_ != 0) {
+    if (s.side != Side::kOff)
+      fail(
+          fmt::format("thread cutting or tapping (G{}) with tool radius compensation G41/G42 in force is SINUMERIK "
+                      "NC that cutcom does not simulate (deselect with G40 first)",
+                      thread_));
+    for (int a = 0; a < 3; ++a) {
+      AxisWord& pitch = w.centre[static_cast<std::size_t>(a)];
+      if (!pitch.present) continue;
+      if (w.aux_count == BlockWords::kMaxAux) fail("too many actions in one block");
+      AuxFunction t;
+      t.address = 0, t.text = fmt::format("{}{}", "IJK"[a], pitch.value.to_string());
+      w.aux[static_cast<std::size_t>(w.aux_count++)] = t;
+      pitch.present = false;
+    }
+    if (w.thread && w.programs_any_axis())
+      note(b, "NC-WORD-12",
+           fmt::format("G{}: {}; the path shows the straight move as programmed", thread_,
+                       thread_ == 331 || thread_ == 332 ? "tapping at the pitch's feed"
+                                                        : "thread cutting at the pitch's feed"));
+  }
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
   bool has_centre = w.centre[0].present || w.centre[1].present || w.centre[2].present;
   b.centre.reset();

@@ -71,6 +71,8 @@ std::optional<double> ProgramReader::g_group_value(double group) const {
   switch (static_cast<int>(group) == group ? static_cast<int>(group) : -1) {
     case 1:  // G0 G1 G2 G3 CIP … CT
       if (circle_definition_) return *circle_definition_ == CircleDefinition::kCip ? 5.0 : 15.0;
+      if (thread_ != 0)  // G33 10, G331 11, G332 12, G34 16, G35 17
+        return thread_ == 33 ? 10.0 : thread_ == 331 ? 11.0 : thread_ == 332 ? 12.0 : thread_ == 34 ? 16.0 : 17.0;
       return number(state_.motion);
     case 6:  // G17 G18 G19
       return number(state_.plane);

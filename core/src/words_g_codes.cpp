@@ -28,6 +28,15 @@ void WordLexer::g_code(std::size_t at) {
     case 3:
       if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
       return group(o.motion, Motion::kArcCcw, "motion");
+    case 33:
+    case 34:
+    case 35:
+    case 331:
+    case 332:  // NC-WORD-12: thread cutting and tapping: a straight move (the pitch is the reader's)
+      if (o.cw().circle_definition) fail("two G codes of the motion group in one block", at);
+      group(o.motion, Motion::kLinear, "motion");
+      o.thread = static_cast<int>(g);
+      return add_text_action(fmt::format("G{}", g), at);
     case 4:  // NC-WORD-4: dwell; its F or S is the time or the revolutions
       g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       o.dwell = true;

@@ -179,6 +179,7 @@ class ProgramReader : private SystemValues {
   std::array<Decimal, 2> pole_{};                      // NC-POLAR-1: in the frame's system, plane abscissa/ordinate
   Decimal polar_angle_, polar_radius_;                 // NC-POLAR-2: the last AP and RP
   std::optional<CircleDefinition> circle_definition_;  // CIP/CT in force (motion group)
+  int thread_ = 0;                                     // NC-WORD-12: G33 G34 G35 G331 G332 in force, else 0
   Decimal rounding_modal_;                             // RNDM (0: off)
   Decimal corner_feed_modal_;                          // FRCM (0: off)
   std::optional<Block> pending_;                       // NC-CONTOUR-*: held until the next element
