@@ -616,6 +616,12 @@ TEST(Parametric, StringFunctionsAndMoreSystemVariables) {
   EXPECT_EQ(end_x("G1 F250\nOFFN=0.5\nG1 X=$P_F+$P_OFFN\n"), "250.5");
   EXPECT_EQ(end_x("$TC_DP3[1,1]=150\n$TC_DP6[1,1]=4\nG1 X=$TC_DP3[1,1]+$TC_DP6[1,1]+$TC_DP12[1,1] F100\n"), "154");
   EXPECT_EQ(error_line("R1=$TC_DP3[7,1]\n", "tool 7 has no edge 1"), 1);
+  // $TC_TP2[t]: the tool's name, a STRING.
+  EXPECT_EQ(
+      end_x(
+          "$TC_TP2[3]=\"ROUGH_D16\"\nT3\nIF $TC_TP2[$P_TOOLNO]==\"ROUGH_D16\"\nG1 X=STRLEN($TC_TP2[3]) F100\nENDIF\n"),
+      "9");
+  EXPECT_EQ(error_line("R1=STRLEN($TC_TP2[4])\n", "tool 4 has no name"), 1);
   // $P_TOOLL[n]: the active edge's length n with its wear; ISVAR; SPRINT.
   EXPECT_EQ(end_x("$TC_DP1[1,1]=120\n$TC_DP3[1,1]=150\n$TC_DP12[1,1]=-0.25\nT1 D1\nG1 X=$P_TOOLL[1] F100\n"), "149.75");
   EXPECT_EQ(end_x("DEF REAL AA\nG1 X=ISVAR(\"AA\")+ISVAR(\"R7\")*2+ISVAR(\"$P_TOOLR\")*4+ISVAR(\"BB\")*8 F100\n"), "7");

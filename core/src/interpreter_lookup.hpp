@@ -53,6 +53,15 @@ class InterpreterLookup : public ExpressionParser::Lookup {
       return NcValue::boolean(k < args.size() && args[k].has_value());
     }
     if (is_machine_or_setting_datum(n)) return machine_datum(n, idx, at);  // NC-PARAM-SYS-4
+    if (n == "$TC_TP2") {                                                  // NC-PARAM-SYS-1: the tool's name
+      if (idx.size() != 1 || idx[0].type == NcValue::Type::kString)
+        fail(at, "$TC_TP2 takes one index, the tool number");
+      std::optional<std::string> name = it_.system_ ? it_.system_->tool_name(idx[0].number) : std::nullopt;
+      if (!name)
+        fail(at, fmt::format("$TC_TP2[{}]: tool {} has no name ($TC_TP2[t]=\"NAME\" or --tools)", idx[0].number,
+                             idx[0].number));
+      return NcValue::string(*name);
+    }
     if (!n.empty() && n[0] == '$') {
       std::optional<double> v = it_.system_ ? it_.system_->system_value(n, idx) : std::nullopt;
       bool frame = n == "$P_PFRAME" || n == "$P_UIFR" || n == "$P_IFRAME";

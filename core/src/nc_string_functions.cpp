@@ -46,8 +46,8 @@ bool ExpressionParser::string_function(const std::string& n, const std::vector<N
              name.find_first_not_of("0123456789", 1) == std::string::npos;
     bool known = r || lookup_.is_variable(name);
     if (!known && !name.empty() && name[0] == '$') {
-      static constexpr std::string_view kIndexed[] = {"$TC_DP",   "$P_EP",   "$AA_IW",    "$P_GG",    "$P_AD",
-                                                      "$P_TOOLL", "$P_UIFR", "$P_PFRAME", "$P_SUBPAR"};
+      static constexpr std::string_view kIndexed[] = {"$TC_DP", "$TC_TP2",  "$P_EP",   "$AA_IW",    "$P_GG",
+                                                      "$P_AD",  "$P_TOOLL", "$P_UIFR", "$P_PFRAME", "$P_SUBPAR"};
       for (std::string_view k : kIndexed) known = known || name.rfind(k, 0) == 0;
       if (!known) {
         try {

@@ -36,6 +36,12 @@ const EdgeData* ToolTable::find(std::int64_t tool, std::int64_t edge) const {
   return it == edges_.end() ? nullptr : &it->second;
 }
 
+std::optional<std::string> ToolTable::name_of(std::int64_t tool) const {
+  for (const auto& [name, number] : names_)
+    if (number == tool) return name;
+  return std::nullopt;
+}
+
 std::optional<std::int64_t> ToolTable::number_of(const std::string& name) const {
   auto it = names_.find(name);
   if (it == names_.end()) return std::nullopt;

@@ -65,6 +65,8 @@ class SystemValues {
                                                              std::string_view /*value*/) {
     return std::nullopt;
   }
+  // NC-PARAM-SYS-1: $TC_TP2[tool], the tool's name; empty if it has none.
+  virtual std::optional<std::string> tool_name(double /*tool*/) { return std::nullopt; }
   // NC-PARAM-FRAME-2: settable offset n (0: the one in force) as a frame value; empty if unknown.
   virtual std::optional<std::string> settable_frame(int /*n*/) { return std::nullopt; }
   virtual void restore_modal_state() {}

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <deque>
 #include <istream>
 #include <map>
@@ -36,6 +37,8 @@ class ToolTable {
   void name(const ToolNameAssignment& a);
   const EdgeData* find(std::int64_t tool, std::int64_t edge) const;
   std::optional<std::int64_t> number_of(const std::string& name) const;
+  // The name $TC_TP2[tool] gave tool `tool`, if any (NC-PARAM-SYS-1).
+  std::optional<std::string> name_of(std::int64_t tool) const;
   // TOOL-FILE-1: a tool-offset archive (TO_INI.INI convention). Errors name the file and line.
   void load(std::istream& in, const std::string& source_name);
   // TOOL-FILE-2: one edge from the command line, "TOOL[/EDGE]=RADIUS" (TOOL a number or a name).
@@ -115,6 +118,10 @@ class ProgramReader : private SystemValues {
   std::optional<std::string> programmable_frame_with(int axis, std::string_view component,
                                                      std::string_view value) override;  // NC-PARAM-FRAME-2
   std::optional<std::string> settable_frame(int n) override;                            // NC-PARAM-FRAME-2
+  std::optional<std::string> tool_name(double tool) override {                          // NC-PARAM-SYS-1: $TC_TP2[t]
+    return tool == std::trunc(tool) && std::abs(tool) < 1e15 ? tools_.name_of(static_cast<std::int64_t>(tool))
+                                                             : std::nullopt;
+  }
   std::optional<double> frame_component(std::string_view name, const std::vector<NcValue>& indices);
   void save_modal_state() override;
   void restore_modal_state() override;
