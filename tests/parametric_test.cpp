@@ -682,6 +682,19 @@ TEST(Parametric, MachineAndSettingDataReadByTheirNames) {
   EXPECT_EQ(lathe.initial_state().plane, Plane::kG18);
   EXPECT_EQ(MachineData().initial_state().plane, Plane::kG17);
   EXPECT_THROW(lathe.set("MD20150[5]", "4"), MachineDataError);
+  // A program that never selects a plane and turns in X and Z is told how to run on a lathe.
+  auto first_arc_notice = [](const std::string& text) {
+    std::istringstream in(text);
+    ProgramReader reader(in);
+    Block b;
+    while (reader.next(b))
+      if (b.is_arc()) return b.notice;
+    return std::string();
+  };
+  EXPECT_NE(first_arc_notice("G0 X60 Z5\nG2 X30 Z-5 CR=30 F100\n").find("--md 'MD20150[5]=2'"), std::string::npos);
+  EXPECT_EQ(first_arc_notice("G17 G0 X60 Z5\nG2 X30 Z-5 CR=30 F100\n"), "");
+  EXPECT_EQ(first_arc_notice("G0 X60 Y5\nG2 X30 Y-5 Z1 CR=30 F100\n"), "");
+  EXPECT_EQ(error_line("G0 X60 Z5\nG2 X40 Z-5 I0 K-10 F100\n", "a lathe or grinding machine starts in G18"), 2);
 }
 
 // covers: NC-CYCLE-1 NC-PARAM-SUB-1

@@ -327,6 +327,13 @@ void ProgramReader::change_tool(Block& b, ModalState& s) {
   }
 }
 
+// MD-20150-2: the words that tell a lathe programmer why G17 is in force.
+std::string ProgramReader::initial_plane_hint() const {
+  if (plane_programmed_ || state_.plane != Plane::kG17) return "";
+  return "; the program never selects a plane, so G17 is in force from the start: a lathe or grinding machine starts "
+         "in G18, give it with --md 'MD20150[5]=2'";
+}
+
 void ProgramReader::resolve(Block& b) {
   BlockWords& w = b.words;
   auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
@@ -374,7 +381,7 @@ void ProgramReader::resolve(Block& b) {
   if (w.cw().rndm) rounding_modal_ = length(*w.cw().rndm);  // NC-CONTOUR-2
   if (w.motion) s.motion = *w.motion;
   if (w.motion || w.cw().circle_definition) thread_ = w.thread ? *w.thread : 0;  // NC-WORD-12
-  if (w.plane) s.plane = *w.plane;
+  if (w.plane) s.plane = *w.plane, plane_programmed_ = true;
   if (w.absolute) s.absolute = *w.absolute;
   if (w.side) s.side = *w.side;
   // NC-WORD-8: a rotary axis with X, Y or Z. Without compensation X, Y and Z move as programmed
@@ -621,7 +628,16 @@ void ProgramReader::resolve(Block& b) {
   if (b.is_arc()) {
     PlaneAxes pa = plane_axes(s.plane);
     if (w.centre[static_cast<std::size_t>(pa.applicate)].present)
-      fail(fmt::format("{} is not a centre coordinate in the active plane", "IJK"[pa.applicate]));
+      fail(fmt::format("{} is not a centre coordinate in the active plane{}", "IJK"[pa.applicate],
+                       initial_plane_hint()));
+    // MD-20150-2: an arc in X and Z, in G17 from the start and without Y: a lathe program whose
+    // machine starts in G18. The helix it is in G17 is drawn; the notice says how to run it.
+    if (!plane_programmed_ && !lathe_hint_given_ && s.plane == Plane::kG17 && w.axis[2].present && !w.axis[1].present &&
+        !w.centre[1].present) {
+      lathe_hint_given_ = true;
+      note(b, "MD-20150-2",
+           fmt::format("G2/G3 with Z in G17 turns in X/Y and moves Z (a helix){}", initial_plane_hint()));
+    }
     if (!has_centre && !w.cr && !defined_circle) fail("G2/G3 needs the centre (I, J, K) or the radius (CR=)");
     Decimal fa = frame_.factor[static_cast<std::size_t>(pa.abscissa)];
     Decimal fo = frame_.factor[static_cast<std::size_t>(pa.ordinate)];

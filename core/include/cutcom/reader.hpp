@@ -187,9 +187,13 @@ class ProgramReader : private SystemValues {
   Decimal polar_angle_, polar_radius_;                 // NC-POLAR-2: the last AP and RP
   std::optional<CircleDefinition> circle_definition_;  // CIP/CT in force (motion group)
   int thread_ = 0;                                     // NC-WORD-12: G33 G34 G35 G331 G332 in force, else 0
-  Decimal rounding_modal_;                             // RNDM (0: off)
-  Decimal corner_feed_modal_;                          // FRCM (0: off)
-  std::optional<Block> pending_;                       // NC-CONTOUR-*: held until the next element
+  // MD-20150-2: no block has programmed the plane yet, and the lathe hint was not given.
+  bool plane_programmed_ = false;
+  bool lathe_hint_given_ = false;
+  std::string initial_plane_hint() const;
+  Decimal rounding_modal_;        // RNDM (0: off)
+  Decimal corner_feed_modal_;     // FRCM (0: off)
+  std::optional<Block> pending_;  // NC-CONTOUR-*: held until the next element
   bool pending_ang_ = false;
   Decimal pending_radius_;  // RND/RNDM radius and FRCM feed in force when pending_ was read
   Decimal pending_feed_;
