@@ -38,6 +38,7 @@ struct RunOptions {
   std::string output;
   std::vector<std::string> md;
   std::vector<std::string> md_files;
+  std::vector<std::string> system_values;  // NC-PARAM-SYS-4: --sysvar
   std::vector<std::string> tool_files;
   std::string offsets_file;
   bool trace = false;
@@ -134,6 +135,17 @@ ControlData control_data(const RunOptions& o) {
   }
   c.arguments = o.arguments;
   c.machine_values = machine_data(o).program_values();
+  for (const auto& a : o.system_values) {  // NC-PARAM-SYS-4: after the machine data, which they may not replace
+    std::pair<std::string, std::string> given;
+    try {
+      given = cutcom::system_value_assignment(a);
+    } catch (const cutcom::MachineDataError& e) {
+      throw FileError(fmt::format("--sysvar '{}': {}", a, e.what()));
+    }
+    if (c.machine_values.count(given.first))
+      throw FileError(fmt::format("--sysvar '{}': {} is machine data, given with --md", a, given.first));
+    c.machine_values.insert(std::move(given));
+  }
   std::filesystem::path folder =
       o.program == "-" ? std::filesystem::path(".") : std::filesystem::path(o.program).parent_path();
   c.search_path.push_back(folder.empty() ? "." : folder.string());
@@ -592,6 +604,9 @@ int main(int argc, char** argv) {
   run->add_option("-o,--output", o.output, "write to FILE instead of standard output");
   run->add_option("--md", o.md, "machine datum NAME=VALUE, e.g. --md MD20204=0.02 (repeatable)");
   run->add_option("--md-file", o.md_files, "file of NAME=VALUE lines (repeatable)");
+  run->add_option("--sysvar", o.system_values,
+                  "a system variable the program reads that cutcom does not model, $NAME[index]=VALUE (a number or "
+                  "\"text\"), e.g. --sysvar '$A_IN[1]=1' (repeatable)");
   run->add_flag("--trace", o.trace, "include the decision trace (text and json)");
   run->add_option("--tools", o.tool_files,
                   "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");

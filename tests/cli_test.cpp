@@ -113,6 +113,27 @@ TEST(Cli, StdinMachineDataAndSvg) {
   EXPECT_NE(t.out.find("TRC-CORNER-1"), std::string::npos);
 }
 
+// covers: NC-PARAM-SYS-4
+TEST(Cli, SystemVariablesTheProgramReadsAreGivenOnTheCommandLine) {
+  const std::string program =
+      "printf 'IF $A_IN[1]==1\\nG1 X1 F100\\nELSE\\nG1 X2 F100\\nENDIF\\n"
+      "G1 Y=$MN_SCALING_VALUE_INCH\\nM30\\n' | ";
+  Result missing = sh(program + kCli + " run -", true);
+  EXPECT_NE(missing.out.find("--sysvar '$A_IN[1]=VALUE'"), std::string::npos) << missing.out;
+  Result given = sh(program + kCli + " run - --format json --sysvar '$a_in[1]=1' --md '$MN_SCALING_VALUE_INCH=25.4'");
+  ASSERT_EQ(given.status, 0);
+  const auto path = nlohmann::json::parse(given.out)["path"];
+  ASSERT_EQ(path.size(), 2u);
+  EXPECT_EQ(path[0]["end"][0], 1.0);
+  EXPECT_EQ(path[1]["end"][1], 25.4);
+  // A bad name or value, or machine data through --sysvar: exit 2, named.
+  for (const char* bad : {"'A_IN=1'", "'$A_IN[1]=x'", "'$MC_CUTCOM_CORNER_LIMIT=1'"}) {
+    Result r = sh(program + kCli + " run - --sysvar " + bad, true);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.out.find("--sysvar"), std::string::npos) << r.out;
+  }
+}
+
 // A long program's picture keeps polylines within a stated bound (memory bounded); a short one
 // is drawn element by element.
 // covers: CLI-1

@@ -671,6 +671,11 @@ TEST(Parametric, MachineAndSettingDataReadByTheirNames) {
   EXPECT_EQ(last_x("R1=1\nG1 X=$MC_AXCONF_GEOAX_NAME_TAB[R1]*2+$SC_TOOL_LENGTH_CONST F100\n"), "32");
   // A datum cutcom models reads its value, by its name.
   EXPECT_EQ(last_x("G1 X=$MC_CUTCOM_CORNER_LIMIT F100\n"), "120");
+  // ISVAR: a datum with a value, with or without its index.
+  EXPECT_EQ(
+      last_x(
+          "G1 X=ISVAR(\"$MC_AXCONF_GEOAX_NAME_TAB\")+ISVAR(\"$MN_HW_SERIAL_NUMBER\")*2+ISVAR(\"$MN_NONE\")*4 F100\n"),
+      "3");
   // One without a value, or with another index: an error that says how to give it.
   EXPECT_EQ(error_line("G1 X0 F100\nR1=$MN_SCALING_VALUE_INCH\n", "--md '$MN_SCALING_VALUE_INCH=VALUE'"), 2);
   EXPECT_EQ(error_line("R1=$SA_WORKAREA_PLUS_ENABLE[X]\n", "setting data that cutcom has no value for"), 1);

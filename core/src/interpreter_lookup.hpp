@@ -74,7 +74,13 @@ class InterpreterLookup : public ExpressionParser::Lookup {
           idx[1].type != NcValue::Type::kString)
         fail(at, fmt::format("{}[{},{}]: tool {} has no edge {} (no data was assigned to it)", n, idx[0].number,
                              idx[1].number, idx[0].number, idx[1].number));
-      if (!v) fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them)", n));
+      if (!v) {  // NC-PARAM-SYS-4: a value the user gave for it (--sysvar)
+        auto given = it_.machine_values_.find(datum_key(n, idx, at));
+        if (given != it_.machine_values_.end()) return given->second;
+        fail(at, fmt::format("system variable {} is not one cutcom knows (NC-PARAM-SYS-1 lists them); give the "
+                             "value the program should read with --sysvar '{}=VALUE' (NC-PARAM-SYS-4)",
+                             n, datum_key(n, idx, at)));
+      }
       return NcValue::real(*v);
     }
     Interpreter::Variable* v = it_.find_variable(n);
@@ -86,7 +92,8 @@ class InterpreterLookup : public ExpressionParser::Lookup {
     return n.size() > 4 && n[0] == '$' && (n[1] == 'M' || n[1] == 'S') && (n[2] == 'N' || n[2] == 'C' || n[2] == 'A') &&
            n[3] == '_';
   }
-  NcValue machine_datum(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) const {
+  // The name with its index as the machine data and --sysvar give it: "$A_IN[1]", "$SA_X[Z]".
+  std::string datum_key(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) const {
     std::string key = n;
     for (std::size_t k = 0; k < idx.size(); ++k) {
       key += k == 0 ? '[' : ',';
@@ -98,6 +105,10 @@ class InterpreterLookup : public ExpressionParser::Lookup {
         fail(at, fmt::format("an index of {} must be a whole number or an axis name", n));
     }
     if (!idx.empty()) key += ']';
+    return key;
+  }
+  NcValue machine_datum(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) const {
+    std::string key = datum_key(n, idx, at);
     auto v = it_.machine_values_.find(key);
     if (v == it_.machine_values_.end())
       fail(at, fmt::format("{} is {} data that cutcom has no value for: give it with --md '{}=VALUE' (a number or "
@@ -105,7 +116,16 @@ class InterpreterLookup : public ExpressionParser::Lookup {
                            key, n[1] == 'M' ? "machine" : "setting", key));
     return v->second;
   }
-  bool is_variable(const std::string& n) const override { return it_.find_variable(n) != nullptr; }
+  // A user variable; or a system variable with a value given for it, with any index (NC-PARAM-SYS-4).
+  bool is_variable(const std::string& n) const override {
+    if (!n.empty() && n[0] == '$') {
+      if (it_.machine_values_.count(n)) return true;
+      const std::string indexed = n + "[";
+      auto given = it_.machine_values_.lower_bound(indexed);
+      return given != it_.machine_values_.end() && given->first.compare(0, indexed.size(), indexed) == 0;
+    }
+    return it_.find_variable(n) != nullptr;
+  }
 
   double r_value(const NcValue& index, std::size_t at) {
     int k = r_index(index, at);

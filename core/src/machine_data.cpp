@@ -83,6 +83,20 @@ int count_in(const MachineDatumInfo& d, std::string_view text, int lo, int hi) {
 
 namespace {
 
+// NC-PARAM-SYS-4: a system variable's name, '$' and letters, digits and '_', with an optional index
+// [i] or [i,j] (upper case, without spaces).
+bool is_system_variable_name(std::string_view u) {
+  if (u.size() < 2 || u[0] != '$') return false;
+  std::size_t k = 1;
+  while (k < u.size() && (std::isalnum(static_cast<unsigned char>(u[k])) || u[k] == '_')) ++k;
+  if (k == 1) return false;
+  if (k == u.size()) return true;
+  if (u[k] != '[' || u.back() != ']' || u.size() - k < 3) return false;
+  for (char c : u.substr(k + 1, u.size() - k - 2))
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != ',') return false;
+  return true;
+}
+
 // NC-PARAM-SYS-4: $MN_ $MC_ $MA_ $SN_ $SC_ $SA_ (machine data of the NC, channel, axis; setting
 // data likewise), a name of letters, digits and '_', an optional index [i] or [i,j].
 bool is_readable_datum_name(std::string_view u) {
@@ -183,6 +197,24 @@ ModalState MachineData::initial_state() const {
   s.md_sum_offset_default = sum_offset_default;
   s.md_change_on_m6 = tool_change_mode == 1;
   return s;
+}
+
+std::pair<std::string, std::string> system_value_assignment(std::string_view text) {
+  auto eq = text.find('=');
+  if (eq == std::string_view::npos)
+    throw MachineDataError(fmt::format("'{}': expected $NAME=VALUE, e.g. $A_IN[1]=1", text));
+  std::string u;
+  for (char c : upper(trim(text.substr(0, eq))))
+    if (c != ' ' && c != '\t') u += c;
+  if (!is_system_variable_name(u))
+    throw MachineDataError(
+        fmt::format("'{}' is not a system variable's name ($NAME or $NAME[index])", text.substr(0, eq)));
+  std::string_view v = trim(text.substr(eq + 1));
+  bool quoted = v.size() >= 2 && v.front() == '"' && v.back() == '"' &&
+                v.substr(1, v.size() - 2).find('"') == std::string_view::npos;
+  if (!quoted && !Decimal::parse(v).value)
+    throw MachineDataError(fmt::format("{}: '{}' is neither a decimal number nor a \"quoted\" text", u, v));
+  return {u, std::string(v)};
 }
 
 std::map<std::string, std::string> MachineData::program_values() const {
