@@ -154,6 +154,12 @@ TEST(ProgramWords, ThreadCuttingAndTappingAreStraightMoves) {
   EXPECT_NE(b[5].notice.find("G331: tapping"), std::string::npos) << b[5].notice;
   EXPECT_EQ(b[5].end.z.to_string(), "-10");
   EXPECT_EQ(b[7].end.x.to_string(), "11");  // $P_GG[1] read under G331
+  // G63 moves its own block in a line; the motion in force before it comes back.
+  auto g63 = read("G0 X10 Y10 Z5\nG63 Z-10 F200\nX20\n");
+  ASSERT_EQ(g63.size(), 3u);
+  EXPECT_EQ(g63[1].state.motion, Motion::kLinear);
+  EXPECT_NE(g63[1].notice.find("compensating chuck"), std::string::npos) << g63[1].notice;
+  EXPECT_EQ(g63[2].state.motion, Motion::kRapid);
   // After G1 a K is a circle's word again; a thread under compensation is not simulated.
   EXPECT_NE(error_of("G33 Z-5 K1\nG1 Z-10 K1\n").find("without G2/G3"), std::string::npos);
   EXPECT_NE(error_of("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG1 G41 X10 F100\nG33 Z-5 K1\n").find("not simulate"),

@@ -380,7 +380,8 @@ void ProgramReader::resolve(Block& b) {
   if (w.cw().circle_definition) circle_definition_ = *w.cw().circle_definition;
   if (w.cw().rndm) rounding_modal_ = length(*w.cw().rndm);  // NC-CONTOUR-2
   if (w.motion) s.motion = *w.motion;
-  if (w.motion || w.cw().circle_definition) thread_ = w.thread ? *w.thread : 0;  // NC-WORD-12
+  bool tapping_block = w.thread && *w.thread == 63;  // NC-WORD-12: G63 is not modal
+  if ((w.motion || w.cw().circle_definition) && !tapping_block) thread_ = w.thread ? *w.thread : 0;
   if (w.plane) s.plane = *w.plane, plane_programmed_ = true;
   if (w.absolute) s.absolute = *w.absolute;
   if (w.side) s.side = *w.side;
@@ -495,6 +496,7 @@ void ProgramReader::resolve(Block& b) {
 
   // The effective state of the block: a mirroring frame swaps G2/G3 and G41/G42 (NC-FRAME-3).
   ModalState eff = s;
+  if (tapping_block) eff.motion = Motion::kLinear;  // NC-WORD-12: G63 moves this block in a line
   {
     if (mirrors_plane(s.plane)) {
       if (eff.motion == Motion::kArcCw)
@@ -591,12 +593,12 @@ void ProgramReader::resolve(Block& b) {
 
   // NC-WORD-12: under G33 … G332 I, J, K are the thread's pitches, kept as actions; the block is a
   // straight move. A thread under compensation is not simulated.
-  if (thread_ != 0) {
+  if (int thread = tapping_block ? 63 : thread_; thread != 0) {
     if (s.side != Side::kOff)
       fail(
           fmt::format("thread cutting or tapping (G{}) with tool radius compensation G41/G42 in force is SINUMERIK "
                       "NC that cutcom does not simulate (deselect with G40 first)",
-                      thread_));
+                      thread));
     for (int a = 0; a < 3; ++a) {
       AxisWord& pitch = w.centre[static_cast<std::size_t>(a)];
       if (!pitch.present) continue;
@@ -608,8 +610,9 @@ void ProgramReader::resolve(Block& b) {
     }
     if (w.thread && w.programs_any_axis())
       note(b, "NC-WORD-12",
-           fmt::format("G{}: {}; the path shows the straight move as programmed", thread_,
-                       thread_ == 331 || thread_ == 332 ? "tapping at the pitch's feed"
+           fmt::format("G{}: {}; the path shows the straight move as programmed", thread,
+                       thread == 63                     ? "tapping with a compensating chuck at the programmed feed"
+                       : thread == 331 || thread == 332 ? "tapping at the pitch's feed"
                                                         : "thread cutting at the pitch's feed"));
   }
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
@@ -620,6 +623,7 @@ void ProgramReader::resolve(Block& b) {
   bool polar = (w.cw().ap.present || w.cw().rp.has_value()) && !w.cw().pole;
   bool defined_circle = circle_definition_.has_value() || w.cw().ar.has_value() || polar;
   b.circle = (s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw || circle_definition_) && !w.sar_contour &&
+             !tapping_block &&
              (w.programs_any_axis() || has_centre || w.cr.has_value() || w.cw().ar.has_value() || polar);
   if (has_centre || w.cr) {
     if (!b.is_arc()) fail("I, J, K or CR= programmed in a block without G2/G3");

@@ -37,6 +37,10 @@ void WordLexer::g_code(std::size_t at) {
       group(o.motion, Motion::kLinear, "motion");
       o.thread = static_cast<int>(g);
       return add_text_action(fmt::format("G{}", g), at);
+    case 63:  // NC-WORD-12: tapping with a compensating chuck, a straight move in this block only
+      g_group(kGroupDwell, "non-modal (G4/G25/G26/G63/G74/G75)", at);
+      o.thread = 63;
+      return add_text_action("G63", at);
     case 4:  // NC-WORD-4: dwell; its F or S is the time or the revolutions
       g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       o.dwell = true;

@@ -120,7 +120,7 @@ struct BlockWordFields {
   Opt<Decimal> cr;
 
   Opt<Motion> motion;
-  Opt<int> thread;  // NC-WORD-12: G33 G34 G35 G331 G332 (motion kLinear)
+  Opt<int> thread;  // NC-WORD-12: G33 G34 G35 G331 G332 (motion kLinear), G63 (this block only)
   Opt<Plane> plane;
   Opt<bool> absolute;  // G90 true, G91 false
   Opt<Side> side;
