@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cutcom/interpreter.hpp"
+#include "cutcom/machine_data.hpp"
 #include "interpreter_text.hpp"
 #include "nc_expression.hpp"
 
@@ -86,11 +87,6 @@ class InterpreterLookup : public ExpressionParser::Lookup {
     Interpreter::Variable* v = it_.find_variable(n);
     if (!v) fail(at, fmt::format("undefined variable '{}'", n));
     return v->values[offset(n, *v, idx, at)];
-  }
-  // NC-PARAM-SYS-4: $MN_ $MC_ $MA_ $SN_ $SC_ $SA_: machine and setting data.
-  static bool is_machine_or_setting_datum(std::string_view n) {
-    return n.size() > 4 && n[0] == '$' && (n[1] == 'M' || n[1] == 'S') && (n[2] == 'N' || n[2] == 'C' || n[2] == 'A') &&
-           n[3] == '_';
   }
   // The name with its index as the machine data and --sysvar give it: "$A_IN[1]", "$SA_X[Z]".
   std::string datum_key(const std::string& n, const std::vector<NcValue>& idx, std::size_t at) const {

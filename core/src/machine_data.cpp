@@ -98,35 +98,37 @@ bool is_system_variable_name(std::string_view u) {
 }
 
 // NC-PARAM-SYS-4: $MN_ $MC_ $MA_ $SN_ $SC_ $SA_ (machine data of the NC, channel, axis; setting
-// data likewise), a name of letters, digits and '_', an optional index [i] or [i,j].
+// data likewise), with a name and an optional index.
 bool is_readable_datum_name(std::string_view u) {
-  if (u.size() < 5 || u[0] != '$' || (u[1] != 'M' && u[1] != 'S') || u[3] != '_') return false;
-  if (u[2] != 'N' && u[2] != 'C' && u[2] != 'A') return false;
-  std::size_t k = 4;
-  while (k < u.size() && (std::isalnum(static_cast<unsigned char>(u[k])) || u[k] == '_')) ++k;
-  if (k == 4) return false;
-  if (k == u.size()) return true;
-  if (u[k] != '[' || u.back() != ']' || u.size() - k < 3) return false;
-  for (char c : u.substr(k + 1, u.size() - k - 2))
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != ',') return false;
-  return true;
+  return is_machine_or_setting_datum(u) && u[4] != '[' && is_system_variable_name(u);
+}
+
+// A system variable's name as a key: upper case, without spaces ("$mc_x[ 1 ]" is "$MC_X[1]").
+std::string variable_key(std::string_view name) {
+  std::string u;
+  for (char c : upper(trim(name)))
+    if (c != ' ' && c != '\t') u += c;
+  return u;
+}
+
+// The value's text of a given system variable: a decimal number or a "quoted" text.
+std::string variable_value(const std::string& key, std::string_view value) {
+  std::string_view v = trim(value);
+  bool quoted = v.size() >= 2 && v.front() == '"' && v.back() == '"' &&
+                v.substr(1, v.size() - 2).find('"') == std::string_view::npos;
+  if (!quoted && !Decimal::parse(v).value)
+    throw MachineDataError(fmt::format("{}: '{}' is neither a decimal number nor a \"quoted\" text", key, v));
+  return std::string(v);
 }
 
 }  // namespace
 
 void MachineData::set(std::string_view name, std::string_view value) {
-  std::string u;
-  for (char c : upper(trim(name)))
-    if (c != ' ' && c != '\t') u += c;
+  std::string u = variable_key(name);
   bool catalogued = std::any_of(machine_data_catalogue().begin(), machine_data_catalogue().end(),
                                 [&](const MachineDatumInfo& d) { return u == d.id || u == d.name; });
   if (!catalogued && is_readable_datum_name(u)) {  // NC-PARAM-SYS-4: a value programs read
-    std::string_view v = trim(value);
-    bool text = v.size() >= 2 && v.front() == '"' && v.back() == '"' &&
-                v.substr(1, v.size() - 2).find('"') == std::string_view::npos;
-    if (!text && !Decimal::parse(v).value)
-      throw MachineDataError(fmt::format("{}: '{}' is neither a decimal number nor a \"quoted\" text", u, value));
-    readable[u] = std::string(v);
+    readable[u] = variable_value(u, value);
     return;
   }
   const MachineDatumInfo& d = lookup(name);
@@ -199,22 +201,20 @@ ModalState MachineData::initial_state() const {
   return s;
 }
 
+bool is_machine_or_setting_datum(std::string_view n) {
+  return n.size() > 4 && n[0] == '$' && (n[1] == 'M' || n[1] == 'S') && (n[2] == 'N' || n[2] == 'C' || n[2] == 'A') &&
+         n[3] == '_';
+}
+
 std::pair<std::string, std::string> system_value_assignment(std::string_view text) {
   auto eq = text.find('=');
   if (eq == std::string_view::npos)
     throw MachineDataError(fmt::format("'{}': expected $NAME=VALUE, e.g. $A_IN[1]=1", text));
-  std::string u;
-  for (char c : upper(trim(text.substr(0, eq))))
-    if (c != ' ' && c != '\t') u += c;
+  std::string u = variable_key(text.substr(0, eq));
   if (!is_system_variable_name(u))
     throw MachineDataError(
         fmt::format("'{}' is not a system variable's name ($NAME or $NAME[index])", text.substr(0, eq)));
-  std::string_view v = trim(text.substr(eq + 1));
-  bool quoted = v.size() >= 2 && v.front() == '"' && v.back() == '"' &&
-                v.substr(1, v.size() - 2).find('"') == std::string_view::npos;
-  if (!quoted && !Decimal::parse(v).value)
-    throw MachineDataError(fmt::format("{}: '{}' is neither a decimal number nor a \"quoted\" text", u, v));
-  return {u, std::string(v)};
+  return {u, variable_value(u, text.substr(eq + 1))};
 }
 
 std::map<std::string, std::string> MachineData::program_values() const {

@@ -67,6 +67,8 @@ struct MachineDatumInfo {
 };
 const std::vector<MachineDatumInfo>& machine_data_catalogue();
 std::string machine_datum_value(const MachineData& md, std::string_view id);
+// NC-PARAM-SYS-4: $MN_ $MC_ $MA_ $SN_ $SC_ $SA_ (upper case): machine or setting data.
+bool is_machine_or_setting_datum(std::string_view upper_name);
 // NC-PARAM-SYS-4: "$A_IN[1]=1" (any system variable a program reads that cutcom does not model)
 // as its name, upper case with its index, and its value's text. Throws MachineDataError.
 std::pair<std::string, std::string> system_value_assignment(std::string_view text);
