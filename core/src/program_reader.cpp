@@ -334,6 +334,33 @@ std::string ProgramReader::initial_plane_hint() const {
          "in G18, give it with --md 'MD20150[5]=2'";
 }
 
+// NC-WORD-12: under G33 … G332 (and in a G63 block) I, J, K are the thread's pitches, kept as
+// actions; the block is a straight move. A thread under compensation is not simulated.
+void ProgramReader::thread_block(Block& b, int thread) {
+  BlockWords& w = b.words;
+  auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
+  if (state_.side != Side::kOff)
+    fail(
+        fmt::format("thread cutting or tapping (G{}) with tool radius compensation G41/G42 in force is SINUMERIK "
+                    "NC that cutcom does not simulate (deselect with G40 first)",
+                    thread));
+  for (int a = 0; a < 3; ++a) {
+    AxisWord& pitch = w.centre[static_cast<std::size_t>(a)];
+    if (!pitch.present) continue;
+    if (w.aux_count == BlockWords::kMaxAux) fail("too many actions in one block");
+    AuxFunction t;
+    t.address = 0, t.text = fmt::format("{}{}", "IJK"[a], pitch.value.to_string());
+    w.aux[static_cast<std::size_t>(w.aux_count++)] = t;
+    pitch.present = false;
+  }
+  if (w.thread && w.programs_any_axis())
+    note(b, "NC-WORD-12",
+         fmt::format("G{}: {}; the path shows the straight move as programmed", thread,
+                     thread == 63                     ? "tapping with a compensating chuck at the programmed feed"
+                     : thread == 331 || thread == 332 ? "tapping at the pitch's feed"
+                                                      : "thread cutting at the pitch's feed"));
+}
+
 void ProgramReader::resolve(Block& b) {
   BlockWords& w = b.words;
   auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
@@ -591,30 +618,7 @@ void ProgramReader::resolve(Block& b) {
     for (AxisWord& aw : w.axis) aw.present = false;                        // NC-FRAME-1: the frame's values, not a move
   if (w.programs_any_axis() || polar_move(w)) interpreter_.block_moved();  // NC-PARAM-SUB-6: MCALL
 
-  // NC-WORD-12: under G33 … G332 I, J, K are the thread's pitches, kept as actions; the block is a
-  // straight move. A thread under compensation is not simulated.
-  if (int thread = tapping_block ? 63 : thread_; thread != 0) {
-    if (s.side != Side::kOff)
-      fail(
-          fmt::format("thread cutting or tapping (G{}) with tool radius compensation G41/G42 in force is SINUMERIK "
-                      "NC that cutcom does not simulate (deselect with G40 first)",
-                      thread));
-    for (int a = 0; a < 3; ++a) {
-      AxisWord& pitch = w.centre[static_cast<std::size_t>(a)];
-      if (!pitch.present) continue;
-      if (w.aux_count == BlockWords::kMaxAux) fail("too many actions in one block");
-      AuxFunction t;
-      t.address = 0, t.text = fmt::format("{}{}", "IJK"[a], pitch.value.to_string());
-      w.aux[static_cast<std::size_t>(w.aux_count++)] = t;
-      pitch.present = false;
-    }
-    if (w.thread && w.programs_any_axis())
-      note(b, "NC-WORD-12",
-           fmt::format("G{}: {}; the path shows the straight move as programmed", thread,
-                       thread == 63                     ? "tapping with a compensating chuck at the programmed feed"
-                       : thread == 331 || thread == 332 ? "tapping at the pitch's feed"
-                                                        : "thread cutting at the pitch's feed"));
-  }
+  if (int thread = tapping_block ? 63 : thread_; thread != 0) thread_block(b, thread);  // NC-WORD-12
   // NC-ARC-1: I J K are incremental from the start point unless AC(); CR= gives the radius.
   bool has_centre = w.centre[0].present || w.centre[1].present || w.centre[2].present;
   b.centre.reset();

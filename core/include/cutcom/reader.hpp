@@ -135,6 +135,7 @@ class ProgramReader : private SystemValues {
   };
   std::vector<SavedState> saved_;  // one per open PROC … SAVE
   void resolve(Block& b);
+  void thread_block(Block& b, int thread);  // NC-WORD-12
   void change_tool(Block& b, ModalState& s);
   void apply_frame(const BlockWords& w, Plane plane);
   Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
