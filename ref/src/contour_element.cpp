@@ -1,12 +1,24 @@
 #include "contour_element.hpp"
 
-#include "exact_root.hpp"
-
 namespace cutcom::ref {
 
 FT to_ft(const mpq_class& q) {
   if (q.get_den() == 1) return FT(CORE::BigInt(q.get_num().get_mpz_t()));
   return FT(CORE::BigRat(q.get_mpq_t()));
+}
+
+// The square root of a rational q >= 0: the rational itself when numerator and denominator are
+// squares (a radius I4.969, an axis-parallel line), else CORE's root. The value is the same; a
+// rational keeps the expressions built on it shallow, so that CORE proves their zeros cheaply.
+FT rational_root(const mpq_class& q) {
+  if (sgn(q) == 0) return FT(0);
+  if (mpz_perfect_square_p(q.get_num_mpz_t()) != 0 && mpz_perfect_square_p(q.get_den_mpz_t()) != 0) {
+    mpz_class n, d;
+    mpz_sqrt(n.get_mpz_t(), q.get_num_mpz_t());
+    mpz_sqrt(d.get_mpz_t(), q.get_den_mpz_t());
+    return to_ft(mpq_class(n, d));
+  }
+  return CGAL::sqrt(to_ft(q));
 }
 
 namespace {
@@ -34,7 +46,7 @@ ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
   e.b = plane_point(block.end, axes);
   e.d = e.b - e.a;
   mpz_class sq = dx * dx + dy * dy;
-  e.length = exact_root(FT(CORE::BigInt(sq.get_mpz_t())));
+  e.length = rational_root(mpq_class(sq));
   e.normal = Vector(-e.d.y() / e.length, e.d.x() / e.length);
   return e;
 }
@@ -64,7 +76,7 @@ ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
   mpq_class da = ea - sa, db = eb - sb;
   mpq_class q = cr * cr / (da * da + db * db) - mpq_class(1, 4);
   int k = (e.sense > 0) == (sgn(cr) > 0) ? 1 : -1;
-  FT h = sgn(q) <= 0 ? FT(0) : exact_root(to_ft(q));  // (q < 0: a rounding beyond a half circle)
+  FT h = sgn(q) <= 0 ? FT(0) : rational_root(q);  // (q < 0: a rounding beyond a half circle)
   e.a = plane_point(block.start, axes);
   e.b = plane_point(block.end, axes);
   e.centre = Point(to_ft((sa + ea) / 2) + FT(k) * (-to_ft(db)) * h, to_ft((sb + eb) / 2) + FT(k) * to_ft(da) * h);
@@ -72,7 +84,7 @@ ContourElement of_cr_arc(const Block& block, PlaneAxes axes) {
   e.radius = to_ft(abs(cr));
   if (sgn(q) < 0) {  // a chord a rounding longer than 2|CR| (ARC-CR-1): a half circle about its midpoint
     e.radius_squared = (da * da + db * db) / 4;
-    e.radius = exact_root(to_ft(e.radius_squared));
+    e.radius = rational_root(e.radius_squared);
   }
   Vector rs = e.a - e.centre, re = e.b - e.centre;
   e.start_dir = Vector(-rs.y(), rs.x()) * FT(e.sense);
@@ -101,7 +113,7 @@ ContourElement ContourElement::of_arc(const Block& block, PlaneAxes axes) {
   e.cx = ca, e.cy = cb;
   e.radius_squared = (sa - ca) * (sa - ca) + (sb - cb) * (sb - cb);
   e.centre = Point(to_ft(ca), to_ft(cb));
-  e.radius = exact_root(to_ft(e.radius_squared));
+  e.radius = rational_root(e.radius_squared);
   e.start_tangent = arc_tangent(sa, sb, ca, cb, e.sense);
   e.end_tangent = arc_tangent(ea, eb, ca, cb, e.sense);
   e.start_dir = Vector(to_ft(e.start_tangent.a), to_ft(e.start_tangent.b));

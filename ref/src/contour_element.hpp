@@ -58,5 +58,7 @@ CornerClass classify_corner(const RationalVector& end_tangent, const RationalVec
 CornerKind classify_corner(const Vector& end_tangent, const Vector& start_tangent, int side);
 
 FT to_ft(const mpq_class& q);
+// The square root of a rational q >= 0, rational where it is one (contour_element.cpp).
+FT rational_root(const mpq_class& q);
 
 }  // namespace cutcom::ref

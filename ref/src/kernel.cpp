@@ -55,9 +55,11 @@ double nearest_double(const FT& value) {
 
 std::string exact_text(const FT& value) {
   if (CGAL::sign(value) == CGAL::ZERO) return "0";
-  // The sign is exact (CORE); the digits are the nearest double's 17 (output boundary). Not
-  // Expr::toString: after exact zero tests an approximation may hold thousands of bits, and
-  // printing all of them dominated ref's run time.
+  // The sign is exact (CORE); the digits are 17 of CORE's double approximation, within an ulp or
+  // two of the value: two ways of building one value may differ in the last digit. Rounding to
+  // the nearest double (nearest_double) made campaigns 20 % slower. Not Expr::toString: after exact
+  // zero tests an approximation may hold thousands of bits, and printing all of them dominated
+  // ref's run time.
   auto magnitude = std::fabs(CGAL::to_double(value));
   return fmt::format("{}{:.17g}", CGAL::sign(value) == CGAL::NEGATIVE ? "-" : "", magnitude);
 }
