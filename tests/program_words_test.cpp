@@ -515,12 +515,6 @@ TEST(ProgramWords, ToolEdgeFromTheCommandLine) {
   }
 }
 
-// covers: TOOL-TURN-1
-TEST(ProgramWords, TurningToolWithEdgePositionIsNotSimulated) {
-  EXPECT_THROW(read("$TC_DP1[1,1]=500 $TC_DP2[1,1]=3 $TC_DP6[1,1]=0.8\nT1 D1\n"), InputError);
-  EXPECT_NO_THROW(read("$TC_DP1[1,1]=500 $TC_DP2[1,1]=9 $TC_DP6[1,1]=0.8\nT1 D1\n"));
-}
-
 // covers: NC-CYCLE-1 NC-CYCLE-2
 TEST(ProgramWords, CyclesAreNotSimulatedAndLeaveThePositionUnknown) {
   auto b = read(

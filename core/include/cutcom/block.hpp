@@ -232,6 +232,9 @@ struct ModalState {
   Decimal edge_radius;  // $TC_DP6
   Decimal edge_wear;    // $TC_DP15
   bool edge_defined = false;
+  // TOOL-TURN-1: a turning tool's cutting edge position $TC_DP2 (1 … 8); 0 when the edge centre
+  // is the reference point (milling tools, positions 0 and 9).
+  std::int8_t edge_position = 0;
 
   // Settings of the reader that machine data decide, not the program (TOOL-CHANGE-1/2):
   // MD20270 $MC_CUTTING_EDGE_DEFAULT and MD22550 $MC_TOOL_CHANGE_MODE.

@@ -157,14 +157,17 @@ class ProgramReader : private SystemValues {
   void finish_pending(Block* next);
   void push_ready(Block&& b);
   bool pop_ready(Block& out);
+  // TOOL-TURN-1: the compensated contour moved to where a turning tool's tip runs.
+  void tool_tip_offset(Block& b);
 
   std::istream& in_;
   Interpreter interpreter_;  // NC-PARAM-*: variables, expressions and control flow before the words
   std::string text_;
   int line_ = 0;
   int index_ = 0;
-  int end_line_ = 0;    // line of M2/M30, 0 before it
-  bool ended_ = false;  // M2/M30 ended a program with control flow: nothing more is read
+  int end_line_ = 0;             // line of M2/M30, 0 before it
+  bool ended_ = false;           // M2/M30 ended a program with control flow: nothing more is read
+  bool tip_on_contour_ = false;  // TOOL-TURN-1: the last block ended on the moved contour
   ModalState state_;
   ModalState effective_;  // the last block's state as the engines see it (NC-FRAME-3)
   Point3 position_;
