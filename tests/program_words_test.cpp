@@ -102,9 +102,9 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_THROW(read("$A_DBB[3]\n"), InputError);
   auto g = read("G26 S3000\nG25 S20\n");
   EXPECT_EQ(actions(g[0]), (std::vector<std::string>{"G26", "S3000"}));
-  EXPECT_THROW(read("G26 X100 Y100\n"), InputError);  // the working area: not simulated
-  EXPECT_THROW(read("ACC[X]\n"), InputError);         // a value needs '='
-  EXPECT_THROW(read("WAITM 1\n"), InputError);        // a call needs its arguments in (…)
+  EXPECT_THROW(read("X1 G26 Y100\n"), InputError);  // the working area's axes come after G26
+  EXPECT_THROW(read("ACC[X]\n"), InputError);       // a value needs '='
+  EXPECT_THROW(read("WAITM 1\n"), InputError);      // a call needs its arguments in (…)
 }
 
 // covers: NC-WORD-7
@@ -133,6 +133,19 @@ TEST(ProgramWords, WorkingAreaTangentialControlAndFileWordsAreActions) {
   EXPECT_EQ(actions(b[1]), (std::vector<std::string>{"WRITE(R1,\"LOG\",\"A\")", "CALLPATH(\"/_N_WKS_DIR\")"}));
   EXPECT_EQ(actions(b[2]), (std::vector<std::string>{"TANGOF(C)", "WALIMOF"}));
   EXPECT_EQ(b[3].end.x.to_string(), "10");
+  // G25/G26 with axis words: the working area's limits, no motion; grinding, spline and
+  // orientation settings.
+  auto w = read(
+      "G0 X5 Y5\nR1=100\nG25 X-10 Y=-20 Z-30\nG26 X=R1+2 Z5 WALCS1\nGWPSON(1) TMON DIAMCYCOF ORIC BTAN EAUTO\n"
+      "G1 X10 F100\n");
+  ASSERT_EQ(w.size(), 5u);
+  EXPECT_EQ(actions(w[1]), (std::vector<std::string>{"G25", "X-10", "Y=-20", "Z-30"}));
+  EXPECT_EQ(actions(w[2]), (std::vector<std::string>{"G26", "X=102", "Z5", "WALCS1"}));
+  EXPECT_FALSE(w[1].moves_in_plane());
+  EXPECT_EQ(w[2].end, pt("5", "5", "0"));
+  EXPECT_EQ(actions(w[3]), (std::vector<std::string>{"GWPSON(1)", "TMON", "DIAMCYCOF", "ORIC", "BTAN", "EAUTO"}));
+  EXPECT_EQ(w[4].start, pt("5", "5", "0"));
+  EXPECT_NE(error_of("X1 G26 Y100\n").find("names its axes after G26"), std::string::npos) << error_of("X1 G26 Y100\n");
 }
 
 // covers: NC-WORD-12

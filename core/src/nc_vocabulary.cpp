@@ -27,8 +27,14 @@ constexpr std::string_view kActionKeywords[] = {
     "DRFOF",
     // NC-WORD-10: tool length offsets: the tool tip stays on the programmed path
     "TOFFOF",
-    // NC-WORD-7: the working area limitation on and off
-    "WALIMON", "WALIMOF"};
+    // NC-WORD-7: the working area limitation on and off, its groups in the workpiece system
+    "WALIMON", "WALIMOF", "WALCS0", "WALCS1", "WALCS2", "WALCS3", "WALCS4", "WALCS5", "WALCS6", "WALCS7", "WALCS8",
+    "WALCS9", "WALCS10",
+    // NC-WORD-7: grinding: constant wheel peripheral speed, tool monitoring (with their tools)
+    "GWPSON", "GWPSOF", "TMON", "TMOF",
+    // NC-WORD-7: diameter programming in cycles off, orientation at outer corners, the boundary
+    // conditions of splines (which are not simulated)
+    "DIAMCYCOF", "ORIC", "ORID", "BAUTO", "BNAT", "BTAN", "EAUTO", "ENAT", "ETAN"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
                                               // NC-WORD-7: compressor tolerances, axis dynamics
                                               "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM",

@@ -332,9 +332,9 @@ class WordLexer {
   static std::string_view orientation_literal(std::string_view n);
   static std::string area_limit_message(int g) {
     return fmt::format(
-        "G{} with axis words (a programmable working area limitation) is SINUMERIK NC that cutcom does not "
-        "simulate; G{} S… (a spindle speed limit) is kept as an action",
-        g, g);
+        "G{} after an axis word: a working area limitation (G{} X… Z…) names its axes after G{}, and they move "
+        "nothing",
+        g, g, g);
   }
   // System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
   void system_variable();

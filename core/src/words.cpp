@@ -366,6 +366,12 @@ void WordLexer::word() {
 // NC-CYCLE-1: G74 X1=0 Y1=0 (reference point), G75 FP=2 Z1=0 (fixed point): the axes with the
 // extension 1 say which axes move there, kept as written; the move is not simulated.
 bool WordLexer::reference_axis(const std::string& n, std::size_t at) {
+  if (area_limit_) {  // NC-WORD-7: G25/G26 X… Y… Z…: the working area's limits, no motion
+    equals();
+    number(n);
+    add_text_action(written(at), at);
+    return true;
+  }
   if (!is_digit(peek()) || !extended_address_follows()) return false;
   if (out_.not_simulated != "G74" && out_.not_simulated != "G75")
     fail(fmt::format("{}{}= (an axis with an extension) is read only after G74 or G75", n, peek()), at);
@@ -419,7 +425,6 @@ std::string_view WordLexer::orientation_literal(std::string_view n) {
 }
 
 void WordLexer::plane_axis_after_rotary(std::size_t at) {
-  if (area_limit_) fail(area_limit_message(area_limit_), at);
   if (!rotary_name_.empty() && out_.rotary_with_plane.empty())
     out_.rotary_with_plane = rotary_name_, out_.rotary_column = static_cast<int>(at) + 1;
 }

@@ -103,7 +103,7 @@ void WordLexer::g_code(std::size_t at) {
       o.units = Units::kG710;
       return;
     case 25:
-    case 26:  // NC-WORD-8: spindle speed limits (with S); with axes, the working area: not simulated
+    case 26:  // NC-WORD-8: spindle speed limits (with S); NC-WORD-7: with axes after it, the working area
       g_group(kGroupDwell, "non-modal (G4/G25/G26/G74/G75)", at);
       for (const AxisWord& a : o.axis)
         if (a.present) fail(area_limit_message(static_cast<int>(g)), at);
