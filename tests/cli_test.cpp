@@ -538,6 +538,26 @@ TEST(Cli, ParametricExampleRunsAndARunawayLoopStops) {
   EXPECT_NE(loop.out.find("line 3, column 1: the program runs away: more than 500"), std::string::npos) << loop.out;
 }
 
+// covers: TOOL-TURN-1 MD-20150-2 NC-DIAM-1
+TEST(Cli, TheLatheExampleRunsWithItsTurningTools) {
+  // Two turning tools with cutting edge positions from the archive, G18 from the machine data,
+  // diameters: both engines alike, each selection noting the tip's offset.
+  const std::string turning = CUTCOM_SOURCE_DIR "/examples/turning/";
+  std::string lathe =
+      " run " + turning + "SHAFT.MPF --tools " + turning + "TO_INI.INI --md 'MD20150[5]=2' --format json";
+  Result tf = sh(kCli + lathe), tr = sh(kCli + lathe + " --engine ref");
+  ASSERT_EQ(tf.status, 0) << tf.out;
+  ASSERT_EQ(tr.status, 0) << tr.out;
+  auto lf = nlohmann::json::parse(tf.out), lr = nlohmann::json::parse(tr.out);
+  ASSERT_EQ(lf["path"].size(), lr["path"].size());
+  int tips = 0;
+  for (const auto& n : lf["notices"]) tips += n["clause"] == "TOOL-TURN-1";
+  EXPECT_EQ(tips, 2);
+  // Position 3 on the 24 mm cylinder (N70): the tip runs at the programmed diameter, as radius 12.
+  for (const auto& e : lf["path"])
+    if (e.value("block", 0) == 70) EXPECT_EQ(e["start"][0], 12.0) << e.dump();
+}
+
 // covers: NC-PARAM-VAR-3 NC-PARAM-SUB-5 NC-PARAM-SUB-2
 TEST(Cli, DefinitionsFileAndASubprogramRunOnItsOwn) {
   const std::string dir = CUTCOM_BINARY_DIR;

@@ -4,6 +4,7 @@
 #include <array>
 #include <string>
 
+#include "cutcom/output.hpp"
 #include "support.hpp"
 
 namespace cutcom::test {
@@ -81,6 +82,25 @@ TEST(TurningTool, AnOutsideToolsTipRunsOnTheCylindersAndTheFace) {
   ASSERT_EQ(r.fast.notices.size(), 1u);
   EXPECT_NE(r.fast.notices[0].text.find("0.8 mm -Z -X of the edge centre"), std::string::npos)
       << r.fast.notices[0].text;
+}
+
+// covers: TOOL-TURN-1
+TEST(TurningTool, PicturesDrawTheContourAsProgrammed) {
+  // The reader moves the compensated contour by the tip's offset; the picture subtracts it again.
+  std::istringstream in(turning_program("3"));
+  ProgramReader reader(in, {});
+  ProgrammedContour contour;
+  std::vector<ProgrammedSegment> drawn;
+  Block b;
+  while (reader.next(b))
+    if (auto s = contour.add(b)) drawn.push_back(*s);
+  ASSERT_EQ(drawn.size(), 7u);  // N10 … N70
+  expect_point(drawn[1].start, {60, 0, 5}, "N20 start");
+  expect_point(drawn[1].end, {20, 0, 2}, "N20 end");
+  expect_point(drawn[2].end, {20, 0, -20}, "N30 end");
+  expect_point(drawn[3].end, {25, 0, -25}, "N40 end");
+  expect_point(drawn[6].start, {40, 0, -50}, "N70 start");
+  expect_point(drawn[6].end, {70, 0, -52}, "N70 end");
 }
 
 // covers: TOOL-TURN-1

@@ -98,17 +98,24 @@ std::optional<ProgrammedSegment> ProgrammedContour::add(const Block& b) {
     p4_pending_ = false;
     return std::nullopt;
   }
-  if (b.start == b.end && !(b.is_arc() && b.centre)) return std::nullopt;
+  // TOOL-TURN-1: the contour as programmed, without the turning tool's tip offset.
+  auto programmed = [](Point3 p, const Point3& shift) {
+    for (int axis = 0; axis < 3; ++axis) coord(p, axis) = coord(p, axis) - coord(shift, axis);
+    return p;
+  };
+  auto drawn = [](const Point3& p) { return PathPoint{p.x.to_double(), p.y.to_double(), p.z.to_double()}; };
+  Point3 start = programmed(b.start, b.tip_shift_start), end = programmed(b.end, b.tip_shift_end);
+  if (start == end && !(b.is_arc() && b.centre)) return std::nullopt;
   ProgrammedSegment s;
-  s.start = {b.start.x.to_double(), b.start.y.to_double(), b.start.z.to_double()};
-  s.end = {b.end.x.to_double(), b.end.y.to_double(), b.end.z.to_double()};
+  s.start = drawn(start);
+  s.end = drawn(end);
   s.rapid = b.state.motion == Motion::kRapid;
   s.line = b.words.line;
   s.label = b.words.number ? fmt::format("N{}", *b.words.number) : fmt::format("L{}", b.words.line);
   if (b.is_arc() && b.centre) {
     s.arc = true;
     s.ccw = b.state.motion == Motion::kArcCcw;
-    s.center = {b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()};
+    s.center = drawn(programmed(*b.centre, b.tip_shift_end));
   }
   return s;
 }

@@ -50,6 +50,7 @@ std::string direction_text(PlaneAxes ax, int position) {
 }  // namespace
 
 void ProgramReader::tool_tip_offset(Block& b) {
+  b.tip_shift_start = b.tip_shift_end = Point3{};
   const ModalState& s = b.state;
   bool selects = !tip_on_contour_ && s.side != Side::kOff && (b.programs_plane_axis() || b.is_sar_block());
   bool on_contour_after = s.side != Side::kOff && (tip_on_contour_ || selects);
@@ -61,9 +62,13 @@ void ProgramReader::tool_tip_offset(Block& b) {
     Decimal r = edge.edge_radius + edge.edge_wear;
     auto [sa, so] = kTipDirection[static_cast<std::size_t>(edge.edge_position)];
     Decimal da = times_sign(r, sa), dor = times_sign(r, so);
-    if (tip_on_contour_) move(b.start, ax, da, dor);
+    if (tip_on_contour_) {
+      move(b.start, ax, da, dor);
+      move(b.tip_shift_start, ax, da, dor);
+    }
     if (on_contour_after) {
       move(b.end, ax, da, dor);
+      move(b.tip_shift_end, ax, da, dor);
       if (b.centre) move(*b.centre, ax, da, dor);
     }
     if (selects)

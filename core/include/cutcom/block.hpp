@@ -296,6 +296,10 @@ struct Block {
   int index = 0;        // 0-based block index in the program
   bool circle = false;  // set by the reader: see is_arc()
 
+  // TOOL-TURN-1: what the reader added to `start` and to `end` (and `centre`) for a turning tool's
+  // tip; zero elsewhere. Pictures subtract it to draw the programmed contour.
+  Point3 tip_shift_start, tip_shift_end;
+
   SarTag sar;            // a SAR sub-block (engines only; the reader leaves it empty)
   ContourInsert insert;  // an element the reader inserted (NC-CONTOUR-*); kNone for programmed ones
   // A notice of the reader's on this block (a move not simulated, a position assumed): the
