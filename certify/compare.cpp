@@ -609,6 +609,15 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     if (r.type != f.type || r.origin.kind != f.origin.kind || r.origin.line != f.origin.line || r.rapid != f.rapid ||
         (r.type == ElementType::kArc && r.ccw != f.ccw))
       return diverge(fmt::format("element {}: {} vs {}", i, describe(r.origin), describe(f.origin)));
+    // PROP-DIFF-3: what the element belongs to and how fast it runs are the blocks' data, decided
+    // on programmed decimals: they never differ, knife edge or not.
+    if (r.feed != f.feed || r.feed_type != f.feed_type)
+      return diverge(
+          fmt::format("element {} ({}): feed {} vs {}", i, describe(r.origin), r.feed.to_string(), f.feed.to_string()));
+    if (r.origin.sar != f.origin.sar || r.origin.insert.kind != f.origin.insert.kind ||
+        r.origin.block != f.origin.block || r.origin.next_line != f.origin.next_line)
+      return diverge(
+          fmt::format("element {}: {} vs {} (what it belongs to)", i, describe(r.origin), describe(f.origin)));
     double e = std::max(distance(r.start, f.start), distance(r.end, f.end));
     if (r.type == ElementType::kArc) {
       e = std::max(e, distance(r.center, f.center));
@@ -641,6 +650,34 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
                                  tol.coordinate));
   }
   if (ref.actions.size() != fast.actions.size()) return diverge("different actions");
+  // PROP-DIFF-3: actions run where the tool is, SAR's variables are the tool's positions: the
+  // same within the tolerance (after touching carriers, within the touching tolerance).
+  double at_most = touch && v.kind == Verdict::Kind::kKnifeEdge ? tol.touching : tol.coordinate;
+  for (std::size_t i = 0; i < ref.actions.size(); ++i) {
+    const ActionEvent& r = ref.actions[i];
+    const ActionEvent& f = fast.actions[i];
+    if (r.line != f.line || r.function.name() != f.function.name())
+      return diverge(fmt::format("action {}: {} at line {} vs {} at line {}", i, r.function.name(), r.line,
+                                 f.function.name(), f.line));
+    if (double e = distance(r.at, f.at); !(e <= at_most))
+      return diverge(fmt::format("action {} ({} at line {}) placed {:.3g} mm apart", i, r.function.name(), r.line, e));
+  }
+  if (ref.variables.size() != fast.variables.size()) return diverge("different SAR variables");
+  for (std::size_t i = 0; i < ref.variables.size(); ++i) {
+    const SarVariables& r = ref.variables[i];
+    const SarVariables& f = fast.variables[i];
+    double e = std::max(distance(r.p_apr, f.p_apr), distance(r.p_aep, f.p_aep));
+    if (r.line != f.line || r.p_apdv != f.p_apdv || !(e <= at_most))
+      return diverge(fmt::format("SAR variables of line {}: $P_APR/$P_AEP {:.3g} mm apart, $P_APDV {} vs {}", r.line, e,
+                                 r.p_apdv, f.p_apdv));
+  }
+  if (v.kind != Verdict::Kind::kKnifeEdge) {
+    bool same = ref.notices.size() == fast.notices.size();
+    for (std::size_t i = 0; same && i < ref.notices.size(); ++i)
+      same = ref.notices[i].clause == fast.notices[i].clause && ref.notices[i].line == fast.notices[i].line;
+    if (!same)
+      return diverge(fmt::format("different notices ({} in ref, {} in fast)", ref.notices.size(), fast.notices.size()));
+  }
   return v;
 }
 

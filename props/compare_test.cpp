@@ -194,6 +194,49 @@ TEST(Comparison, ACollapseAtAnExactZeroRadiusIsNoKnifeEdge) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kKnifeEdge);
 }
 
+// What an element belongs to and its feed, the actions and where they run, SAR's variables and
+// the notices: a bug that changes only these would otherwise pass.
+// covers: PROP-DIFF-3
+TEST(Comparison, FeedsActionsSarVariablesAndNoticesAreCompared) {
+  RunResult ref;
+  ref.path = {line({0, 0, 0}, {10, 0, 0})};
+  ref.path[0].feed = *Decimal::parse("500").value;
+  ActionEvent m8;
+  m8.line = 6, m8.function.value = 8, m8.at = {10, 0, 0};
+  ref.actions = {m8};
+  SarVariables sv;
+  sv.line = 6, sv.p_apr = {1, 2, 3}, sv.p_aep = {4, 5, 6};
+  ref.variables = {sv};
+  ref.notices = {Notice{6, "TRC-END-1", "compensation selected at the end", 0}};
+  EXPECT_EQ(compare(ref, ref, tolerance()).kind, Verdict::Kind::kAgree);
+  auto expect_diverges = [&](const RunResult& fast, const char* why) {
+    Verdict v = compare(ref, fast, tolerance());
+    EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << why;
+    EXPECT_NE(v.explanation.find(why), std::string::npos) << v.explanation;
+  };
+  RunResult fast = ref;
+  fast.path[0].feed = *Decimal::parse("250").value;  // the SAR infeed's FAD taken for the plane move
+  expect_diverges(fast, "feed 500 vs 250");
+  fast = ref;
+  fast.path[0].origin.sar = SarMove::kElement;
+  expect_diverges(fast, "what it belongs to");
+  fast = ref;
+  fast.actions[0].at = {10, 1e-3, 0};  // M8 one micrometre off where the tool is
+  expect_diverges(fast, "placed 0.001 mm apart");
+  fast = ref;
+  fast.actions[0].function.value = 9;
+  expect_diverges(fast, "M8 at line 6 vs M9");
+  fast = ref;
+  fast.variables[0].p_apdv = -1;
+  expect_diverges(fast, "$P_APDV 1 vs -1");
+  fast = ref;
+  fast.variables[0].p_aep.x += 1e-3;
+  expect_diverges(fast, "SAR variables of line 6");
+  fast = ref;
+  fast.notices.clear();
+  expect_diverges(fast, "different notices");
+}
+
 // covers: PROP-DIFF-2
 TEST(Comparison, AKnifeEdgeDoesNotHideWhatFollowsIt) {
   auto at = [](Decision d, int line) {

@@ -321,9 +321,8 @@ class Compensation {
     Element element;
     double radius = 0;
     Vec2 vertex, normal_start;
-    Vec2 own_start;       // where m's own equidistant piece starts
-    int before_line = 0;  // the predecessor, which names the corner
-    std::optional<std::int64_t> before_number;
+    Vec2 own_start;  // where m's own equidistant piece starts
+    Origin before;   // the predecessor, which names the corner and the rest of its equidistant
     Element before_element;
     double before_radius = 0;
     // pieces[0] leads to m's equidistant: the transition circle, or (G451) the predecessor's
