@@ -202,6 +202,10 @@ std::string to_program(const ContourCase& c) {
                                        : "CHF",
                        fixed(s.corner_value, c.decimals));
     }
+    if (i % 3 == 1) {  // PROP-DIFF-3: the feed changes along the contour (no random draw: the seed's geometry stays)
+      p.pop_back();
+      p += fmt::format(" F{}\n", 300 + 100 * static_cast<int>(i % 5));
+    }
   }
   if (v == 7 && (c.steps.empty() || !c.steps.back().arc || c.steps.back().cr != 0)) {
     // TRC-DESEL-2 when the contour does not end in a centre circle: a half circle deselecting.
