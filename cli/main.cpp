@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
                   "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");
   run->add_option("--tool", o.tool_edges,
                   "one tool edge TOOL[/EDGE]=RADIUS, TOOL a number or a name: --tool 1=5 --tool \"FLAT 10\"/2=4.98 "
-                  "(an end mill; after --tools, repeatable)");
+                  "(an end mill); RADIUS,POSITION a turning tool with that cutting edge position: --tool 2=0.4,3 "
+                  "(after --tools, repeatable)");
   run->add_option("--offsets", o.offsets_file, "settable work offsets ($P_UIFR[n]=CTRANS(X,..,Y,..) lines)");
   run->add_option("--max-loops", o.max_loops,
                   "loop passes and backward jumps before a program counts as running away (NC-PARAM-FLOW-6)")

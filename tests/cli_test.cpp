@@ -442,6 +442,13 @@ TEST(Cli, AToolEdgeGivenOnTheCommandLine) {
   Result unknown = sh_err(kCli + " run " + program);
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.out.find("--tool \"FLAT 10\"=RADIUS"), std::string::npos) << unknown.out;
+  // A turning tool from the command line: the lathe example with --tool instead of its archive.
+  const std::string turning = CUTCOM_SOURCE_DIR "/examples/turning/";
+  std::string lathe = kCli + " run " + turning + "SHAFT.MPF --md 'MD20150[5]=2' --format json";
+  Result archive = sh(lathe + " --tools " + turning + "TO_INI.INI");
+  Result given = sh(lathe + " --tool '\"FINISH_R04\"=0.4,3' --tool '\"FACE_R02\"=0.2,8'");
+  ASSERT_EQ(given.status, 0) << given.out;
+  EXPECT_EQ(nlohmann::json::parse(given.out)["path"], nlohmann::json::parse(archive.out)["path"]);
 }
 
 // covers: CLI-1 NC-ERR-3

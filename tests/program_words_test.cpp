@@ -511,6 +511,20 @@ TEST(ProgramWords, ToolEdgeFromTheCommandLine) {
   EXPECT_EQ(t.find(*flat, 2)->radius, dec("4.98"));
   EXPECT_EQ(t.find(7, 1)->radius, dec("7.5"));
   EXPECT_EQ(t.find(7, 1)->type, dec("140"));
+  // RADIUS,POSITION: a turning tool with its cutting edge position (TOOL-TURN-1).
+  t.define("4=0.4,3");
+  ASSERT_NE(t.find(4, 1), nullptr);
+  EXPECT_EQ(t.find(4, 1)->type, dec("500"));
+  EXPECT_EQ(t.find(4, 1)->position, dec("3"));
+  EXPECT_EQ(t.find(4, 1)->radius, dec("0.4"));
+  for (const char* bad : {"4=0.4,", "4=0.4,10", "4=0.4,2.5", "4=0.4,x"}) {
+    try {
+      t.define(bad);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("cutting edge position"), std::string::npos) << bad << ": " << e.what();
+    }
+  }
   // The program selects the named tool by that name.
   std::istringstream program("T=\"FLAT 10\" D2\nG1 G41 X10 Y0 F100\n");
   ProgramReader reader(program);

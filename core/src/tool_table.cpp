@@ -113,8 +113,17 @@ void ToolTable::define(std::string_view spec) {
   };
   std::size_t eq = spec.rfind('=');
   if (eq == std::string_view::npos) fail(spec.size(), "TOOL[/EDGE]=RADIUS expected, e.g. 3=5 or \"FLAT 10\"/2=4.98");
-  auto radius = Decimal::parse(trim(spec.substr(eq + 1)));
-  if (!radius.value) fail(eq + 1, fmt::format("'{}' is not a radius in mm", trim(spec.substr(eq + 1))));
+  std::string_view value = spec.substr(eq + 1);
+  std::optional<std::int64_t> position;  // TOOL-TURN-1: RADIUS,POSITION makes a turning tool
+  if (std::size_t comma = value.find(','); comma != std::string_view::npos) {
+    auto p = Decimal::parse(trim(value.substr(comma + 1)));
+    position = p.value ? p.value->to_integer() : std::nullopt;
+    if (!position || *position < 1 || *position > 9)
+      fail(eq + 1 + comma + 1, "the cutting edge position after ',' is a whole number 1 … 9 (a turning tool)");
+    value = value.substr(0, comma);
+  }
+  auto radius = Decimal::parse(trim(value));
+  if (!radius.value) fail(eq + 1, fmt::format("'{}' is not a radius in mm", trim(value)));
   std::string_view tool = trim(spec.substr(0, eq));
   std::int64_t edge = 1;
   if (std::size_t slash = tool.rfind('/'); slash != std::string_view::npos) {
@@ -147,7 +156,12 @@ void ToolTable::define(std::string_view spec) {
     names_[std::string(tool)] = number;
   }
   EdgeData& e = edges_[{number, edge}];
-  if (e.type.is_zero()) e.type = e.values[1] = Decimal::from_int(120);  // an end mill unless the table says
+  if (position) {  // a turning tool (type 500) with its cutting edge position $TC_DP2
+    e.type = e.values[1] = Decimal::from_int(500);
+    e.position = e.values[2] = Decimal::from_int(*position);
+  } else if (e.type.is_zero()) {
+    e.type = e.values[1] = Decimal::from_int(120);  // an end mill unless the table says
+  }
   e.radius = e.values[6] = *radius.value;
 }
 
