@@ -651,15 +651,17 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   }
   if (ref.actions.size() != fast.actions.size()) return diverge("different actions");
   // PROP-DIFF-3: actions run where the tool is, SAR's variables are the tool's positions: the
-  // same within the tolerance (after touching carriers, within the touching tolerance).
+  // same within the tolerance (after touching carriers, within the touching tolerance); after a
+  // knife edge, those of the blocks after the line where the runs met again (PROP-DIFF-2).
   double at_most = touch && v.kind == Verdict::Kind::kKnifeEdge ? tol.touching : tol.coordinate;
+  auto placed_apart = [&](int line, double e) { return (resumed < 0 || line > resumed) && !(e <= at_most); };
   for (std::size_t i = 0; i < ref.actions.size(); ++i) {
     const ActionEvent& r = ref.actions[i];
     const ActionEvent& f = fast.actions[i];
     if (r.line != f.line || r.function.name() != f.function.name())
       return diverge(fmt::format("action {}: {} at line {} vs {} at line {}", i, r.function.name(), r.line,
                                  f.function.name(), f.line));
-    if (double e = distance(r.at, f.at); !(e <= at_most))
+    if (double e = distance(r.at, f.at); placed_apart(r.line, e))
       return diverge(fmt::format("action {} ({} at line {}) placed {:.3g} mm apart", i, r.function.name(), r.line, e));
   }
   if (ref.variables.size() != fast.variables.size()) return diverge("different SAR variables");
@@ -667,7 +669,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     const SarVariables& r = ref.variables[i];
     const SarVariables& f = fast.variables[i];
     double e = std::max(distance(r.p_apr, f.p_apr), distance(r.p_aep, f.p_aep));
-    if (r.line != f.line || r.p_apdv != f.p_apdv || !(e <= at_most))
+    if (r.line != f.line || r.p_apdv != f.p_apdv || placed_apart(r.line, e))
       return diverge(fmt::format("SAR variables of line {}: $P_APR/$P_AEP {:.3g} mm apart, $P_APDV {} vs {}", r.line, e,
                                  r.p_apdv, f.p_apdv));
   }
