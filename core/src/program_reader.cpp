@@ -321,23 +321,7 @@ void ProgramReader::change_tool(Block& b, ModalState& s) {
     s.edge_defined = e != nullptr;
     s.edge_radius = e ? e->radius : Decimal{};
     s.edge_wear = e ? e->wear : Decimal{};
-    s.edge_position = 0;
-    if (e && e->type >= Decimal::from_int(500) && e->type < Decimal::from_int(600)) {
-      // TOOL-TURN-1: a turning tool's tip offset from the edge centre (positions 1 … 8).
-      const Decimal& p = e->position;
-      int position = -1;
-      for (int k = 0; k <= 9; ++k)
-        if (p == Decimal::from_int(k)) position = k;
-      if (position < 0)
-        fail(fmt::format("T{} D{}: cutting edge position {} ($TC_DP2) is not a whole number 0 … 9", s.tool, s.edge,
-                         p.to_string()));
-      s.edge_position = static_cast<std::int8_t>(position % 9);  // 9: the edge centre is the reference
-      if (s.edge_position != 0 && (e->radius + e->wear) < Decimal::from_int(0))
-        fail(
-            fmt::format("T{} D{} is a turning tool with cutting edge position {} and a negative radius "
-                        "($TC_DP6 + $TC_DP15): cutcom does not simulate that tool tip",
-                        s.tool, s.edge, p.to_string()));
-    }
+    s.edge_position = edge_position_of(e, s, w.line);  // TOOL-TURN-1
   }
 }
 

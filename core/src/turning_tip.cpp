@@ -8,6 +8,7 @@
 
 #include <array>
 
+#include "cutcom/input_error.hpp"
 #include "cutcom/reader.hpp"
 
 namespace cutcom {
@@ -48,6 +49,22 @@ std::string direction_text(PlaneAxes ax, int position) {
 }
 
 }  // namespace
+
+std::int8_t ProgramReader::edge_position_of(const EdgeData* e, const ModalState& s, int line) {
+  if (!e || e->type < Decimal::from_int(500) || e->type >= Decimal::from_int(600)) return 0;
+  std::optional<std::int64_t> p = e->position.to_integer();
+  if (!p || *p < 0 || *p > 9)
+    throw InputError(line, 1,
+                     fmt::format("T{} D{}: cutting edge position {} ($TC_DP2) is not a whole number 0 … 9", s.tool,
+                                 s.edge, e->position.to_string()));
+  if (*p == 0 || *p == 9) return 0;  // the edge centre is the reference
+  if (e->radius + e->wear < Decimal::from_int(0))
+    throw InputError(line, 1,
+                     fmt::format("T{} D{} is a turning tool with cutting edge position {} and a negative radius "
+                                 "($TC_DP6 + $TC_DP15): cutcom does not simulate that tool tip",
+                                 s.tool, s.edge, *p));
+  return static_cast<std::int8_t>(*p);
+}
 
 void ProgramReader::tool_tip_offset(Block& b) {
   b.tip_shift_start = b.tip_shift_end = Point3{};

@@ -324,7 +324,7 @@ class WordLexer {
   // T (TOOL-NAME-1): T5, T=5, T="NAME", T1=5 (tool for spindle 1).
   void tool(std::size_t at);
   void rotary_axis(const std::string& n, std::size_t at);
-  bool reference_axis(const std::string& n, std::size_t at);
+  bool axis_as_action(const std::string& n, std::size_t at);
   void plane_axis_after_rotary(std::size_t at);
   void orientation(const std::string& n, std::size_t at);
   // `(…)` after a word, if there: read whole (balanced); false (nothing read) otherwise.

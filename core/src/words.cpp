@@ -324,18 +324,18 @@ void WordLexer::word() {
         ++i_;
         return orientation(name, at);
       }
-      if (reference_axis(n, at)) return;
+      if (axis_as_action(n, at)) return;
       return rotary_axis(n, at);
     case 'X':
-      if (reference_axis(n, at)) return;
+      if (axis_as_action(n, at)) return;
       plane_axis_after_rotary(at);
       return positional(out_.axis[0], "X", at, true, false);
     case 'Y':
-      if (reference_axis(n, at)) return;
+      if (axis_as_action(n, at)) return;
       plane_axis_after_rotary(at);
       return positional(out_.axis[1], "Y", at, true, false);
     case 'Z':
-      if (reference_axis(n, at)) return;
+      if (axis_as_action(n, at)) return;
       plane_axis_after_rotary(at);
       return positional(out_.axis[2], "Z", at, true, false);
     case 'I':
@@ -363,9 +363,10 @@ void WordLexer::word() {
   fail(unknown_message(n), at);
 }
 
-// NC-CYCLE-1: G74 X1=0 Y1=0 (reference point), G75 FP=2 Z1=0 (fixed point): the axes with the
-// extension 1 say which axes move there, kept as written; the move is not simulated.
-bool WordLexer::reference_axis(const std::string& n, std::size_t at) {
+// An axis word that is no position, kept as written: NC-WORD-7, an axis after G25/G26 (the working
+// area's limit); NC-CYCLE-1, G74 X1=0 Y1=0 (reference point), G75 FP=2 Z1=0 (fixed point), the
+// axes with the extension 1 that move there (the move is not simulated). False: a position.
+bool WordLexer::axis_as_action(const std::string& n, std::size_t at) {
   if (area_limit_) {  // NC-WORD-7: G25/G26 X… Y… Z…: the working area's limits, no motion
     equals();
     number(n);

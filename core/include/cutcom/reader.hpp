@@ -157,8 +157,10 @@ class ProgramReader : private SystemValues {
   void finish_pending(Block* next);
   void push_ready(Block&& b);
   bool pop_ready(Block& out);
-  // TOOL-TURN-1: the compensated contour moved to where a turning tool's tip runs.
+  // TOOL-TURN-1: the compensated contour moved to where a turning tool's tip runs; the cutting
+  // edge position of an edge (0 unless a turning tool's 1 … 8).
   void tool_tip_offset(Block& b);
+  static std::int8_t edge_position_of(const EdgeData* e, const ModalState& s, int line);
 
   std::istream& in_;
   Interpreter interpreter_;  // NC-PARAM-*: variables, expressions and control flow before the words
