@@ -19,7 +19,7 @@ namespace {
 // The corner mode of a contour block, and the new side where it changes.
 std::string side_word(const Step& s, bool right) {
   std::string w = s.g451 ? "G451" : "G450";
-  if (s.flip) w += right ? " G42" : " G41";
+  if (s.flip || s.again) w += right ? " G42" : " G41";
   return w;
 }
 }  // namespace

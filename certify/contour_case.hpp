@@ -18,6 +18,7 @@ struct Step {
   std::int64_t ci = 0, cj = 0;  // centre relative to the block's start (I, J in the plane)
   std::int64_t cr = 0;          // != 0: the circle is written with CR= instead
   bool flip = false;            // the block changes G41 <-> G42 (TRC-SIDE-1)
+  bool again = false;           // the block programs the same G41/G42 again (TRC-SIDE-2)
   // NC-CONTOUR-1: 1 RND, 2 CHR, 3 CHF at the block's end corner, of `corner_value` (case units).
   int corner = 0;
   std::int64_t corner_value = 0;

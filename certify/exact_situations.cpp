@@ -25,7 +25,7 @@ void exact_frame(ContourCase& c) {
   c.decimals = 9;
   c.start_x *= 1000, c.start_y *= 1000, c.first_x *= 1000, c.first_y *= 1000, c.end_x *= 1000, c.end_y *= 1000;
   c.radius_um = c.radius_um == 0 ? kMm : std::abs(c.radius_um) * 1000;
-  for (Step& st : c.steps) st.flip = false, st.dummies = 0;
+  for (Step& st : c.steps) st.flip = st.again = false, st.dummies = 0;
   c.plane = 17;
 }
 

@@ -43,8 +43,11 @@ void common(ContourCase& c) {
   for (std::size_t i = 0; i < c.steps.size(); ++i) {
     Step& s = c.steps[i];
     // Never in the first contour block after a selection (not supported there): not in the first
-    // step, nor right after another flip (that block is a selection block).
-    s.flip = i > 0 && !c.steps[i - 1].flip && *inRange(0, 12) == 0;
+    // step, nor right after another flip or G41/G42 again (that block is a selection block). One
+    // draw decides both, so the cases of a seed stay those of the campaigns before TRC-SIDE-2.
+    int side_draw = i > 0 && !c.steps[i - 1].flip ? *inRange(0, 12) : -1;
+    s.flip = side_draw == 0 && !c.steps[i - 1].again;
+    s.again = side_draw == 1 && !s.arc && !c.steps[i - 1].again;  // a circle would only add alarms 10753
     s.g451 = *inRange(0, 3) == 0;
     // TRC-DUMMY-2: now and then a run of exactly MD20250 (5) blocks without plane motion, the
     // most allowed, or one more (alarm 10762).
@@ -376,7 +379,7 @@ rc::Gen<ContourCase> bottleneck() {
       c.steps.push_back(step(*inRange<std::int64_t>(3, 9) * r, 0));
     }
     common(c);
-    for (Step& s : c.steps) s.flip = false;
+    for (Step& s : c.steps) s.flip = s.again = false;
     c.right = *inRange(0, 4) == 0;  // G42: the recesses are bumps for the tool
     c.cdon = true;
     c.md20240 = most + *inRange(2, 4);

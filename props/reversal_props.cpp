@@ -14,7 +14,7 @@ namespace {
 // covers: PROP-META-6 TRC-KONT-1 TRC-KONT-3 TRC-KONT-4 TRC-APPR-NORM-1 TRC-RETR-NORM-1
 RC_GTEST_PROP(Metamorphic, ReversingTheContourSwapsApproachAndRetraction, ()) {
   ContourCase c = *around_ends();
-  for (Step& s : c.steps) s.dummies = 0, s.flip = false;  // one selection, one deselection
+  for (Step& s : c.steps) s.dummies = 0, s.flip = s.again = false;  // one selection, one deselection
   RC_TAG(c.style);
   // A full circle next to a too-short end block is measured from its normal start on approach
   // (its end is not known yet) and from the open element's start on retraction: the two may pick

@@ -300,9 +300,10 @@ TEST(SliceExamples, AJobRunsOnAfterG40WithoutPlaneAxis) {
   // The blocks between G40 Z100 and the next plane move are no empty blocks of an active
   // compensation: more of them than MD20250 (5) raise no alarm 10762. N130 selects again from
   // where the tool is.
-  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G0 G40 Z100\nN50 M5\nN60 M9\nN70 T1 M6\n"
-                            "N80 S1000 M3\nN90 M8\nN100 G4 F2\nN110 Z50\nN120 X30 Y0\nN130 G1 G41 X40 Y0\n"
-                            "N140 X50\nN150 G40 X60 Y-10\n"));
+  Runs r =
+      run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G0 G40 Z100\nN50 M5\nN60 M9\nN70 T1 M6\n"
+                       "N80 S1000 M3\nN90 M8\nN100 G4 F2\nN110 Z50\nN120 X30 Y0\nN130 G1 G41 X40 Y0\n"
+                       "N140 X50\nN150 G40 X60 Y-10\n"));
   ASSERT_TRUE(r.fast.alarms.empty());
   expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
                   line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kRetraction, {10, 2, 0}, {10, 2, 100}),
@@ -404,7 +405,7 @@ TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
       {program("N20 G1 G41 KONTC X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},
-      {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G41 X20\n"), 6},
+      {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X20\n"), 6},  // G41 again is TRC-SIDE-2
   };
   for (const auto& [text, line_no] : cases) expect_not_supported(text, line_no);
 }
@@ -435,6 +436,40 @@ TEST(SliceExamples, SideChangeWithoutG40IsANewSelection) {
                   line(K::kOffset, {10, 8, 0}, {20, 8, 0}), line(K::kRetraction, {20, 8, 0}, {30, 10, 0})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-SIDE-1", "side-change"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-SIDE-1", "side-change"));
+}
+
+// covers: TRC-SIDE-2
+TEST(SliceExamples, TheSameG41AgainIsANewSelection) {
+  // N30 (+X, left) ends at its normal end (10,2). N40 programs G41 again: a selection block from
+  // the tool at (10,2) to the normal point of N50 (+X, left normal (0,1)) at (10,10): (10,12).
+  // N50's equidistant y = 12 to (20,12), then G40 to (30,10). Without N40's G41 the corner at
+  // (10,0) and (10,10) would be intersections instead: (8,2), (8,12).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G41 X10 Y10\nN50 X20\nN60 G40 X30 Y10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kApproach, {10, 2, 0}, {10, 12, 0}),
+                  line(K::kOffset, {10, 12, 0}, {20, 12, 0}), line(K::kRetraction, {20, 12, 0}, {30, 10, 0})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-SIDE-2", "selected-again"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-SIDE-2", "selected-again"));
+}
+
+// covers: TRC-SIDE-2 TRC-UNSUP-1
+TEST(SliceExamples, AnEdgeProgrammedWithG41AgainStartsWithItsRadius) {
+  // D2 (r = 3) comes with G41 alone in N40: no plane axis, so N40 and N45 (Z1) are held back and
+  // run at N30's normal end (10,2); N50 is the selection block, to (10,10) + 3 (0,1) = (10,13).
+  std::string body =
+      "$TC_DP1[1,2]=120\n$TC_DP6[1,2]=3\n"
+      "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G41 D2\nN45 Z1\nN50 X10 Y10\nN55 X20\nN60 G40 X30 Y10\n";
+  Runs r = run_both(program(body));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kInfeed, {10, 2, 0}, {10, 2, 1}),
+                  line(K::kApproach, {10, 2, 1}, {10, 13, 1}), line(K::kOffset, {10, 13, 1}, {20, 13, 1}),
+                  line(K::kRetraction, {20, 13, 1}, {30, 10, 1})});
+  EXPECT_TRUE(has_decision(r.ref, "TRC-SIDE-2", "no-plane-axis"));
+  EXPECT_TRUE(has_decision(r.fast, "TRC-SIDE-2", "no-plane-axis"));
+  // Without the G41 the D change is a radius blend over the block: not supported (decision 30);
+  // G41 again before the first contour block: not supported either.
+  expect_not_supported(program("$TC_DP6[1,2]=3\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X10 Y10\nN50 G40 X30\n"), 7);
+  expect_not_supported(program("N20 G1 G41 X0 Y0 F100\nN30 G41 X10\nN40 X20\nN50 G40 X30\n"), 5);
 }
 
 }  // namespace

@@ -409,7 +409,10 @@ void ProgramReader::resolve(Block& b) {
   if ((w.motion || w.cw().circle_definition) && !tapping_block) thread_ = w.thread ? *w.thread : 0;
   if (w.plane) s.plane = *w.plane, plane_programmed_ = true;
   if (w.absolute) s.absolute = *w.absolute;
-  if (w.side) s.side = *w.side;
+  if (w.side) {
+    s.side = *w.side;
+    if (s.side != Side::kOff) ++s.selection;  // TRC-SIDE-2
+  }
   // NC-WORD-8: a rotary axis with X, Y or Z. Without compensation X, Y and Z move as programmed
   // while it turns (a notice says what the path is not); with compensation it is 4/5-axis motion
   // along the contour, not simulated.

@@ -39,12 +39,13 @@ void Compensation::compensation_off(const Block& b) {
 }
 
 void Compensation::change_side(const Block& b) {
+  bool again = b.state.side == side;             // TRC-SIDE-2: the same G41/G42 programmed again
   if (b.is_arc()) return raise(10753, b.words);  // TRC-SEL-2
   if (!b.programs_plane_axis()) {
-    decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
+    decide(again ? "TRC-SIDE-2" : "TRC-SIDE-1", b.words.line, "no-plane-axis");
     return hold_back(b);
   }
-  decide("TRC-SIDE-1", b.words.line, "side-change");
+  decide(again ? "TRC-SIDE-2" : "TRC-SIDE-1", b.words.line, again ? "selected-again" : "side-change");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!close_open(end, BlockPlace::of(b.words), true)) return;
   run_held_back(end);
@@ -62,6 +63,7 @@ void Compensation::select(const Block& b) {
   plane = b.state.plane;
   axes = plane_axes(plane);
   side = b.state.side;
+  selection_word = b.state.selection;
   edge = ActiveEdge::of(b.state);
   CompensationSide cs = compensation_side(b.state);  // TRC-RADIUS-2 (decided in core)
   decide(cs.decision, b.words.line);
@@ -88,8 +90,8 @@ bool Compensation::still_compensable(const Block& b) {
     raise(10757, b.words);
     return false;
   }
-  if (b.state.side != side) return true;  // TRC-SIDE-1, handled by the caller
-  reject_change_while_active(b, edge);    // TRC-UNSUP-1
+  if (anew(b)) return true;             // TRC-SIDE-1/2, handled by the caller
+  reject_change_while_active(b, edge);  // TRC-UNSUP-1
   return true;
 }
 
@@ -264,7 +266,7 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
 void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
   const BlockCopy* current = nullptr;  // a traversing block, converted once
-  if (b.state.side == side && b.moves_in_plane()) {
+  if (b.state.side == side && !anew(b) && b.moves_in_plane()) {
     int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
     copy_into(prev_blocks[static_cast<std::size_t>(slot)], b);
     const BlockCopy& before = prev_blocks[static_cast<std::size_t>(prev_slot)];
@@ -275,7 +277,7 @@ void Compensation::compensation_active(const Block& b) {
     if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(*current, before)) return;
   }
   if (looking) return look_ahead(b, current);
-  if (b.state.side != Side::kOff && b.state.side != side) return change_side(b);
+  if (anew(b)) return change_side(b);
   if (b.state.side == Side::kOff) {
     if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
@@ -376,7 +378,7 @@ void Compensation::start_look_ahead(const Block& too_short) {
 
 void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
-  if (b.state.side != side && b.state.side != Side::kOff) {  // the contour ends before an intersection
+  if (anew(b)) {  // the contour ends before an intersection
     decide("TRC-LOOK-2", b.words.line, "none");
     return raise(10751, b.words);
   }

@@ -63,9 +63,10 @@ class Compensation {
   PlaneAxes axes{0, 1, 2};
   Plane plane = Plane::kG17;
   Side side = Side::kOff;
-  int s = 0;           // +1 left, -1 right (after TRC-RADIUS-2)
-  double r = 0;        // |effective radius|
-  Int128 r_units = 0;  // the same, exactly, in 10^-9 mm (TRC-KONT-2 decides on it)
+  std::uint32_t selection_word = 0;  // the G41/G42 word that selected (TRC-SIDE-2)
+  int s = 0;                         // +1 left, -1 right (after TRC-RADIUS-2)
+  double r = 0;                      // |effective radius|
+  Int128 r_units = 0;                // the same, exactly, in 10^-9 mm (TRC-KONT-2 decides on it)
   ActiveEdge edge;
 
   BlockCopy selection;  // kApproach: the selection block
@@ -221,9 +222,11 @@ class Compensation {
   // --- phase: compensation off -----------------------------------------------------------------
   void compensation_off(const Block& b);
 
-  // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40: the old side's last element ends at its normal
-  // end point; the first new-side block with a plane axis is a selection block from the tool.
+  // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40; TRC-SIDE-2: the same G41/G42 again. The old
+  // selection's last element ends at its normal end point; the first block of the new one with a
+  // plane axis is a selection block from the tool.
   void change_side(const Block& b);
+  bool anew(const Block& b) const { return selects_anew(b.state, side, selection_word); }
 
   void select(const Block& b);
 

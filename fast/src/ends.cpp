@@ -17,9 +17,9 @@ void Compensation::approach(const Block& b) {
     return compensation_off(b);
   }
   if (!still_compensable(b)) return;
-  if (b.state.side != side)
+  if (anew(b))
     throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "change of compensation side G41/G42 before the first contour block");
+        b.words.line, "G41/G42 changed or programmed again before the first contour block");
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   prev_slot ^= 1;
   copy_into(prev_blocks[static_cast<std::size_t>(prev_slot)], b);

@@ -82,10 +82,11 @@ ClearanceCheck exact_clearance(const std::string& program, const MachineData& md
   std::vector<int> lines;
   Block b;
   Side before = Side::kOff;
+  std::uint32_t selection = 0;
   PlaneAxes axes{0, 1, 2};
   while (blocks.next(b)) {
-    bool compensated = b.state.side != Side::kOff && before == b.state.side;
-    before = b.state.side;
+    bool compensated = b.state.side != Side::kOff && !selects_anew(b.state, before, selection);
+    before = b.state.side, selection = b.state.selection;
     if (!compensated || !b.moves_in_plane()) continue;
     if (b.is_arc()) return out;  // straight contours only
     axes = plane_axes(b.state.plane);

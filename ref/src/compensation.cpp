@@ -88,12 +88,13 @@ void Compensation::compensation_off(const Block& b) {
 }
 
 void Compensation::change_side(const Block& b) {
-  if (b.is_arc()) return raise(10753, b);  // TRC-SEL-2: the new selection needs a linear block
+  bool again = b.state.side == comp_->side;  // TRC-SIDE-2: the same G41/G42 programmed again
+  if (b.is_arc()) return raise(10753, b);    // TRC-SEL-2: the new selection needs a linear block
   if (!b.programs_plane_axis()) {
-    decide("TRC-SIDE-1", b.words.line, "no-plane-axis");
+    decide(again ? "TRC-SIDE-2" : "TRC-SIDE-1", b.words.line, "no-plane-axis");
     return hold_back(b);
   }
-  decide("TRC-SIDE-1", b.words.line, "side-change");
+  decide(again ? "TRC-SIDE-2" : "TRC-SIDE-1", b.words.line, again ? "selected-again" : "side-change");
   Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
   if (!close_open(end, b, true)) return;
   run_held_back(end);
@@ -113,8 +114,8 @@ void Compensation::select(const Block& b) {
   decide(side.decision, b.words.line);
   int s = side.s;
   Decimal r = side.r;
-  comp_ =
-      InForce{b.state.plane, plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r, ActiveEdge::of(b.state)};
+  comp_ = InForce{b.state.plane,           plane_axes(b.state.plane), b.state.side, s, FT(s) * leaf(r), r,
+                  ActiveEdge::of(b.state), b.state.selection};
   selection_ = &b;
   prev_block_ = nullptr;
   approach_search_.reset();
@@ -134,8 +135,8 @@ bool Compensation::still_compensable(const Block& b) {
     raise(10757, b);
     return false;
   }
-  if (b.state.side != comp_->side) return true;  // TRC-SIDE-1, handled by the caller
-  reject_change_while_active(b, comp_->edge);    // TRC-UNSUP-1
+  if (anew(b)) return true;                    // TRC-SIDE-1/2, handled by the caller
+  reject_change_while_active(b, comp_->edge);  // TRC-UNSUP-1
   return true;
 }
 
@@ -167,23 +168,23 @@ void Compensation::waiting_for_contour(const Block& b) {
     return compensation_off(b);
   }
   if (!still_compensable(b)) return;
-  if (b.state.side != comp_->side)
+  if (anew(b))
     throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "change of compensation side G41/G42 before the first contour block");
+        b.words.line, "G41/G42 changed or programmed again before the first contour block");
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   approach(b);
 }
 
 void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
-  if (b.state.side == comp_->side && b.moves_in_plane()) {
+  if (b.state.side == comp_->side && !anew(b) && b.moves_in_plane()) {
     const Block* before = prev_block_;
     prev_block_ = &b;
     if (approach_search_ && approach_further_ahead(b)) return;
     if (b.state.collision == CollisionMode::kCdon && before && bottleneck(b, *before)) return;
   }
   if (looking_) return look_ahead(b);
-  if (b.state.side != Side::kOff && b.state.side != comp_->side) return change_side(b);
+  if (anew(b)) return change_side(b);
   if (b.state.side == Side::kOff) {
     if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
@@ -363,7 +364,7 @@ void Compensation::start_look_ahead(const Block& too_short) {
 
 void Compensation::look_ahead(const Block& b) {
   if (b.state.side == Side::kOff && b.programs_plane_axis()) return retract_edge(b);  // TRC-EDGE-1
-  if (b.state.side != comp_->side && b.state.side != Side::kOff) {  // the contour ends before an intersection
+  if (anew(b)) {  // the contour ends before an intersection
     decide("TRC-LOOK-2", b.words.line, "none");
     return raise(10751, b);
   }

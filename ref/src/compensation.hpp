@@ -61,6 +61,7 @@ class Compensation {
     FT side_radius;  // s * r, r = |effective radius| in units
     Decimal radius;  // r
     ActiveEdge edge;
+    std::uint32_t selection;  // the G41/G42 word that selected (TRC-SIDE-2)
   };
 
   // --- trace, alarms, output ---------------------------------------------------------------------
@@ -122,10 +123,12 @@ class Compensation {
   // TRC-SEL-*: may this block select compensation?
   void compensation_off(const Block& b);
 
-  // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40. The last element of the old side ends at its
-  // normal end point (blocks held back run there); the first block with the new side that
-  // programs a plane axis is a selection block (NORM) starting where the tool is.
+  // TRC-SIDE-1 (decision 30): G41 <-> G42 without G40; TRC-SIDE-2: the same G41/G42 again. The
+  // last element of the old selection ends at its normal end point (blocks held back run there);
+  // the first block of the new one that programs a plane axis is a selection block (NORM)
+  // starting where the tool is.
   void change_side(const Block& b);
+  bool anew(const Block& b) const { return selects_anew(b.state, comp_->side, comp_->selection); }
 
   // Where the selection block starts: its programmed start, or the tool after a side change.
   ExactPoint selection_start() const { return selection_from_ ? *selection_from_ : start_of(*selection_); }

@@ -213,6 +213,9 @@ struct ModalState {
   Plane plane = Plane::kG17;
   bool absolute = true;
   Side side = Side::kOff;
+  // TRC-SIDE-2: counts the G41/G42 words read so far. While compensation is active, a block whose
+  // count differs from the selection's selects anew (the same side programmed again).
+  std::uint32_t selection = 0;
   ApproachMode approach = ApproachMode::kNorm;
   CornerMode corner = CornerMode::kG450;
   Decimal disc;

@@ -31,10 +31,15 @@ inline void reject_kontc_kontt(const Block& b, bool retraction) {
                                                     : "KONTC/KONTT approach (needs polynomial output)");
 }
 
+// TRC-SIDE-1, TRC-SIDE-2: while compensation is active with `side` since the G41/G42 word counted
+// `selection`, a block selects anew when it is on the other side or programs G41/G42 again.
+inline bool selects_anew(const ModalState& s, Side side, std::uint32_t selection) {
+  return s.side != Side::kOff && (s.side != side || s.selection != selection);
+}
+
 // TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
-// (decision 30): re-select G41/G42, change the tool edge, or ask for KONTC/KONTT.
+// (decision 30): change the tool edge, or ask for KONTC/KONTT.
 inline void reject_change_while_active(const Block& b, const ActiveEdge& active) {
-  if (b.words.side) throw UnsupportedError(b.words.line, "re-selection of G41/G42 while compensation is active");
   if (!(ActiveEdge::of(b.state) == active))
     throw UnsupportedError(b.words.line, "change of tool, D number, DL or OFFN while compensation is active");
   reject_kontc_kontt(b, false);
