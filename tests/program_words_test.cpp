@@ -341,6 +341,11 @@ TEST(ProgramWords, DwellTakesItsFAsTimeNotFeed) {
   EXPECT_EQ(b[1].state.feed, dec("300"));
   EXPECT_EQ(b[2].state.feed, dec("300"));
   EXPECT_THROW(read("G4 F2 X10\n"), InputError);
+  // S in a G4 block counts spindle revolutions: part of the dwell, not a speed of its own.
+  auto c = read("S1000 M3\nG4 S10\nM5 G4 S=2.5\n");
+  EXPECT_EQ(actions(c[0]), (std::vector<std::string>{"S1000", "M3"}));
+  EXPECT_EQ(actions(c[1]), (std::vector<std::string>{"G4 S10"}));
+  EXPECT_EQ(actions(c[2]), (std::vector<std::string>{"M5", "G4 S=2.5"}));
 }
 
 // covers: NC-UNIT-1 NC-UNIT-2

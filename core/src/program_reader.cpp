@@ -2,6 +2,7 @@
 // of blocks into exact positions in one coordinate system, and the tool data in force.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -484,6 +485,14 @@ void ProgramReader::resolve(Block& b) {
     if (w.programs_any_axis()) fail("G4 (dwell) must stand in a block without axis words");
     std::string text = w.feed ? fmt::format("G4 F{}", w.feed->to_string()) : "G4";
     w.feed.reset();
+    for (int k = 0; k < w.aux_count; ++k) {  // G4 S…: spindle revolutions of dwell, not a speed
+      std::string& t = w.aux[static_cast<std::size_t>(k)].text;
+      if (w.aux[static_cast<std::size_t>(k)].address != 0 || t.empty() || (t[0] != 'S' && t[0] != 's')) continue;
+      text += " " + t;
+      std::rotate(w.aux.begin() + k, w.aux.begin() + k + 1, w.aux.begin() + w.aux_count);
+      --w.aux_count;
+      break;
+    }
     AuxFunction a;
     a.address = 0, a.text = text;
     if (w.aux_count == BlockWords::kMaxAux) fail("too many actions in one block");
