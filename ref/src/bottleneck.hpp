@@ -10,6 +10,7 @@
 
 #include "circle_position.hpp"
 #include "equidistant.hpp"
+#include "filtered.hpp"
 
 namespace cutcom::ref {
 
@@ -47,24 +48,6 @@ struct PieceCrossing {
 };
 // `from`: the first entry piece compared (a lead piece of the predecessor is not compared with its
 // neighbour's pieces).
-// The floating-point filter's value of an exact number, computed when it was built: enough to
-// pick the least or largest of exact margins. CGAL::to_double would evaluate the expression to 53
-// bits, which costs CORE a root-bound evaluation wherever an inner difference is exactly zero.
-// The value counts only within its error bound (1e-6 relative or 2^-30 units): a square root of an
-// uncertain or NaN value leaves 0 with an infinite bound (campaign case 215678: a chord of 3.5 mm
-// read 0). Otherwise an evaluation to 2^-64 units absolute (not to_double's 53 relative bits,
-// which an exact zero pushes to 2^-1024).
-inline double rough(const FT& x) {
-  const CORE::filteredFp& f = x.Rep()->ffVal;
-  double v = f.getValue();
-  if (std::isfinite(v)) {
-    // The bound is private: it is within delta when v and v + delta have told signs apart.
-    double delta = std::max(std::fabs(v) * 1e-6, std::ldexp(1.0, -30));
-    if ((f - CORE::filteredFp(v + delta)).isOK()) return v;
-  }
-  return x.approx(CORE::extLong(53), CORE::extLong(64)).doubleValue();
-}
-
 // The largest near miss so far; a crossing's margin, lowered to a nearer miss before it.
 inline void keep_largest(std::optional<FT>& near, const std::optional<FT>& miss) {
   if (miss && (!near || rough(*near) < rough(*miss))) near = miss;

@@ -5,6 +5,7 @@
 #include "compensation.hpp"
 
 #include "arc_check.hpp"
+#include "filtered.hpp"
 
 namespace cutcom::ref::detail {
 
@@ -339,7 +340,7 @@ Compensation::Extent Compensation::extent_of(const ContourElement& e, const FT& 
     // Signs on the lengths times |d| (no square root in the exact zero tests).
     FT along_d = (p - start) * e.d, left_d = e.d * e.d - along_d;
     x.before_start = CGAL::sign(along_d), x.after_end = CGAL::sign(left_d);
-    x.start_nearer = CGAL::compare(along_d, left_d) == CGAL::SMALLER;
+    x.start_nearer = margin_less(along_d, left_d);  // picks a margin only (filtered.hpp)
     x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
   } else {
     CircleFrame f(e.a - e.centre, e.sense);

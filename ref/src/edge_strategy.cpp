@@ -2,6 +2,7 @@
 
 #include "circle_position.hpp"
 #include "exact_root.hpp"
+#include "filtered.hpp"
 
 namespace cutcom::ref {
 
@@ -67,7 +68,7 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
   if (curve.carrier.circle && CGAL::sign(curve.carrier.radius) == CGAL::ZERO) return out;
   if (!curve.carrier.circle && CGAL::sign(curve.carrier.direction.squared_length()) == CGAL::ZERO) return out;
   auto least = [](std::optional<FT>& m, const FT& v) {
-    if (!m || CGAL::compare(v, *m) == CGAL::SMALLER) m = v;
+    if (!m || margin_less(v, *m)) m = v;  // a margin, reported only: filtered
   };
   Carrier<Kernel> ce = carrier_of(e, radius, side_radius);
   std::optional<FT> depth;  // none: unbounded (two lines)
@@ -105,12 +106,12 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
       if (on_piece) {
         least(m, to_start), least(m, to_end);
       } else {  // outside: the nearer of the two ends
-        least(m, -(CGAL::compare(to_start, to_end) == CGAL::SMALLER ? to_start : to_end));
+        least(m, -(margin_less(to_start, to_end) ? to_start : to_end));
       }
     }
     bool valid = on_curve(curve, p) && on_piece;
     if (!valid) {
-      if (!none_margin || (m && CGAL::compare(*m, *none_margin) == CGAL::LARGER)) none_margin = m;
+      if (!none_margin || (m && margin_less(*none_margin, *m))) none_margin = m;
       continue;
     }
     bool better = !out.point;
