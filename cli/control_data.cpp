@@ -33,6 +33,7 @@ void ControlData::into(cutcom::ProgramReader& reader) const {
   reader.tools() = tools;
   reader.offsets() = offsets;
   reader.set_limits(limits);
+  reader.set_skip_levels(skip_levels);
   reader.set_search_path(search_path);
   for (const auto& [file, text] : definitions) {
     std::istringstream in(text);
@@ -74,6 +75,7 @@ ControlData control_data(const RunOptions& o) {
   }
   if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
   c.limits.max_backward_jumps = o.max_loops;
+  for (int level : o.skip_levels) c.skip_levels |= static_cast<std::uint16_t>(1u << level);
   for (const auto& f : o.definition_files) {
     if (std::filesystem::is_directory(f)) throw FileError(fmt::format("definitions file '{}' is a directory", f));
     std::ifstream in(f);

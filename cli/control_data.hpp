@@ -32,6 +32,7 @@ struct RunOptions {
   std::vector<std::string> tool_edges;  // TOOL-FILE-2
   std::vector<std::string> definition_files;
   std::optional<std::string> arguments;
+  std::vector<int> skip_levels;  // NC-WORD-2: --skip
 };
 
 // A data file given on the command line is wrong: names the file and line (exit 2).
@@ -49,6 +50,7 @@ struct ControlData {
   std::vector<std::pair<std::string, std::string>> definitions;  // NC-PARAM-VAR-3: (file, text)
   std::optional<std::string> arguments;                          // NC-PARAM-SUB-5
   std::map<std::string, std::string> machine_values;             // NC-PARAM-SYS-4
+  std::uint16_t skip_levels = 0;                                 // NC-WORD-2: bit n, level /n on
   void into(cutcom::ProgramReader& reader) const;                // the reader set up as `cutcom run` sets it up
 };
 

@@ -31,6 +31,10 @@ int main(int argc, char** argv) {
                   "(an end mill); RADIUS,POSITION a turning tool with that cutting edge position: --tool 2=0.4,3 "
                   "(after --tools, repeatable)");
   run->add_option("--offsets", o.offsets_file, "settable work offsets ($P_UIFR[n]=CTRANS(X,..,Y,..) lines)");
+  run->add_option("--skip", o.skip_levels,
+                  "skip level switched on: blocks marked /LEVEL (/ is /0) are left out, as with the control's "
+                  "skip switch (0-9, repeatable; default: all off, skip blocks run)")
+      ->check(CLI::Range(0, 9));
   run->add_option("--max-loops", o.max_loops,
                   "loop passes and backward jumps before a program counts as running away (NC-PARAM-FLOW-6)")
       ->check(CLI::PositiveNumber);

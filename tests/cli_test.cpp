@@ -90,6 +90,20 @@ TEST(Cli, BadInputAndUsageGiveExitTwo) {
             2);  // not supported yet
 }
 
+// covers: CLI-1 NC-WORD-2
+TEST(Cli, SkipLevelsFromTheCommandLine) {
+  std::string program = write_temp("skip.mpf", "G0 X0 Y0\n/G0 X10\n/2 G0 Y10\nM30\n");
+  auto elements = [&](const std::string& options) {
+    Result r = sh(kCli + " run " + program + " --format json" + options);
+    EXPECT_EQ(r.status, 0) << options;
+    return r.status == 0 ? nlohmann::json::parse(r.out)["path"].size() : 0u;
+  };
+  EXPECT_EQ(elements(""), 2u);  // skip levels off: every block runs
+  EXPECT_EQ(elements(" --skip 0"), 1u);
+  EXPECT_EQ(elements(" --skip 0 --skip 2"), 0u);
+  EXPECT_EQ(sh(kCli + " run " + program + " --skip 10").status, 2);
+}
+
 // covers: CLI-1 PATH-ORIGIN-1
 TEST(Cli, StdinMachineDataAndSvg) {
   Result a = sh("printf 'G0 X1\\nG1 Y2 F5\\n' | " + kCli + " run - --format json");

@@ -53,6 +53,25 @@ TEST(ProgramWords, HeadersSkipBlocksMainBlocksAndLabels) {
   EXPECT_EQ(b[3].end.x, dec("4"));
 }
 
+// covers: NC-WORD-2
+TEST(ProgramWords, SkipLevelsSwitchedOnLeaveTheirBlocksOut) {
+  // Levels 0 and 3 on: `/` (level 0) and `/3` blocks are not there at all, statements included;
+  // `/1` runs. A label on a skipped line stays a jump target: GOTOB BACK finds it (and its block
+  // is skipped again).
+  std::istringstream in(
+      "G0 X0 Y0\n/G0 X10\n/3 R1=5\n/1 G0 Y10\nG0 X=R1+1\n/0 BACK: G0 Y20\nR2=R2+1\n"
+      "IF R2<2 GOTOB BACK\nM30\n");
+  ProgramReader r(in, {});
+  r.set_skip_levels((1u << 0) | (1u << 3));
+  std::vector<Block> b;
+  for (Block k; r.next(k);) b.push_back(k);
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_EQ(b[1].words.line, 4);  // /1 G0 Y10
+  EXPECT_EQ(b[1].end, pt("0", "10", "0"));
+  EXPECT_EQ(b[2].end, pt("1", "10", "0"));  // R1 was never set
+  EXPECT_EQ(b[3].words.line, 9);            // M30
+}
+
 // covers: NC-WORD-3 NC-WORD-5 NC-WORD-6 NC-LEX-5
 TEST(ProgramWords, SetUpWordsAreActionsKeptAsWritten) {
   auto b = read(

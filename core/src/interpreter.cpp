@@ -105,6 +105,19 @@ NcValue Interpreter::evaluate(std::string_view expression, int line) {
   return v;
 }
 
+// NC-WORD-2: a skip block of a level the operator switched on is left out whole (its label stays
+// a jump target).
+bool Interpreter::skipped(const std::string& s) {
+  std::size_t k = skip_space(s, 0);
+  if (k >= s.size() || s[k] != '/') return false;
+  int level = k + 1 < s.size() && is_digit(s[k + 1]) ? s[k + 1] - '0' : 0;
+  if ((skip_levels_ & (1u << level)) == 0) return false;
+  std::string number, label;
+  block_prefix(s, &number, &label);
+  if (!label.empty()) note_label(label, cx().line_start, cx().line - 1);
+  return true;
+}
+
 bool Interpreter::next(std::string& text, int& line) {
   while (true) {
     if (pending_next_ < pending_.size()) {  // NC-PARAM-FRAME-1: the blocks of a frame assignment
@@ -127,6 +140,7 @@ bool Interpreter::next(std::string& text, int& line) {
       bool read = getline(raw_);
       current_cached_ = last_cached_;
       if (read && !macros_.empty()) expand_macros(raw_);
+      if (read && skip_levels_ != 0 && skipped(raw_)) continue;
       if (!read) {
         if (!cx().frames.empty())
           throw InputError(cx().line, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");

@@ -89,6 +89,8 @@ class Interpreter {
   bool next(std::string& text, int& line);
 
   void set_limits(InterpreterLimits limits) { limits_ = limits; }
+  // NC-WORD-2: the skip levels the operator has switched on, bit n for `/n` (`/` is `/0`).
+  void set_skip_levels(std::uint16_t levels) { skip_levels_ = levels; }
   // NC-PARAM-SUB-1: where subprograms are looked for (the program's folder first).
   void set_search_path(std::vector<std::string> dirs) {
     search_path_ = std::move(dirs);
@@ -277,6 +279,8 @@ class Interpreter {
 
   SystemValues* system_;
   InterpreterLimits limits_;
+  std::uint16_t skip_levels_ = 0;
+  bool skipped(const std::string& line);
   std::string raw_;
   // Blocks one line yields beyond its own (a $P_PFRAME assignment: NC-PARAM-FRAME-1), with the
   // line they stand for; handed out before the next line is read.

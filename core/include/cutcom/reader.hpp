@@ -91,6 +91,8 @@ class ProgramReader : private SystemValues {
   const std::string& source_name() const { return source_; }
   // NC-PARAM-FLOW-6: the runaway limit of the interpreter layer.
   void set_limits(InterpreterLimits limits) { interpreter_.set_limits(limits); }
+  // NC-WORD-2: skip levels switched on (bit n: `/n`); off by default, so skip blocks run.
+  void set_skip_levels(std::uint16_t levels) { interpreter_.set_skip_levels(levels); }
   // NC-PARAM-SUB-1: the folders subprograms are looked for in, the program's own first.
   void set_search_path(std::vector<std::string> dirs) { interpreter_.set_search_path(std::move(dirs)); }
   void no_subprogram_files() { interpreter_.no_subprogram_files(); }
