@@ -316,7 +316,17 @@ bool touching_carriers(const Decision& d, const Tolerance& tol) {
 }  // namespace
 
 namespace {
-// A crossing that touches a piece's end (TRC-CD-3, margin in the band) may be taken on either
+// A crossing that touches a piece's end or is tangent to it, ref's margin inside the band: a
+// bottleneck's cut (TRC-CD-3 `cut`) or the retraction's hit further back (TRC-CD-5
+// `earlier-block`, whose boundary rule is TRC-CD-3's; campaign 20261234, case 48846: a G461
+// circle tangent to an equidistant at its start, hit 1.8e-8 mm into it by fast, at the joint by
+// ref).
+bool touching_crossing(const Decision& d, const Tolerance& tol) {
+  bool kind = (d.clause == "TRC-CD-3" && d.branch == "cut") || (d.clause == "TRC-CD-5" && d.branch == "earlier-block");
+  return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
+}
+
+// A crossing that touches a piece's end (touching_crossing) may be taken on either
 // piece at the joint: the engines then skip different blocks and hold different pieces after it.
 // Likewise after carriers that just touch (an intersection of nearly tangent circles: the point
 // moves by up to sqrt(band L) along them, and what is built on it with it). True (a knife edge
@@ -325,12 +335,11 @@ bool parted_after_touching(const RunResult& ref, std::size_t from, std::size_t u
                            const std::string& where, Verdict& v) {
   for (std::size_t k = from; k < upto; ++k) {
     const Decision& p = ref.decisions[k];
-    bool touching_crossing =
-        p.clause == "TRC-CD-3" && p.branch == "cut" && p.has_margin && std::fabs(margin_value(p)) <= tol.band(p.clause);
-    if (touching_crossing || touching_carriers(p, tol)) {
+    bool crossing = touching_crossing(p, tol);
+    if (crossing || touching_carriers(p, tol)) {
       v.kind = Verdict::Kind::kKnifeEdge;
       v.clause = std::string(p.clause);
-      v.explanation = where + (touching_crossing ? ", after a touching crossing" : ", after touching carriers");
+      v.explanation = where + (crossing ? ", after a touching crossing" : ", after touching carriers");
       return true;
     }
   }
@@ -522,13 +531,13 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     if (parted_after_touching(ref, 0, ir, tol, where, v)) return v;  // one run went on where the other did not
     return diverge(where);
   }
-  // A bottleneck crossing at a knife edge (touching a piece's end, or tangent: TRC-CD-3 margin in
-  // the band) is ill-conditioned: the cut point moves by up to sqrt(band * size) and the cut may
-  // fall on either piece at a joint, so what follows it is not compared coordinate by coordinate.
+  // A crossing at a knife edge (touching a piece's end, or tangent: touching_crossing) is
+  // ill-conditioned: the cut point moves by up to sqrt(band * size) and the cut may fall on either
+  // piece at a joint, so what follows it is not compared coordinate by coordinate.
   for (const Decision& d : ref.decisions)
-    if (d.clause == "TRC-CD-3" && d.branch == "cut" && std::fabs(margin_value(d)) <= tol.band(d.clause)) {
+    if (touching_crossing(d, tol)) {
       v.kind = Verdict::Kind::kKnifeEdge;
-      v.clause = "TRC-CD-3";
+      v.clause = std::string(d.clause);
       v.explanation = fmt::format("touching crossing at line {}", d.line);
       if (ref.alarms.size() != fast.alarms.size()) return diverge("different alarms after a touching crossing");
       return v;
