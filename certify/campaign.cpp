@@ -343,13 +343,10 @@ CampaignSummary run_campaign(const CampaignOptions& o) {
       if (r.verdict == "over-budget") ++o.live->over_budget;
     }
     if (results.is_open())
-      results << nlohmann::json{{"case", r.k},
-                                {"source", r.source},
-                                {"style", r.style},
-                                {"verdict", r.verdict},
-                                {"clause", r.clause},
-                                {"error", r.error},
-                                {"ms", std::round(r.ms * 1000) / 1000}}
+      results << nlohmann::json{{"case", r.k},        {"source", r.source},
+                                {"style", r.style},   {"verdict", r.verdict},
+                                {"clause", r.clause}, {"error", r.error},
+                                {"ratio", r.ratio},   {"ms", std::round(r.ms * 1000) / 1000}}
                      .dump()
               << "\n";
     if (stops(r)) {
@@ -434,7 +431,7 @@ void CampaignSummary::add(const CaseRecord& r) {
     ++error_bins[static_cast<std::size_t>(bin_of(r.error))];
     ++ratio_bins[static_cast<std::size_t>(bin_of(r.ratio))];
     if (r.error > max_error) max_error = r.error, max_error_case = fmt::format("{}/{}", seed, r.k);
-    max_ratio = std::max(max_ratio, r.ratio);
+    if (r.ratio > max_ratio) max_ratio = r.ratio, max_ratio_case = fmt::format("{}/{}", seed, r.k);
   }
 }
 
@@ -457,6 +454,7 @@ nlohmann::json CampaignSummary::to_json() const {
           {"max_error", max_error},
           {"max_ratio", max_ratio},
           {"max_error_case", max_error_case},
+          {"max_ratio_case", max_ratio_case},
           {"divergences", divergences},
           {"over_budget", over_budget},
           {"evidence", evidence}};
@@ -479,6 +477,7 @@ CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
   s.max_error = j.at("max_error").get<double>();
   s.max_ratio = j.at("max_ratio").get<double>();
   s.max_error_case = j.at("max_error_case").get<std::string>();
+  if (j.contains("max_ratio_case")) s.max_ratio_case = j.at("max_ratio_case").get<std::string>();  // older summaries
   s.divergences = j.at("divergences").get<std::vector<std::string>>();
   if (j.contains("over_budget")) s.over_budget = j.at("over_budget").get<std::vector<std::string>>();
   if (j.contains("evidence")) s.evidence = j.at("evidence").get<std::map<std::string, long>>();
@@ -501,7 +500,7 @@ void CampaignSummary::merge(const CampaignSummary& o) {
   for (std::size_t i = 0; i < error_bins.size(); ++i)
     error_bins[i] += o.error_bins[i], ratio_bins[i] += o.ratio_bins[i];
   if (o.max_error > max_error) max_error = o.max_error, max_error_case = o.max_error_case;
-  max_ratio = std::max(max_ratio, o.max_ratio);
+  if (o.max_ratio > max_ratio) max_ratio = o.max_ratio, max_ratio_case = o.max_ratio_case;
   divergences.insert(divergences.end(), o.divergences.begin(), o.divergences.end());
   over_budget.insert(over_budget.end(), o.over_budget.begin(), o.over_budget.end());
   for (const auto& [k, v] : o.evidence) evidence[k] += v;

@@ -79,6 +79,7 @@ struct CampaignSummary {
   std::vector<long> ratio_bins = std::vector<long>(161, 0);
   double max_error = 0, max_ratio = 0;
   std::string max_error_case;            // "seed/k" of the case with the largest error
+  std::string max_ratio_case;            // "seed/k" of the case nearest its tolerance (often another)
   std::vector<std::string> divergences;  // unexplained: what, and the corpus file written
   std::vector<std::string> over_budget;  // "seed/k" of the cases killed at the time budget
   std::map<std::string, long> evidence;  // CaseRecord::evidence: cases showing each

@@ -243,7 +243,8 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "| | error (mm) | error / tolerance |\n|---|---|---|\n";
   for (double p : {0.5, 0.9, 0.99, 0.999})
     md << fmt::format("| p{} | ≤ {:.3g} | ≤ {:.3g} |\n", p * 100, s.error_percentile(p), s.error_percentile(p, true));
-  md << fmt::format("| max | {:.3g} (case {}) | {:.3g} |\n\n", s.max_error, s.max_error_case, s.max_ratio);
+  md << fmt::format("| max | {:.3g} (case {}) | {:.3g}{} |\n\n", s.max_error, s.max_error_case, s.max_ratio,
+                    s.max_ratio_case.empty() ? "" : " (case " + s.max_ratio_case + ")");
   md << "Percentiles are upper edges of bins a tenth of a decade wide. " << s.error_bins[0] << " of " << agree
      << " agreeing cases match to the last bit.\n\n![error histogram]("
      << std::filesystem::path(svg_path).filename().string() << ")\n\n";

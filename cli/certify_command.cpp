@@ -211,10 +211,11 @@ int certify_command(CertifyOptions& o) {
   std::cout << fmt::format(
       "{} cases in {} ({:.0f}/s per core): {} agree, {} knife edges (after {} of them the runs end differently), {} "
       "not "
-      "supported, {} over budget, {} unexplained divergences; largest coordinate error {:.3g} mm ({:.3g} of the "
-      "tolerance)\n",
+      "supported, {} over budget, {} unexplained divergences; largest coordinate error {:.3g} mm (case {}), nearest "
+      "its tolerance {:.3g} of it (case {})\n",
       s.cases, time, s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0, agree, knife + ends_differ,
-      ends_differ, unsupported, s.over_budget.size(), s.divergences.size(), s.max_error, s.max_ratio);
+      ends_differ, unsupported, s.over_budget.size(), s.divergences.size(), s.max_error, s.max_error_case, s.max_ratio,
+      s.max_ratio_case);
   for (const auto& c : s.over_budget) std::cout << "over budget: case " << c << "\n";
   for (const auto& d : s.divergences) std::cout << "unexplained divergence: " << d << "\n";
   for (const auto& r : rises) std::cout << "knife edges rose beyond noise: " << r << "\n";

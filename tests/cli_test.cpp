@@ -304,6 +304,19 @@ TEST(Cli, CertifyJobsRunTheSameCasesInParallelProcesses) {
   EXPECT_EQ(b["shards"], nlohmann::json::array({"0/3", "1/3", "2/3"}));
   a.erase("shards"), b.erase("shards");
   EXPECT_EQ(a, b);  // the same 31 cases, counted alike
+  // The case nearest its tolerance is named: the agreeing case of the largest error / tolerance.
+  {
+    std::ifstream in(dir + "/jobs1.jsonl");
+    double most = -1;
+    long nearest = -1;
+    for (std::string line; std::getline(in, line);) {
+      nlohmann::json r = nlohmann::json::parse(line);
+      if (r["verdict"] == "agree" && r["ratio"].get<double>() > most) most = r["ratio"], nearest = r["case"];
+    }
+    ASSERT_GE(nearest, 0);
+    if (most > 0) EXPECT_EQ(a["max_ratio_case"], "9/" + std::to_string(nearest));
+    EXPECT_EQ(a["max_ratio"].get<double>(), most);
+  }
   // Every case once in the results, whatever process ran it.
   auto cases_in = [](const std::string& file) {
     std::ifstream in(file);
