@@ -206,6 +206,17 @@ std::string to_program(const ContourCase& c) {
       p.pop_back();
       p += fmt::format(" F{}\n", 300 + 100 * static_cast<int>(i % 5));
     }
+    // PROP-DIFF-3: actions on contour blocks, and blocks that also move the applicate (a slanted
+    // line, a helix), so that where actions run and the heights of inserted circles are compared;
+    // no random draw either, and the plane geometry stays that of the seed.
+    if (i % 4 == 1 && !c.plane_only) {
+      p.pop_back();
+      p += fmt::format(" M{}\n", i % 8 == 1 ? 8 : 9);
+    }
+    if (i % 4 == 3 && s.corner == 0 && !s.polar && !c.plane_only) {
+      p.pop_back();
+      p += fmt::format(" {}-{}\n", h, ++depth);
+    }
   }
   if (v == 7 && (c.steps.empty() || !c.steps.back().arc || c.steps.back().cr != 0)) {
     // TRC-DESEL-2 when the contour does not end in a centre circle: a half circle deselecting.

@@ -65,6 +65,9 @@ struct ContourCase {
   // (the campaign draws them: the properties keep well-formed programs). See kVariantNames.
   int variant = 0;
   std::int64_t rotation_mdeg = 0;  // NC-FRAME-4: ROT RPL= (millidegrees) after the first block
+  // The contour blocks move in the plane only, without actions (PROP-DIFF-3 gives some of them an
+  // applicate word and an M function): for properties that scale the program or run it reversed.
+  bool plane_only = false;
 };
 
 // Names of ContourCase::variant: 0 "none", then one rule each (TRC-SEL-3 ... TRC-DUMMY-3,

@@ -160,6 +160,7 @@ RC_GTEST_PROP(Metamorphic, InchProgramEqualsTheProgramInMm, ()) {
   RC_PRE(c.decimals < 9);  // one decimal more must fit the nine of the program grid (PROP-HAIR-1 cases do not)
   c.sar = {}, c.variant = 0;
   for (Step& s : c.steps) s.dummies = 0;  // their Z words would be inches too
+  c.plane_only = true;
   PlaneMap f;
   f.m00 = 254, f.m11 = 254, f.den = 10;  // lengths times 25.4, one more decimal
   ContourCase metric = apply(c, f);

@@ -163,6 +163,7 @@ RC_GTEST_PROP(SarProperty, ApproachAndRetractionAreMirrorImages, ()) {
   c.kont_select = c.kont_deselect = false;  // NORM both ways: KONT has its own mirror property
   c.g451_select = c.g451_deselect = false, c.cdon = false;
   for (Step& s : c.steps) s.dummies = 0, s.flip = s.again = false, s.g451 = false;
+  c.plane_only = true;
   ContourCase m = mirrored(c);
   RC_LOG() << "mirrored program:\n" << to_program(m) << "\n";
   CaseRuns a = run_case(c, false), b = run_case(m, false);
