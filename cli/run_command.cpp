@@ -28,6 +28,7 @@ class AlarmWatch : public cutcom::PathSink {
   void element(const cutcom::PathElement& e) override { to_.element(e); }
   void action(const cutcom::ActionEvent& a) override { to_.action(a); }
   void decision(const cutcom::Decision& d) override { to_.decision(d); }
+  bool keeps_decisions() const override { return to_.keeps_decisions(); }
   void alarm(const cutcom::Alarm& a) override {
     numbers.push_back(a.number);
     to_.alarm(a);

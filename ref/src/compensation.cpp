@@ -203,7 +203,7 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
   if (!e.is_arc()) {
     FT left = (end_point - open_start_) * e.d;  // signed length along the block, times |d|
     sign = CGAL::sign(left);                    // without the square root: a cheaper exact zero
-    margin = exact_mm(left / e.length);
+    if (margins_kept()) margin = exact_mm(left / e.length);
   } else {
     // Positions on the programmed circle from its start: the cut start (a signed rotation from
     // the normal start) and the cut end (a signed rotation from the normal end, after the sweep).
@@ -212,7 +212,7 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
     CirclePosition to = f.end(e.b - e.centre, e.full_circle);
     if (!at_normal_end) to = f.signed_from(to, end_point - e.centre);
     sign = f.compare(to, from);
-    margin = f.length_text(from, to, open_radius_);
+    if (margins_kept()) margin = f.length_text(from, to, open_radius_);
     beyond_a_turn = f.compare(to, CirclePosition{from.turns + 1, from.v}) == CGAL::POSITIVE;
   }
   std::string_view clause = e.is_arc() ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
@@ -271,8 +271,9 @@ void Compensation::corner(const Block& next_block) {
     dot = first.end_dir * next.start_dir;
   }
   static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
-  FT sine = FT(comp_->s) * cross / exact_root(dot * dot + cross * cross);  // |t1||t2| = sqrt(dot^2 + cross^2)
-  decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(kind)], exact_text(sine));
+  std::string sine;  // the margin: the signed sine, |t1||t2| = sqrt(dot^2 + cross^2)
+  if (margins_kept()) sine = exact_text(FT(comp_->s) * cross / exact_root(dot * dot + cross * cross));
+  decide("TRC-CORNER-1", next_block.words.line, kKind[static_cast<int>(kind)], std::move(sine));
 
   bool circle = kind == CornerKind::kReversal;  // TRC-G450-3
   if (kind == CornerKind::kOuter) circle = outer_corner_circle(next_block, rc, cross, dot);
@@ -294,7 +295,8 @@ void Compensation::corner(const Block& next_block) {
     // TRC-ARC-CORNER-1: the intersection of the equidistants' carriers nearest to the corner.
     Carrier<Kernel> u = carrier_of(first, open_radius_), v = carrier_of(next, next_radius);
     x = nearest_intersection(u, v, vertex, next.start_dir);
-    decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none", exact_mm(carrier_gap<Kernel>(u, v)));
+    decide("TRC-ARC-CORNER-1", next_block.words.line, x ? "intersection" : "none",
+           margins_kept() ? exact_mm(carrier_gap<Kernel>(u, v)) : std::string());
     if (!x && kind == CornerKind::kOuter)
       return transition_circle(next_block, next, next_radius, vertex);  // TRC-ARC-CORNER-2
     if (!x) return raise(10751, next_block);
@@ -463,7 +465,8 @@ bool Compensation::equidistant_exists(const ContourElement& e, FT& radius) {
   if (!e.is_arc()) return true;
   radius = equidistant_radius<Kernel>(e.radius, e.sense, comp_->side_radius);
   CGAL::Sign sign = CGAL::sign(radius);
-  decide("TRC-ARC-EQ-1", e.line, sign == CGAL::POSITIVE ? "concentric" : "collapses", exact_mm(radius));
+  decide("TRC-ARC-EQ-1", e.line, sign == CGAL::POSITIVE ? "concentric" : "collapses",
+         margins_kept() ? exact_mm(radius) : std::string());
   return sign == CGAL::POSITIVE;
 }
 

@@ -27,6 +27,7 @@ class BackgroundSink : public PathSink {
   void element(const PathElement& e) override;
   void action(const ActionEvent& a) override;
   void decision(const Decision& d) override;
+  bool keeps_decisions() const override { return decisions_; }
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;

@@ -19,7 +19,9 @@ namespace cutcom {
 class Trace {
  public:
   enum class Margins { kDouble, kExact };
-  Trace(PathSink& sink, Margins margins) : sink_(sink), margins_(margins) {}
+  Trace(PathSink& sink, Margins margins) : sink_(sink), margins_(margins), keeps_margins_(sink.keeps_decisions()) {}
+  // Whether a margin given to decide() reaches anything (PathSink::keeps_decisions).
+  bool keeps_margins() const { return keeps_margins_; }
 
   void decide(std::string_view clause, int line, std::string_view branch) {
     Decision d;
@@ -73,6 +75,7 @@ class Trace {
  private:
   PathSink& sink_;
   Margins margins_;
+  bool keeps_margins_;
   std::function<void()> before_alarm_;
   bool stopped_ = false;
 };

@@ -24,6 +24,7 @@ class JsonWriter : public PathSink {
   void element(const PathElement& e) override;
   void action(const ActionEvent& a) override;
   void decision(const Decision& d) override;
+  bool keeps_decisions() const override { return with_trace_; }
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;
@@ -53,6 +54,7 @@ class TextWriter : public PathSink {
   void element(const PathElement& e) override;
   void action(const ActionEvent& a) override;
   void decision(const Decision& d) override;
+  bool keeps_decisions() const override { return with_trace_; }
   void alarm(const Alarm& a) override;
   void notice(const Notice& n) override;
   void sar_variables(const SarVariables& v) override;
@@ -113,6 +115,7 @@ class SvgPicture : public PathSink {
   void element(const PathElement& e) override;
   void alarm(const Alarm& a) override;
   void sar_variables(const SarVariables& v) override;
+  bool keeps_decisions() const override { return false; }  // the picture draws no decisions
   void write(std::ostream& out, const std::string& title) const;
   const std::vector<Alarm>& alarms() const;
   bool reduced() const;

@@ -1,0 +1,69 @@
+// TRACE-1: a sink that keeps no decisions (a run without --trace) lets ref leave out the text of
+// its exact margins; the path, actions and alarms are the same as with every margin written.
+#include <sstream>
+
+#include "support.hpp"
+
+namespace cutcom::test {
+namespace {
+
+class PathOnly : public CollectingSink {
+ public:
+  bool keeps_decisions() const override { return false; }
+};
+
+RunResult run_ref(const std::string& text, CollectingSink& sink) {
+  MachineData md;
+  std::istringstream in(text);
+  ProgramReader reader(in, md.initial_state());
+  ref::run(reader, md, sink);
+  return sink.result;
+}
+
+const char* kProgram =
+    "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\n"
+    "N10 G17 G90 G0 X-20 Y-10 Z0 T1 D1\n"
+    "N20 G1 G41 G450 CDON X0 Y0 F500\n"
+    "N30 G1 X30 Y0 M8\n"
+    "N40 G3 X40 Y10 CR=10\n"
+    "N50 G1 X40 Y30 Z-1\n"
+    "N60 G2 X30 Y40 I-10 J0\n"
+    "N70 G1 X10 Y40 G451\n"
+    "N80 G1 X0 Y20\n"
+    "N90 G1 X0.5 Y20.1\n"
+    "N100 G1 G40 X-20 Y20\n"
+    "N110 M30\n";
+
+// covers: TRACE-1
+TEST(TraceMargins, RefLeavesOutMarginsNobodyKeepsAndThePathStays) {
+  CollectingSink all;
+  PathOnly path_only;
+  RunResult a = run_ref(kProgram, all), b = run_ref(kProgram, path_only);
+  ASSERT_FALSE(a.path.empty());
+  ASSERT_EQ(a.path.size(), b.path.size());
+  for (std::size_t k = 0; k < a.path.size(); ++k) {
+    EXPECT_EQ(a.path[k].start.x, b.path[k].start.x) << k;
+    EXPECT_EQ(a.path[k].start.y, b.path[k].start.y) << k;
+    EXPECT_EQ(a.path[k].end.x, b.path[k].end.x) << k;
+    EXPECT_EQ(a.path[k].end.y, b.path[k].end.y) << k;
+    EXPECT_EQ(a.path[k].end.z, b.path[k].end.z) << k;
+    EXPECT_EQ(a.path[k].type, b.path[k].type) << k;
+  }
+  ASSERT_EQ(a.actions.size(), b.actions.size());
+  EXPECT_EQ(a.alarms.size(), b.alarms.size());
+  // The same decisions were taken; only the unkept run's corner margins are left empty.
+  ASSERT_EQ(a.decisions.size(), b.decisions.size());
+  int corners = 0;
+  for (std::size_t k = 0; k < a.decisions.size(); ++k) {
+    EXPECT_EQ(a.decisions[k].clause, b.decisions[k].clause) << k;
+    EXPECT_EQ(a.decisions[k].branch, b.decisions[k].branch) << k;
+    if (a.decisions[k].clause != "TRC-CORNER-1") continue;
+    ++corners;
+    EXPECT_FALSE(a.decisions[k].margin_exact.empty()) << k;
+    EXPECT_TRUE(b.decisions[k].margin_exact.empty()) << k;
+  }
+  EXPECT_GE(corners, 5);
+}
+
+}  // namespace
+}  // namespace cutcom::test
