@@ -119,9 +119,16 @@ std::string to_program(const ContourCase& c) {
   int n = 10;
   const SarEnds& sar = c.sar;
   const int v = c.variant;
+  // PROP-DIFF-3: what the path carries besides its geometry, varied by the case's own numbers
+  // rather than a random draw (every seed's programs keep their geometry): selection and
+  // deselection blocks in G0, feed per revolution.
+  const std::uint64_t key = static_cast<std::uint64_t>(c.start_x) * 31U + static_cast<std::uint64_t>(c.start_y);
+  const bool rapid_ends = !c.plane_only && key % 4 == 1;
+  const bool per_revolution = !c.plane_only && key % 6 == 2;
   const char* tool = v == 3 ? "T1 D0" : v == 4 ? "T0 D1" : v == 5 ? "T1 D2" : "T1 D1";  // TRC-SEL-5/6/7
-  p += fmt::format("N{} G{} G90 G0 {}{} {}{} {}{} {}\n", n, c.plane, a, fixed(c.start_x, c.decimals), b,
-                   fixed(c.start_y, c.decimals), h, fixed(sar.approach ? sar.start_h : 0, c.decimals), tool);
+  p += fmt::format("N{} G{} G90 {}G0 {}{} {}{} {}{} {}\n", n, c.plane, per_revolution ? "G95 " : "", a,
+                   fixed(c.start_x, c.decimals), b, fixed(c.start_y, c.decimals), h,
+                   fixed(sar.approach ? sar.start_h : 0, c.decimals), tool);
   n += 10;
   if (c.rotation_mdeg != 0) p += fmt::format("N{} ROT RPL={}\n", n - 5, fixed(c.rotation_mdeg, 3));  // NC-FRAME-4
   if (v == 2 && !sar.approach) {  // TRC-SEL-4: G41/G42 first in a block without a plane axis
@@ -134,7 +141,7 @@ std::string to_program(const ContourCase& c) {
   if (v == 1 && !sar.approach)  // TRC-SEL-3: the ordinate stays where it is (the contour starts there)
     first = fmt::format("{}{}", a, fixed(c.first_x, c.decimals));
   if (!sar.approach) {
-    p += fmt::format("N{} G1 {} {} F500\n", n, modes, first);
+    p += fmt::format("N{} {} {} {} F500\n", n, rapid_ends ? "G0" : "G1", modes, first);
   } else {
     std::string words = sar_words(sar.side_in, sar.seg_in, sar.disr_in, sar.discl_in, sar.discl_in_ac, sar.discl_in_v,
                                   sar.fad_in, c.decimals);
@@ -241,7 +248,7 @@ std::string to_program(const ContourCase& c) {
   std::string modes_out =
       fmt::format("{} {} G{}", c.kont_deselect ? "KONT" : "NORM", c.g451_deselect ? "G451" : "G450", c.edge_deselect);
   if (!sar.retraction) {
-    p += fmt::format("N{} G1 G40 {} {}\n", n, modes_out, end);
+    p += fmt::format("N{} {} G40 {} {}\n", n, rapid_ends ? "G0" : "G1", modes_out, end);
   } else {
     // SAR-END-1: the three ways the retraction block gives (or does not give) its end point.
     std::string axes = sar.end_case == 3   ? end + " " + h + fixed(sar.end_h, c.decimals)
