@@ -615,14 +615,23 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   for (std::size_t i = 0; i < rp.size(); ++i) {
     const PathElement& r = *rp[i];
     const PathElement& f = *fp[i];
+    // The element's kind, what it comes from, its sense and whether it is a rapid, named where they differ.
+    auto kind = [](const PathElement& e) {
+      std::string k = e.type == ElementType::kArc ? (e.ccw ? "ccw arc" : "cw arc") : "line";
+      return k + (e.rapid ? " rapid " : " ") + describe(e.origin);
+    };
     if (r.type != f.type || r.origin.kind != f.origin.kind || r.origin.line != f.origin.line || r.rapid != f.rapid ||
         (r.type == ElementType::kArc && r.ccw != f.ccw))
-      return diverge(fmt::format("element {}: {} vs {}", i, describe(r.origin), describe(f.origin)));
+      return diverge(fmt::format("element {}: {} vs {}", i, kind(r), kind(f)));
     // PROP-DIFF-3: what the element belongs to and how fast it runs are the blocks' data, decided
     // on programmed decimals: they never differ, knife edge or not.
+    auto feed = [](const PathElement& e) {
+      return e.feed.to_string() + (e.feed_type == FeedType::kG95   ? " (G95)"
+                                   : e.feed_type == FeedType::kG93 ? " (G93)"
+                                                                   : "");
+    };
     if (r.feed != f.feed || r.feed_type != f.feed_type)
-      return diverge(
-          fmt::format("element {} ({}): feed {} vs {}", i, describe(r.origin), r.feed.to_string(), f.feed.to_string()));
+      return diverge(fmt::format("element {} ({}): feed {} vs {}", i, describe(r.origin), feed(r), feed(f)));
     if (r.origin.sar != f.origin.sar || r.origin.insert.kind != f.origin.insert.kind ||
         r.origin.block != f.origin.block || r.origin.next_line != f.origin.next_line)
       return diverge(

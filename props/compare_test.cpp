@@ -218,6 +218,12 @@ TEST(Comparison, FeedsActionsSarVariablesAndNoticesAreCompared) {
   fast.path[0].feed = *Decimal::parse("250").value;  // the SAR infeed's FAD taken for the plane move
   expect_diverges(fast, "feed 500 vs 250");
   fast = ref;
+  fast.path[0].feed_type = FeedType::kG95;  // the same number, per revolution
+  expect_diverges(fast, "feed 500 vs 500 (G95)");
+  fast = ref;
+  fast.path[0].rapid = true;  // a G0 block's line output at feed, or the other way round
+  expect_diverges(fast, "line offset of line 6 vs line rapid offset of line 6");
+  fast = ref;
   fast.path[0].origin.sar = SarMove::kElement;
   expect_diverges(fast, "what it belongs to");
   fast = ref;
