@@ -53,7 +53,9 @@ struct OnPiece {
 // The very same exact numbers (shared by construction), without a zero test.
 bool same_point(const Point& p, const Point& q) { return p.x().Rep() == q.x().Rep() && p.y().Rep() == q.y().Rep(); }
 
-OnPiece locate(const PathPiece& piece, const Point& p) {
+// `margins`: the slack too (a margin only: where nothing keeps the trace it is left out, see
+// Trace::keeps_margins; the exact distances to the ends were most of ref's time under CDON).
+OnPiece locate(const PathPiece& piece, const Point& p, bool margins) {
   OnPiece o;
   if (same_point(p, piece.a) || same_point(p, piece.b)) {  // an end of the piece: on it, no slack
     bool at_a = same_point(p, piece.a);
@@ -66,13 +68,14 @@ OnPiece locate(const PathPiece& piece, const Point& p) {
   }
   if (!piece.arc) {
     Vector d = piece.b - piece.a;
-    FT length = exact_root(d.squared_length());
     // Signs on the lengths times |d| (no square root in the exact zero tests).
     FT along_d = (p - piece.a) * d, left_d = d * d - along_d;
     CGAL::Sign along_sign = CGAL::sign(along_d), left_sign = CGAL::sign(left_d);
-    FT along = along_d / length, left = left_d / length;
     o.line_position = along_d;
     o.on = along_sign != CGAL::NEGATIVE && left_sign != CGAL::NEGATIVE;
+    if (!margins) return o;
+    FT length = exact_root(d.squared_length());
+    FT along = along_d / length, left = left_d / length;
     if (o.on)
       o.slack = approx_less(along, left) ? along : left;
     else
@@ -82,6 +85,7 @@ OnPiece locate(const PathPiece& piece, const Point& p) {
   CircleFrame f = piece.frame();
   o.arc_position = f.at(p - piece.centre);
   o.on = piece.full_turn || f.compare(o.arc_position, f.at(piece.b - piece.centre)) != CGAL::POSITIVE;
+  if (!margins) return o;
   FT to_a = exact_root(CGAL::squared_distance(p, piece.a)), to_b = exact_root(CGAL::squared_distance(p, piece.b));
   FT nearer = approx_less(to_a, to_b) ? to_a : to_b;
   o.slack = o.on ? nearer : -nearer;
@@ -190,7 +194,7 @@ bool OnCarrierFacts::known(const Point& q, const Carrier<Kernel>& c) const {
 }
 
 // TRC-CD-3: the earliest point along `held` that lies on one of the entry's pieces.
-PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from,
+PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from, bool margins,
                              const OnCarrierFacts* facts) {
   auto lies_on = [&](const Carrier<Kernel>& c, const Point& q) {
     return (facts && facts->known(q, c)) || on_carrier(c, q);
@@ -204,7 +208,7 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
     if (!e.arc && e.a == e.b) continue;
     Carrier<Kernel> c = e.carrier();
     std::optional<FT> depth;
-    if (h.circle || c.circle) depth = -carrier_gap<Kernel>(h, c);
+    if (margins && (h.circle || c.circle)) depth = -carrier_gap<Kernel>(h, c);
     std::vector<Point> xs;
     if (h.circle || c.circle) {  // (two lines: one intersection, cheap; or parallel, below)
       for (const Point* q : {&held.a, &held.b})
@@ -239,8 +243,13 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
       if (!out.near_miss || approx_less(*out.near_miss, -gap)) out.near_miss = -gap;
     }
     for (const Point& p : xs) {
-      OnPiece on_held = locate(held, p), on_entry = locate(e, p);
+      OnPiece on_held = locate(held, p, margins), on_entry = locate(e, p, margins);
       bool on = on_held.on && on_entry.on;
+      if (!margins) {  // the same crossing, without its slack and the near misses
+        if (!on || (best && later(held, on_held, *best) != CGAL::NEGATIVE)) continue;
+        best = on_held, out.point = p, out.entry_piece = static_cast<int>(i);
+        continue;
+      }
       // The margin: the least slack (off a piece, the violated one; off both, the worse).
       FT slack = approx_less(on_entry.slack, on_held.slack) ? on_entry.slack : on_held.slack;
       if (on && depth && approx_less(*depth, slack)) slack = *depth;

@@ -71,7 +71,9 @@ class OnCarrierFacts {
   std::deque<std::pair<Point, Carrier<Kernel>>> facts_;
 };
 
+// `margins`: the crossing's slack and the near misses too (margins only; without them the same
+// crossing is found, the collinear overlap included).
 PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>& entry, std::size_t from = 0,
-                             const OnCarrierFacts* facts = nullptr);
+                             bool margins = true, const OnCarrierFacts* facts = nullptr);
 
 }  // namespace cutcom::ref

@@ -133,7 +133,7 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
     compared = true;
     if (!entry) return std::nullopt;
     bool skip_lead = entry->lead == Entry::Lead::kExtension && seq == hi && !looking_;
-    PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0, &facts_);
+    PieceCrossing c = piece_crossing(held, entry->pieces, skip_lead ? 1 : 0, margins_kept(), &facts_);
     // The largest near miss (picked by the filter's value: see bottleneck.hpp).
     keep_largest(near, c.near_miss);
     overlap = overlap || c.overlap;
@@ -155,15 +155,17 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
   // A miss of exactly 0 is an overlap of collinear pieces (a point at 0 lies on both: a cut).
   bool at_overlap = overlap && near && CGAL::sign(*near) == CGAL::ZERO;
   if (entry)
-    decide("TRC-CD-3", m.words.line, at_overlap ? "overlap" : "none", near ? exact_mm(*near) : std::string("-inf"));
+    decide("TRC-CD-3", m.words.line, at_overlap ? "overlap" : "none",
+           !margins_kept() ? std::string()
+           : near          ? exact_mm(*near)
+                           : std::string("-inf"));
   return false;
 }
 
 void Compensation::cut(const Block& m, const Entry& en, std::optional<std::size_t> record, const PieceCrossing& c,
                        const std::optional<FT>& near) {
   const Point x = *c.point;
-  FT margin = lowered(c.slack, near);
-  decide("TRC-CD-3", m.words.line, "cut", exact_mm(margin));
+  decide("TRC-CD-3", m.words.line, "cut", margins_kept() ? exact_mm(lowered(c.slack, near)) : std::string());
   if (!cut_at(m, record, x)) return;
   continue_entry(m, en, c.entry_piece, x);
 }
@@ -249,20 +251,24 @@ bool Compensation::search_further_back(const Block& b, const EdgeCurve& curve) {
     if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
     compared = true;
     PathPiece held = piece_of(r);
-    PieceCrossing c = piece_crossing(held, aux, 0, &facts_);
+    PieceCrossing c = piece_crossing(held, aux, 0, margins_kept(), &facts_);
     keep_largest(near, c.near_miss);
     overlap = overlap || c.overlap;
     if (!c.point) continue;
     facts_.add(*c.point, held.carrier());
     facts_.add(*c.point, aux[0].carrier());
-    FT margin = lowered(c.slack, near);
-    decide("TRC-CD-5", b.words.line, "earlier-block", exact_mm(margin));
+    decide("TRC-CD-5", b.words.line, "earlier-block",
+           margins_kept() ? exact_mm(lowered(c.slack, near)) : std::string());
     const Point x = *c.point;
     if (!cut_at(b, i, x)) return true;
     retraction_line(b, x);
     return true;
   }
-  if (compared) decide("TRC-CD-5", b.words.line, "open-element", near ? exact_mm(*near) : std::string("-inf"));
+  if (compared)
+    decide("TRC-CD-5", b.words.line, "open-element",
+           !margins_kept() ? std::string()
+           : near          ? exact_mm(*near)
+                           : std::string("-inf"));
   return false;
 }
 
