@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,7 @@ void ControlData::into(cutcom::ProgramReader& reader) const {
   reader.set_limits(limits);
   reader.set_skip_levels(skip_levels);
   reader.set_search_path(search_path);
+  reader.set_machine_cycles(machine_cycles);
   for (const auto& [file, text] : definitions) {
     std::istringstream in(text);
     try {
@@ -101,6 +103,14 @@ ControlData control_data(const RunOptions& o) {
       o.program == "-" ? std::filesystem::path(".") : std::filesystem::path(o.program).parent_path();
   c.search_path.push_back(folder.empty() ? "." : folder.string());
   for (const auto& d : o.search_path) c.search_path.push_back(d);
+  for (std::string name : o.machine_cycles) {  // NC-CYCLE-3: names as the control reads them
+    for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    bool ok = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0]));
+    for (char ch : name) ok = ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+    if (!ok)
+      throw FileError(fmt::format("--machine-cycle '{}': a subprogram or cycle name (letters, digits, _)", name));
+    c.machine_cycles.push_back(name);
+  }
   return c;
 }
 

@@ -32,7 +32,8 @@ struct RunOptions {
   std::vector<std::string> tool_edges;  // TOOL-FILE-2
   std::vector<std::string> definition_files;
   std::optional<std::string> arguments;
-  std::vector<int> skip_levels;  // NC-WORD-2: --skip
+  std::vector<int> skip_levels;             // NC-WORD-2: --skip
+  std::vector<std::string> machine_cycles;  // NC-CYCLE-3: --machine-cycle
 };
 
 // A data file given on the command line is wrong: names the file and line (exit 2).
@@ -51,6 +52,7 @@ struct ControlData {
   std::optional<std::string> arguments;                          // NC-PARAM-SUB-5
   std::map<std::string, std::string> machine_values;             // NC-PARAM-SYS-4
   std::uint16_t skip_levels = 0;                                 // NC-WORD-2: bit n, level /n on
+  std::vector<std::string> machine_cycles;                       // NC-CYCLE-3, upper case
   void into(cutcom::ProgramReader& reader) const;                // the reader set up as `cutcom run` sets it up
 };
 

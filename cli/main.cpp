@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   run->add_option("--search-path", o.search_path,
                   "folder where subprograms (NAME.SPF) are looked for after the program's own (repeatable)")
       ->check(CLI::ExistingDirectory);
+  run->add_option("--machine-cycle", o.machine_cycles,
+                  "a cycle or subprogram of the machine itself (a tool change L6, TC, ...) that is not in the "
+                  "program's folder: its calls are not simulated, as standard cycles (repeatable)");
   std::vector<std::string> md_assignments;
   auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
   md->add_option("--md", md_assignments, "override NAME=VALUE before listing");
@@ -96,6 +99,8 @@ int main(int argc, char** argv) {
       ->add_option("--search-path", co.control.search_path,
                    "--replay/--from: folder where subprograms are looked for after the program's own")
       ->check(CLI::ExistingDirectory);
+  certify->add_option("--machine-cycle", co.control.machine_cycles,
+                      "--replay/--from: a cycle of the machine, not simulated (as for run)");
 
   try {
     app.parse(argc, argv);

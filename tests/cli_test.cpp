@@ -104,6 +104,22 @@ TEST(Cli, SkipLevelsFromTheCommandLine) {
   EXPECT_EQ(sh(kCli + " run " + program + " --skip 10").status, 2);
 }
 
+// covers: NC-CYCLE-3 CLI-1
+TEST(Cli, MachineCyclesFromTheCommandLine) {
+  std::string program = write_temp("toolchange.mpf", "G0 X0 Y0 Z50\nT1 D1\nL6\nG0 X10 Y0 Z5\nG1 Y10 F100\nM30\n");
+  Result refused = sh(kCli + " run " + program + " --tool 1=3", true);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.out.find("--machine-cycle L6"), std::string::npos) << refused.out;
+  for (const char* name : {"L6", "l6"}) {
+    Result r = sh(kCli + " run " + program + " --tool 1=3 --format json --machine-cycle " + name);
+    ASSERT_EQ(r.status, 0) << name;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["path"].size(), 3u);
+    EXPECT_NE(j["notices"].dump().find("L6 is not simulated"), std::string::npos) << j["notices"].dump();
+  }
+  EXPECT_EQ(sh(kCli + " run " + program + " --machine-cycle 'L 6'").status, 2);
+}
+
 // covers: CLI-1 PATH-ORIGIN-1
 TEST(Cli, StdinMachineDataAndSvg) {
   Result a = sh("printf 'G0 X1\\nG1 Y2 F5\\n' | " + kCli + " run - --format json");

@@ -593,6 +593,47 @@ TEST(ProgramWords, CyclesAreNotSimulatedAndLeaveThePositionUnknown) {
   EXPECT_THROW(read("G1 X1=0 F100\n"), InputError);  // only after G74/G75
 }
 
+// A machine's own tool change (L6, TC(2)) read as a standard cycle once named (NC-CYCLE-3);
+// without the name the call stays an error that says how to name it.
+std::vector<Block> read_with_machine_cycles(const std::string& text, std::vector<std::string> names) {
+  std::istringstream in(text);
+  ProgramReader reader(in);
+  reader.no_subprogram_files();
+  reader.set_machine_cycles(std::move(names));
+  std::vector<Block> out;
+  Block b;
+  while (reader.next(b)) out.push_back(b);
+  return out;
+}
+
+// covers: NC-CYCLE-3
+TEST(ProgramWords, MachineCyclesNamedOnTheCommandLineAreNotSimulated) {
+  const std::string program = "G0 X10 Y10 Z5\nL6\nTC(2)\nG0 X20 Y20 Z50\nWZW\nG0 X1\n";
+  auto b = read_with_machine_cycles(program, {"L6", "TC", "WZW"});
+  ASSERT_EQ(b.size(), 6u);
+  EXPECT_EQ(b[1].words.not_simulated, "L6");
+  EXPECT_EQ(b[1].notice_clause, "NC-CYCLE-1");
+  EXPECT_FALSE(b[1].moves_in_plane());
+  EXPECT_EQ(b[2].words.not_simulated, "TC");
+  EXPECT_EQ(b[3].start, pt("10", "10", "5"));  // where the tool was before: nothing programmed since
+  EXPECT_TRUE(b[3].notice.empty());            // every axis programmed absolutely again
+  EXPECT_NE(b[5].notice.find("YZ is not known since WZW"), std::string::npos) << b[5].notice;
+  EXPECT_EQ(b[5].start, pt("20", "20", "50"));
+  // Not named: the errors say how to name them.
+  for (const char* call : {"L6\n", "TC(2)\n"}) {
+    try {
+      read_with_machine_cycles(std::string("G0 X1\n") + call, {});
+      ADD_FAILURE() << call;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("--machine-cycle"), std::string::npos) << e.what();
+    }
+  }
+  // Under G41/G42, as a standard cycle: a reading error.
+  EXPECT_THROW(read_with_machine_cycles("G41 T1 D1 X1 Y1\nTC(2)\n", {"TC"}), InputError);
+  // The name alone, not a misspelling of it.
+  EXPECT_THROW(read_with_machine_cycles("G0 X1\nTC2\n", {"TC"}), InputError);
+}
+
 // covers: NC-CYCLE-1 PATH-ACTION-1
 TEST(ProgramWords, BothEnginesPassTheReadersNotices) {
   Both r = run_both("G0 X10 Y10 Z5\nCYCLE83(5,0,1,-10)\nG0 X20 Y20 Z50\n");

@@ -253,17 +253,23 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     // the program's own subprogram of that name is called.
     if (!l_number && reader_knows(n) && !(is_shopmill_cycle_name(n) && find_subprogram(n))) return false;
     if (!find_subprogram(n)) {
+      // NC-CYCLE-3: a cycle of the machine: the block reader takes it as not simulated.
+      if (std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
       if (l_number)
         throw InputError(
             cx().line, static_cast<int>(word) + 1,
-            fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
+            fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path; a cycle of "
+                        "the machine itself, not simulated: --machine-cycle {})",
+                        n, n, n));
       return false;  // not a call: the lexer names the word
     }
   }
   std::optional<std::string> file = find_subprogram(n);
   if (!file)  // CALL "NAME" of a missing file (a name or Ln without a file was handled above)
     throw InputError(cx().line, static_cast<int>(word) + 1,
-                     fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path)", n, n));
+                     fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path; a cycle of "
+                                 "the machine itself, not simulated: --machine-cycle {})",
+                                 n, n, n));
   // Arguments: values now; a VAR parameter's argument is also remembered by name.
   InterpreterLookup lookup(*this, cx().line);
   std::vector<std::optional<NcValue>> args;

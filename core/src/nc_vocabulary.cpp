@@ -195,8 +195,9 @@ std::string unsupported_message(std::string_view word, std::string_view what) {
 std::string unknown_message(std::string_view word) {
   return fmt::format(
       "'{}' is not a SINUMERIK word cutcom knows (a variable must be defined with DEF first; a subprogram "
-      "is looked for as NAME.SPF in the program's folder and --search-path)",
-      word);
+      "is looked for as NAME.SPF in the program's folder and --search-path; a cycle of the machine itself, not "
+      "simulated: --machine-cycle {})",
+      word, word);
 }
 
 }  // namespace cutcom

@@ -70,7 +70,7 @@ bool ProgramReader::read_block(Block& out) {
 }
 
 bool ProgramReader::take_block(Block& out, int line) {
-  parse_block_words(text_, line, out.words);
+  parse_block_words(text_, line, out.words, machine_cycles_);
   const BlockWords& w = out.words;
   if (w.word_count == 0) return false;  // blank, comment-only, header or label-only line
   if (end_line_ != 0 && interpreter_.uses_control_flow()) {

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cutcom/reader.hpp"
 #include "nc_vocabulary.hpp"
@@ -38,7 +39,8 @@ enum GGroup : unsigned {
 
 class WordLexer {
  public:
-  WordLexer(std::string_view text, int line, BlockWords& out) : s_(text), line_(line), out_(out) {}
+  WordLexer(std::string_view text, int line, BlockWords& out, const std::vector<std::string>& machine_cycles)
+      : s_(text), line_(line), out_(out), machine_cycles_(machine_cycles) {}
 
   void run() {
     out_.reset(line_);
@@ -318,6 +320,11 @@ class WordLexer {
   void contour_value(const std::string& n, std::size_t at);
   // Multi-letter words other than the compensation parameters.
   void named_word(const std::string& n, std::size_t at);
+  // NC-CYCLE-3: a cycle of the machine named on the command line, as a standard cycle.
+  bool machine_cycle(const std::string& n) const {
+    return std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end();
+  }
+  void not_simulated_cycle(const std::string& n, std::size_t at);
   // NC-WORD-9: ID=n/IDS=n, WHEN/WHENEVER/EVERY/FROM … DO …: the rest of the block, kept as written.
   void synchronized_action(std::size_t at);
   void word();
@@ -355,6 +362,7 @@ class WordLexer {
   int area_limit_ = 0;            // NC-WORD-8: G25 or G26 in the block
   int line_;
   BlockWords& out_;
+  const std::vector<std::string>& machine_cycles_;  // NC-CYCLE-3
   unsigned groups_ = 0;
 };
 

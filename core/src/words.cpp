@@ -119,6 +119,13 @@ void WordLexer::contour_value(const std::string& n, std::size_t at) {
   set_once(slot, v, n, at);
 }
 
+// NC-CYCLE-1/3: a cycle cutcom does not simulate, with its arguments if any.
+void WordLexer::not_simulated_cycle(const std::string& n, std::size_t at) {
+  if (!out_.not_simulated.empty()) fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, n), at);
+  optional_arguments(n, at);
+  out_.not_simulated = n;
+}
+
 // Multi-letter words other than the compensation parameters.
 void WordLexer::named_word(const std::string& n, std::size_t at) {
   static constexpr std::pair<std::string_view, FrameWord> kFrames[] = {
@@ -127,6 +134,7 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
       {"ROT", FrameWord::kRot},       {"AROT", FrameWord::kArot}};
   for (const auto& [name, f] : kFrames)
     if (n == name) return set_once(out_.frame, f, "a frame instruction", at);  // NC-FRAME-1
+  if (machine_cycle(n)) return not_simulated_cycle(n, at);                     // NC-CYCLE-3
   switch (classify_named_word(n)) {
     case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, …, with its axes: BRISKA(X,Y), TOFFOF()
       return add_text_action(optional_arguments(n, at) ? written(at) : n, at);
@@ -165,10 +173,7 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
                                       : DiameterMode::kDiamof,
                       "DIAMON/DIAMOF/DIAM90", at);
     case NamedWord::kCycle:  // NC-CYCLE-1: a standard cycle is not simulated
-      if (!out_.not_simulated.empty()) fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, n), at);
-      optional_arguments(n, at);
-      out_.not_simulated = n;
-      return;
+      return not_simulated_cycle(n, at);
     case NamedWord::kModalCall: {  // NC-CYCLE-2: MCALL CYCLEnn(…) / MCALL alone
       skip_space();
       if (at_end() || peek() == ';') {
@@ -353,7 +358,12 @@ void WordLexer::word() {
         fail(unsupported_message(fmt::format("R{}", rest_of_word()), "R parameters"), at);
       break;
     case 'L':
-      if (is_digit(peek())) fail(unsupported_message(fmt::format("L{}", rest_of_word()), "subprogram calls"), at);
+      if (is_digit(peek())) {
+        std::string call = "L" + rest_of_word();
+        if (!machine_cycle(call)) fail(unsupported_message(call, "subprogram calls"), at);
+        i_ += call.size() - 1;  // NC-CYCLE-3: Ln of the machine, as a standard cycle
+        return not_simulated_cycle(call, at);
+      }
       break;
     case 'P':
       fail(unsupported_message("P", "subprogram repetitions"), at);
@@ -459,6 +469,9 @@ InputError::InputError(int line, int column, const std::string& what)
       column_(column),
       detail_(what) {}
 
-void parse_block_words(std::string_view text, int line, BlockWords& out) { lexer::WordLexer(text, line, out).run(); }
+void parse_block_words(std::string_view text, int line, BlockWords& out,
+                       const std::vector<std::string>& machine_cycles) {
+  lexer::WordLexer(text, line, out, machine_cycles).run();
+}
 
 }  // namespace cutcom

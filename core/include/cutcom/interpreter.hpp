@@ -92,6 +92,8 @@ class Interpreter {
   // NC-WORD-2: the skip levels the operator has switched on, bit n for `/n` (`/` is `/0`).
   void set_skip_levels(std::uint16_t levels) { skip_levels_ = levels; }
   // NC-PARAM-SUB-1: where subprograms are looked for (the program's folder first).
+  // NC-CYCLE-3: a call of one of these that no file answers is left to the block reader.
+  void set_machine_cycles(std::vector<std::string> names) { machine_cycles_ = std::move(names); }
   void set_search_path(std::vector<std::string> dirs) {
     search_path_ = std::move(dirs);
     subprogram_files_ = true;
@@ -298,6 +300,7 @@ class Interpreter {
   std::vector<std::string> source_names_{""};
   std::map<std::string, std::uint32_t> source_ids_;  // NC-PARAM-VAR-3: GUD from definition files
   std::vector<std::string> search_path_;
+  std::vector<std::string> machine_cycles_;  // NC-CYCLE-3
   bool subprogram_files_ = true;
   mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
   std::map<std::string, NcValue, std::less<>> machine_values_;       // NC-PARAM-SYS-4

@@ -21,8 +21,10 @@
 
 namespace cutcom {
 
-// Parses the words of one line (NC-LEX-*). Throws InputError.
-void parse_block_words(std::string_view text, int line, BlockWords& out);
+// Parses the words of one line (NC-LEX-*). Throws InputError. `machine_cycles`: names the
+// machine runs as its own cycles or subprograms (NC-CYCLE-3), not simulated as the standard ones.
+void parse_block_words(std::string_view text, int line, BlockWords& out,
+                       const std::vector<std::string>& machine_cycles = {});
 
 // Tool data set by $TC_DPn (TOOL-DATA-1).
 struct EdgeData {
@@ -95,6 +97,12 @@ class ProgramReader : private SystemValues {
   void set_skip_levels(std::uint16_t levels) { interpreter_.set_skip_levels(levels); }
   // NC-PARAM-SUB-1: the folders subprograms are looked for in, the program's own first.
   void set_search_path(std::vector<std::string> dirs) { interpreter_.set_search_path(std::move(dirs)); }
+  // NC-CYCLE-3: the machine's own cycles and subprograms (upper case): calls of them that no file
+  // answers are not simulated, as standard cycles.
+  void set_machine_cycles(std::vector<std::string> names) {
+    interpreter_.set_machine_cycles(names);
+    machine_cycles_ = std::move(names);
+  }
   void no_subprogram_files() { interpreter_.no_subprogram_files(); }
   void set_source_name(std::string name) { source_ = std::move(name); }
   // NC-PARAM-SUB-3: where a block of a subprogram stands ("INNER.SPF line 4, called from
@@ -165,7 +173,8 @@ class ProgramReader : private SystemValues {
   static std::int8_t edge_position_of(const EdgeData* e, const ModalState& s, int line);
 
   std::istream& in_;
-  Interpreter interpreter_;  // NC-PARAM-*: variables, expressions and control flow before the words
+  Interpreter interpreter_;                  // NC-PARAM-*: variables, expressions and control flow before the words
+  std::vector<std::string> machine_cycles_;  // NC-CYCLE-3
   std::string text_;
   int line_ = 0;
   int index_ = 0;
