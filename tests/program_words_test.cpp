@@ -628,6 +628,11 @@ TEST(ProgramWords, MachineCyclesNamedOnTheCommandLineAreNotSimulated) {
       EXPECT_NE(std::string(e.what()).find("--machine-cycle"), std::string::npos) << e.what();
     }
   }
+  // CALL, PCALL and EXTCALL of one (a path and an extension are not part of the name).
+  auto c = read_with_machine_cycles("CALL \"TC\"\nPCALL TC(3)\nEXTCALL \"/_N_SPF_DIR/tc.spf\"\n", {"TC"});
+  ASSERT_EQ(c.size(), 3u);
+  for (const Block& x : c) EXPECT_EQ(x.words.not_simulated, "TC");
+  EXPECT_THROW(read_with_machine_cycles("CALL \"OTHER\"\n", {"TC"}), InputError);
   // Under G41/G42, as a standard cycle: a reading error.
   EXPECT_THROW(read_with_machine_cycles("G41 T1 D1 X1 Y1\nTC(2)\n", {"TC"}), InputError);
   // The name alone, not a misspelling of it.

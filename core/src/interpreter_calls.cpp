@@ -265,6 +265,8 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     }
   }
   std::optional<std::string> file = find_subprogram(n);
+  // NC-CYCLE-3: CALL "NAME" of a cycle of the machine: the block reader takes it as not simulated.
+  if (!file && std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
   if (!file)  // CALL "NAME" of a missing file (a name or Ln without a file was handled above)
     throw InputError(cx().line, static_cast<int>(word) + 1,
                      fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path; a cycle of "

@@ -325,6 +325,7 @@ class WordLexer {
     return std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end();
   }
   void not_simulated_cycle(const std::string& n, std::size_t at);
+  void explicit_machine_call(const std::string& n, std::size_t at);
   // NC-WORD-9: ID=n/IDS=n, WHEN/WHENEVER/EVERY/FROM … DO …: the rest of the block, kept as written.
   void synchronized_action(std::size_t at);
   void word();

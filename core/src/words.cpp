@@ -126,6 +126,30 @@ void WordLexer::not_simulated_cycle(const std::string& n, std::size_t at) {
   out_.not_simulated = n;
 }
 
+// NC-CYCLE-3: CALL/PCALL/EXTCALL of a cycle of the machine (the interpreter calls any the folders
+// hold): "PATH/NAME.SPF" or NAME, read as the cycle NAME; any other is a word cutcom does not know.
+void WordLexer::explicit_machine_call(const std::string& n, std::size_t at) {
+  skip_space();
+  std::string target;
+  if (peek() == '"') {
+    std::size_t close = s_.find('"', i_ + 1);
+    if (close == std::string_view::npos) fail("the name has no closing '\"'");
+    for (std::size_t k = i_ + 1; k < close; ++k) target.push_back(upper(s_[k]));
+    i_ = close + 1;
+    std::size_t slash = target.find_last_of("/\\");
+    if (slash != std::string::npos) target = target.substr(slash + 1);
+    for (const char* ext : {".SPF", ".MPF"})
+      if (target.size() > 4 && target.compare(target.size() - 4, 4, ext) == 0) target.resize(target.size() - 4);
+  } else {
+    target = letters();
+    name_tail(target);
+  }
+  if (target.empty() || !machine_cycle(target)) fail(unknown_message(n), at);
+  if (!out_.not_simulated.empty()) fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, target), at);
+  optional_arguments(target, at);
+  out_.not_simulated = target;
+}
+
 // Multi-letter words other than the compensation parameters.
 void WordLexer::named_word(const std::string& n, std::size_t at) {
   static constexpr std::pair<std::string_view, FrameWord> kFrames[] = {
@@ -135,6 +159,7 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   for (const auto& [name, f] : kFrames)
     if (n == name) return set_once(out_.frame, f, "a frame instruction", at);  // NC-FRAME-1
   if (machine_cycle(n)) return not_simulated_cycle(n, at);                     // NC-CYCLE-3
+  if (n == "CALL" || n == "PCALL" || n == "EXTCALL") return explicit_machine_call(n, at);
   switch (classify_named_word(n)) {
     case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, …, with its axes: BRISKA(X,Y), TOFFOF()
       return add_text_action(optional_arguments(n, at) ? written(at) : n, at);
