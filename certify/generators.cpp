@@ -42,12 +42,12 @@ void common(ContourCase& c) {
   if (*inRange(0, 4) == 0) c.md20240 = *element(2, 4, 5);
   for (std::size_t i = 0; i < c.steps.size(); ++i) {
     Step& s = c.steps[i];
-    // Never in the first contour block after a selection (not supported there): not in the first
-    // step, nor right after another flip or G41/G42 again (that block is a selection block). One
-    // draw decides both, so the cases of a seed stay those of the campaigns before TRC-SIDE-2.
+    // Not in the first step, nor right after another flip (the draws of the campaigns before
+    // TRC-SIDE-2, kept so that the cases of a seed stay theirs). Right after G41/G42 again, a flip
+    // or another G41/G42 again selects anew before the first contour block (TRC-SIDE-3).
     int side_draw = i > 0 && !c.steps[i - 1].flip ? *inRange(0, 12) : -1;
-    s.flip = side_draw == 0 && !c.steps[i - 1].again;
-    s.again = side_draw == 1 && !s.arc && !c.steps[i - 1].again;  // a circle would only add alarms 10753
+    s.flip = side_draw == 0;
+    s.again = side_draw == 1 && !s.arc;  // a circle would only add alarms 10753
     s.g451 = *inRange(0, 3) == 0;
     // TRC-DUMMY-2: now and then a run of exactly MD20250 (5) blocks without plane motion, the
     // most allowed, or one more (alarm 10762).

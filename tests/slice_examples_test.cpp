@@ -403,7 +403,6 @@ TEST(SliceExamples, ConstructsNotYetSupportedAreRejectedWithTheirLine) {
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 G40 KONTC X20 Y10\n"), 6},
       {program("N20 G1 G41 KONTT X0 Y0 F100\nN30 X10\n"), 4},
       {program("N20 G1 G41 KONTC X0 Y0 F100\nN30 X10\n"), 4},
-      {program("N20 G1 G41 X0 Y0 F100\nN30 G42 X10\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10 OFFN=1\n"), 5},
       {program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X20\n"), 6},  // G41 again is TRC-SIDE-2
   };
@@ -466,10 +465,25 @@ TEST(SliceExamples, AnEdgeProgrammedWithG41AgainStartsWithItsRadius) {
                   line(K::kRetraction, {20, 13, 1}, {30, 10, 1})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-SIDE-2", "no-plane-axis"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-SIDE-2", "no-plane-axis"));
-  // Without the G41 the D change is a radius blend over the block: not supported (decision 30);
-  // G41 again before the first contour block: not supported either.
+  // Without the G41 the D change is a radius blend over the block: not supported (decision 30).
   expect_not_supported(program("$TC_DP6[1,2]=3\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X10 Y10\nN50 G40 X30\n"), 7);
-  expect_not_supported(program("N20 G1 G41 X0 Y0 F100\nN30 G41 X10\nN40 X20\nN50 G40 X30\n"), 5);
+}
+
+// covers: TRC-SIDE-3 TRC-SEL-4 TRC-SEL-1
+TEST(SliceExamples, ANewSelectionBeforeAnyContourLeavesTheFirstWithout) {
+  // N25 programs G41 again before any block moved in the plane: N20 has no contour and runs as
+  // programmed, N25 (no plane axis) too. N30 is then the selection block, but N40 selects anew
+  // (G42) before N30 had a contour: N30 runs as programmed to (10,0,1). N40 approaches the normal
+  // point of N50 (+X, right normal (0,-1)): (20,-2); N50's equidistant y = -2 to (30,-2), G40.
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN25 G41 Z1\nN30 X10\nN40 G42 X20\nN50 X30\nN60 G40 X40 Y-10\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kProgrammed, {-10, 0, 0}, {0, 0, 0}),
+                  line(K::kProgrammed, {0, 0, 0}, {0, 0, 1}), line(K::kProgrammed, {0, 0, 1}, {10, 0, 1}),
+                  line(K::kApproach, {10, 0, 1}, {20, -2, 1}), line(K::kOffset, {20, -2, 1}, {30, -2, 1}),
+                  line(K::kRetraction, {30, -2, 1}, {40, -10, 1})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-SIDE-3", "before-contour"));
+    EXPECT_TRUE(has_decision(*x, "TRC-SEL-4", "no-plane-axis"));
+  }
 }
 
 }  // namespace

@@ -17,9 +17,14 @@ void Compensation::approach(const Block& b) {
     return compensation_off(b);
   }
   if (!still_compensable(b)) return;
-  if (anew(b))
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "G41/G42 changed or programmed again before the first contour block");
+  if (anew(b)) {
+    // TRC-SIDE-3: selected anew before any contour block: the first selection had no contour.
+    decide("TRC-SIDE-3", b.words.line, "before-contour");
+    line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
+    run_held_back_uncompensated();
+    phase = Phase::kOff;
+    return compensation_off(b);
+  }
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   prev_slot ^= 1;
   copy_into(prev_blocks[static_cast<std::size_t>(prev_slot)], b);

@@ -169,9 +169,15 @@ void Compensation::waiting_for_contour(const Block& b) {
     return compensation_off(b);
   }
   if (!still_compensable(b)) return;
-  if (anew(b))
-    throw UnsupportedError(  // TRC-UNSUP-1
-        b.words.line, "G41/G42 changed or programmed again before the first contour block");
+  if (anew(b)) {
+    // TRC-SIDE-3: selected anew before any contour block: the first selection had no contour.
+    decide("TRC-SIDE-3", b.words.line, "before-contour");
+    emit_line(*selection_, selection_start(), end_of(*selection_), OriginKind::kProgrammed);
+    run_held_back_uncompensated();
+    phase_ = Phase::kOff;
+    comp_.reset();
+    return compensation_off(b);
+  }
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   approach(b);
 }
