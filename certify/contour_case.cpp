@@ -242,6 +242,11 @@ std::string to_program(const ContourCase& c) {
   if (v == 8 && !sar.retraction) {  // TRC-DESEL-3: G40 first in a block without a plane axis
     n += 10;
     p += fmt::format("N{} G1 G40 {}-0.5\n", n, h);
+    if (key % 2 == 0) {  // then G41/G42 again before the retraction: a selection from where the tool is
+      n += 10;
+      p += fmt::format("N{} G1 {} {}{} {}{} {}-0.25\n", n, c.right ? "G42" : "G41", a,
+                       fixed((x + c.end_x) / 2, c.decimals), b, fixed((y + c.end_y) / 2, c.decimals), h);
+    }
   }
   n += 10;
   std::string end = fmt::format("{}{} {}{}", a, fixed(c.end_x, c.decimals), b, fixed(c.end_y, c.decimals));
