@@ -122,9 +122,23 @@ std::string to_program(const ContourCase& c) {
   // PROP-DIFF-3: what the path carries besides its geometry, varied by the case's own numbers
   // rather than a random draw (every seed's programs keep their geometry): selection and
   // deselection blocks in G0, feed per revolution.
-  const std::uint64_t key = static_cast<std::uint64_t>(c.start_x) * 31U + static_cast<std::uint64_t>(c.start_y);
+  // The key is read off what the metamorphic properties keep (the steps' kinds and counts, not
+  // their coordinates): a translated, turned, mirrored or scaled case gets the same words.
+  std::uint64_t key = c.steps.size() * 7919U + static_cast<std::uint64_t>(c.edge_select * 31 + c.edge_deselect);
+  for (const Step& s : c.steps)
+    key = key * 131U + static_cast<std::uint64_t>((s.arc ? 1 : 0) + (s.g451 ? 2 : 0) + 4 * s.dummies);
   const bool rapid_ends = !c.plane_only && key % 4 == 1;
   const bool per_revolution = !c.plane_only && key % 6 == 2;
+  // TRC-RADIUS-3: for a fifth of the cases without CDON a D change on a straight contour block
+  // that is not the first of a selection (the blend's other cases are not supported).
+  int d_change = -1;
+  if (!c.plane_only && !c.cdon && c.radius_um > 0 && v != 3 && v != 4 && v != 5 && key % 5 == 3)
+    for (std::size_t i = 1; i < c.steps.size() && d_change < 0; ++i) {
+      const Step& s = c.steps[i];
+      const Step& before = c.steps[i - 1];
+      if (!s.arc && !s.polar && !s.flip && !s.again && !before.flip && !before.again && s.corner == 0)
+        d_change = static_cast<int>(i);
+    }
   const char* tool = v == 3 ? "T1 D0" : v == 4 ? "T0 D1" : v == 5 ? "T1 D2" : "T1 D1";  // TRC-SEL-5/6/7
   p += fmt::format("N{} G{} G90 {}G0 {}{} {}{} {}{} {}\n", n, c.plane, per_revolution ? "G95 " : "", a,
                    fixed(c.start_x, c.decimals), b, fixed(c.start_y, c.decimals), h,
@@ -216,6 +230,13 @@ std::string to_program(const ContourCase& c) {
     // PROP-DIFF-3: actions on contour blocks, and blocks that also move the applicate (a slanted
     // line, a helix), so that where actions run and the heights of inserted circles are compared;
     // no random draw either, and the plane geometry stays that of the seed.
+    if (static_cast<int>(i) == d_change) {  // D2 of twice the radius (a scaled case scales it), its data
+      // just before it: the header stays as it was
+      std::size_t block = p.rfind('\n', p.size() - 2) + 1;
+      p.insert(block, fmt::format("$TC_DP1[1,2]=120\n$TC_DP6[1,2]={}\n", fixed(2 * c.radius_um, c.decimals)));
+      p.pop_back();
+      p += " D2\n";
+    }
     if (i % 4 == 1 && !c.plane_only) {
       p.pop_back();
       p += fmt::format(" M{}\n", i % 8 == 1 ? 8 : 9);

@@ -65,8 +65,9 @@ struct ContourCase {
   // (the campaign draws them: the properties keep well-formed programs). See kVariantNames.
   int variant = 0;
   std::int64_t rotation_mdeg = 0;  // NC-FRAME-4: ROT RPL= (millidegrees) after the first block
-  // The contour blocks move in the plane only, without actions (PROP-DIFF-3 gives some of them an
-  // applicate word and an M function): for properties that scale the program or run it reversed.
+  // The contour blocks move in the plane only, without actions, G0 ends, G95 or a D change
+  // (PROP-DIFF-3 and TRC-RADIUS-3 vary the programs so): for properties that scale the program,
+  // run it reversed or reason about its heights.
   bool plane_only = false;
 };
 

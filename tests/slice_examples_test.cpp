@@ -465,8 +465,46 @@ TEST(SliceExamples, AnEdgeProgrammedWithG41AgainStartsWithItsRadius) {
                   line(K::kRetraction, {20, 13, 1}, {30, 10, 1})});
   EXPECT_TRUE(has_decision(r.ref, "TRC-SIDE-2", "no-plane-axis"));
   EXPECT_TRUE(has_decision(r.fast, "TRC-SIDE-2", "no-plane-axis"));
-  // Without the G41 the D change is a radius blend over the block: not supported (decision 30).
-  expect_not_supported(program("$TC_DP6[1,2]=3\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X10 Y10\nN50 G40 X30\n"), 7);
+}
+
+// covers: TRC-ELEMENT-1
+TEST(SliceExamples, AVanishingElementStillRunsItsApplicateMotion) {
+  // N40 (+Y, 2 long) between N30 (+X) and N50 (-X) on the left (r = 1): the equidistants of N30
+  // (y = 1) and N50 (y = 1) meet N40's (x = 9) at (9,1) and (9,1): its element has length 0. It
+  // moves Z from 0 to -1: that runs at (9,1), and N50 starts at Z-1 (no gap).
+  Runs r = run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 Y2 Z-1\nN50 X0 Y2\nN60 G40 X-10 Y2\n", "1"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 1, 0}),
+                  line(K::kOffset, {0, 1, 0}, {9, 1, 0}), line(K::kInfeed, {9, 1, 0}, {9, 1, -1}),
+                  line(K::kOffset, {9, 1, -1}, {0, 1, -1}), line(K::kRetraction, {0, 1, -1}, {-10, 2, -1})});
+  for (const RunResult* x : {&r.ref, &r.fast}) EXPECT_TRUE(has_decision(*x, "TRC-ELEMENT-1", "vanishes"));
+}
+
+// covers: TRC-RADIUS-3 TRC-UNSUP-1
+TEST(SliceExamples, ADChangeWhileActiveIsBlendedOverItsBlock) {
+  // D2 (r = 3) in N40 without G41: the corner N30/N40 is taken with r = 2 (a tangent: (10,2)),
+  // the corner N40/N50 with r = 3: N50 (+X) and N60 (+Y) meet inside at (30-3, 0+3) = (27,3).
+  // N40 runs inclined from (10,2) to its end on the new equidistant, (20,3).
+  const std::string d2 = "$TC_DP1[1,2]=120\n$TC_DP6[1,2]=3\n";
+  Runs r = run_both(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X20\nN50 X30\nN60 Y10\nN70 G40 X40 Y20\n"));
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kOffset, {10, 2, 0}, {20, 3, 0}),
+                  line(K::kOffset, {20, 3, 0}, {27, 3, 0}), line(K::kOffset, {27, 3, 0}, {27, 10, 0}),
+                  line(K::kRetraction, {27, 10, 0}, {40, 20, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) EXPECT_TRUE(has_decision(*x, "TRC-RADIUS-3", "blend"));
+  // The corner at N40's end turns outside (G450): its circle has the new radius about (20,0),
+  // from (20,3) to N50's normal start (20+3, 0), clockwise on the left.
+  Runs o = run_both(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X20\nN50 Y-10\nN60 G40 X30 Y-20\n"));
+  expect_both(o, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kOffset, {10, 2, 0}, {20, 3, 0}),
+                  arc({20, 3, 0}, {23, 0, 0}, {20, 0, 0}, false), line(K::kOffset, {23, 0, 0}, {23, -10, 0}),
+                  line(K::kRetraction, {23, -10, 0}, {30, -20, 0})});
+  // Not specified (yet): in a circle (a spiral), under CDON, in the first contour block, another tool.
+  expect_not_supported(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 G3 X20 Y0 CR=5\nN50 G40 X30\n"), 8);
+  expect_not_supported(program(d2 + "N20 G1 G41 CDON X0 Y0 F100\nN30 X10\nN40 D2 X20\nN50 G40 X30\n"), 8);
+  expect_not_supported(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 D2 X10\nN40 G40 X30\n"), 7);
+  expect_not_supported(
+      program(d2 + "$TC_DP1[2,1]=120\n$TC_DP6[2,1]=3\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 T2 D1 X20\nN50 G40 X30\n"),
+      10);
 }
 
 // covers: TRC-SIDE-3 TRC-SEL-4 TRC-SEL-1

@@ -90,8 +90,8 @@ bool Compensation::still_compensable(const Block& b) {
     raise(10757, b.words);
     return false;
   }
-  if (anew(b)) return true;             // TRC-SIDE-1/2, handled by the caller
-  reject_change_while_active(b, edge);  // TRC-UNSUP-1
+  if (anew(b)) return true;                // TRC-SIDE-1/2, handled by the caller
+  reject_change_while_active(b, edge, s);  // TRC-UNSUP-1, TRC-RADIUS-3
   return true;
 }
 
@@ -144,7 +144,15 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   kont_first = false;
   PathPoint from = xyz(open_start, h(open.start)), to = xyz(end_point, h(open.end));
   if (margin == 0) {
-    actions(open, to);
+    // TRC-ELEMENT-1: nothing left along the block; what it moves besides (the applicate, or across
+    // from one radius to the other after a blend, TRC-RADIUS-3) runs at the point: no gap.
+    bool across = open_blended && (open_start.a != end_point.a || open_start.b != end_point.b);
+    if (!across && h(open.start) == h(open.end)) {
+      actions(open, to);
+      return true;
+    }
+    line(open, across ? from : xyz(end_point, h(open.start)), to, across ? OriginKind::kOffset : OriginKind::kInfeed,
+         open.rapid);
     return true;
   }
   if (!e.arc) {
@@ -258,6 +266,7 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
   open_el = e;
   open_start = start;
   open_at_normal_start = at_normal_start;
+  open_blended = false;
   open_radius = radius;
   open_start_error = closing_point_error;  // the point that closed the last element opens this one
   closing_point_error = -1;
@@ -265,6 +274,9 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
 
 void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
+  // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
+  bool blend = b.state.side == side && !anew(b) && b.moves_in_plane() && !(ActiveEdge::of(b.state) == edge);
+  if (blend) reject_blend_here(b, looking || approach_until >= 0);
   const BlockCopy* current = nullptr;  // a traversing block, converted once
   if (b.state.side == side && !anew(b) && b.moves_in_plane()) {
     int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
@@ -284,6 +296,30 @@ void Compensation::compensation_active(const Block& b) {
   }
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
   corner(b, *current);
+  if (blend && !trace.stopped()) blend_radius(b, *current);
+}
+
+// TRC-RADIUS-3: what the blend is not specified for (yet): a circle becomes a spiral; the
+// collision check and the look-ahead would compare pieces of two radii.
+void Compensation::reject_blend_here(const Block& b, bool searching) const {
+  if (b.is_arc()) throw UnsupportedError(b.words.line, "a D, DL or OFFN change in a circle block (a spiral)");
+  if (b.state.collision == CollisionMode::kCdon || searching)
+    throw UnsupportedError(b.words.line, "a D, DL or OFFN change under CDON or in the look-ahead");
+}
+
+// TRC-RADIUS-3: the block's corner at its start was taken with the old radius; from here on the
+// new one counts, so that its end (the next corner, or its normal end) lies on the new
+// equidistant and the element runs inclined between the two.
+void Compensation::blend_radius(const Block& b, const BlockCopy& copy) {
+  if (looking || open.seq != copy.seq)  // TRC-LOOK-1 passed the block over: not its own element
+    throw UnsupportedError(b.words.line, "a D, DL or OFFN change in a block the look-ahead passes over");
+  CompensationSide cs = compensation_side(b.state);
+  decide(cs.decision, b.words.line);
+  decide("TRC-RADIUS-3", b.words.line, "blend");
+  r = cs.r.to_double();
+  r_units = cs.r.units();
+  edge = ActiveEdge::of(b.state);
+  open_blended = true;
 }
 
 void Compensation::corner(const Block& b, const BlockCopy& copy) {

@@ -85,6 +85,7 @@ class Compensation {
   BlockCopy open;
   Element open_el;
   Vec2 open_start;                    // start point of its equidistant (after the previous corner)
+  bool open_blended = false;          // TRC-RADIUS-3: the open element runs from one radius to another
   bool open_at_normal_start = false;  // opened at its normal start by construction (a full circle stays whole)
   // PATH-ELEMENT-2: how far (mm) the open element's start and the point closing it may lie from
   // their exact places: an intersection of carriers crossing at sine c errs by about 64 u / c of
@@ -264,6 +265,8 @@ class Compensation {
   void approach_around(const BlockCopy& first, const Element& e, double radius, const Kont& k);
 
   // --- phase: compensation active --------------------------------------------------------------
+  void reject_blend_here(const Block& b, bool searching) const;
+  void blend_radius(const Block& b, const BlockCopy& copy);
   void compensation_active(const Block& b);
 
   Carrier carrier_of(const Element& e, double radius) const { return fast::carrier_of(e, radius, s * r); }

@@ -26,6 +26,8 @@ void Compensation::approach(const Block& b) {
     return compensation_off(b);
   }
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
+  if (!(ActiveEdge::of(b.state) == edge))        // TRC-RADIUS-3: the approach has one radius
+    throw UnsupportedError(b.words.line, "a D, DL or OFFN change in the first contour block");
   prev_slot ^= 1;
   copy_into(prev_blocks[static_cast<std::size_t>(prev_slot)], b);
   const BlockCopy& first = prev_blocks[static_cast<std::size_t>(prev_slot)];

@@ -136,8 +136,8 @@ bool Compensation::still_compensable(const Block& b) {
     raise(10757, b);
     return false;
   }
-  if (anew(b)) return true;                    // TRC-SIDE-1/2, handled by the caller
-  reject_change_while_active(b, comp_->edge);  // TRC-UNSUP-1
+  if (anew(b)) return true;                              // TRC-SIDE-1/2, handled by the caller
+  reject_change_while_active(b, comp_->edge, comp_->s);  // TRC-UNSUP-1, TRC-RADIUS-3
   return true;
 }
 
@@ -178,12 +178,18 @@ void Compensation::waiting_for_contour(const Block& b) {
     comp_.reset();
     return compensation_off(b);
   }
-  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
+  if (!b.moves_in_plane()) return hold_back(b);   // TRC-DUMMY-3: no in-plane displacement
+  if (!(ActiveEdge::of(b.state) == comp_->edge))  // TRC-RADIUS-3: the approach has one radius
+    throw UnsupportedError(b.words.line, "a D, DL or OFFN change in the first contour block");
   approach(b);
 }
 
 void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
+  // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
+  bool blend =
+      b.state.side == comp_->side && !anew(b) && b.moves_in_plane() && !(ActiveEdge::of(b.state) == comp_->edge);
+  if (blend) reject_blend_here(b, looking_ || approach_search_.has_value());
   if (b.state.side == comp_->side && !anew(b) && b.moves_in_plane()) {
     const Block* before = prev_block_;
     prev_block_ = &b;
@@ -198,6 +204,29 @@ void Compensation::compensation_active(const Block& b) {
   }
   if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
   corner(b);
+  if (blend && !trace_.stopped()) blend_radius(b);
+}
+
+// TRC-RADIUS-3: what the blend is not specified for (yet): a circle becomes a spiral; the
+// collision check and the look-ahead would compare pieces of two radii.
+void Compensation::reject_blend_here(const Block& b, bool searching) const {
+  if (b.is_arc()) throw UnsupportedError(b.words.line, "a D, DL or OFFN change in a circle block (a spiral)");
+  if (b.state.collision == CollisionMode::kCdon || searching)
+    throw UnsupportedError(b.words.line, "a D, DL or OFFN change under CDON or in the look-ahead");
+}
+
+// TRC-RADIUS-3: the corner at the block's start was taken with the old radius; from here on the
+// new one counts: the block's end lies on the new equidistant, its element runs inclined.
+void Compensation::blend_radius(const Block& b) {
+  if (looking_ || open_block_ != &b)  // TRC-LOOK-1 passed the block over: not its own element
+    throw UnsupportedError(b.words.line, "a D, DL or OFFN change in a block the look-ahead passes over");
+  CompensationSide side = compensation_side(b.state);
+  decide(side.decision, b.words.line);
+  decide("TRC-RADIUS-3", b.words.line, "blend");
+  comp_->radius = side.r;
+  comp_->side_radius = FT(comp_->s) * leaf(side.r);
+  comp_->edge = ActiveEdge::of(b.state);
+  open_blended_ = true;
 }
 
 bool Compensation::close_open(const Point& end_point, const Block& reporting, bool at_normal_end,
@@ -238,11 +267,21 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
   ExactPoint from = at({open_start_, coord(e.start3, comp_->axes.applicate)});
   ExactPoint to = at({end_point, coord(e.end3, comp_->axes.applicate)});
   if (sign == CGAL::ZERO) {
-    run_actions(*open_block_, path.output(to));
+    // TRC-ELEMENT-1: nothing left along the block; what it moves besides (the applicate, or across
+    // from one radius to the other after a blend, TRC-RADIUS-3) runs at the point: no gap.
+    bool across = open_blended_ && open_start_ != end_point;  // (exact, only after a blend)
+    Decimal h0 = coord(e.start3, comp_->axes.applicate);
+    if (!across && h0 == coord(e.end3, comp_->axes.applicate)) {
+      run_actions(*open_block_, path.output(to));
+      return true;
+    }
+    emit_line(*open_block_, across ? from : at({end_point, h0}), to,
+              across ? OriginKind::kOffset : OriginKind::kInfeed);
     return true;
   }
   if (!e.is_arc()) {
-    emit_line(*open_block_, from, to, OriginKind::kOffset, &e);
+    // TRC-RADIUS-3: a blended element is no equidistant (PROP-EXACT-1 does not apply to it).
+    emit_line(*open_block_, from, to, OriginKind::kOffset, open_blended_ ? nullptr : &e);
   } else {
     ExactPoint centre = at({e.centre, coord(e.start3, comp_->axes.applicate)});
     if (beyond_a_turn) {  // PATH-ELEMENT-2: the whole turn first, then the rest, each readable
@@ -521,6 +560,7 @@ void Compensation::release_window(const Block& b) {
 void Compensation::open(const Block& b, const ContourElement& e, const Point& start, const FT& radius,
                         bool at_normal_start) {
   open_at_normal_start_ = at_normal_start;
+  open_blended_ = false;
   open_ = e;
   open_block_ = &b;
   open_start_ = start;

@@ -185,6 +185,8 @@ class Compensation {
                        const Decimal& h, const KontCorner& k);
 
   // --- compensation active -----------------------------------------------------------------------
+  void reject_blend_here(const Block& b, bool searching) const;
+  void blend_radius(const Block& b);
   void compensation_active(const Block& b);
 
   // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
@@ -384,6 +386,7 @@ class Compensation {
   std::deque<char> actions_done_;  // per kept block
   Phase phase_ = Phase::kOff;
   bool d0_noticed_ = false;
+  bool open_blended_ = false;  // TRC-RADIUS-3: the open element runs from one radius to another
   std::optional<InForce> comp_;
   const Block* selection_ = nullptr;
   const Block* prev_block_ = nullptr;         // the last traversing block with compensation (TRC-CD-1)

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "cutcom/programmed_decisions.hpp"
 #include "cutcom/reader.hpp"
 
 namespace cutcom {
@@ -39,9 +40,26 @@ inline bool selects_anew(const ModalState& s, Side side, std::uint32_t selection
 
 // TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
 // (decision 30): change the tool edge, or ask for KONTC/KONTT.
-inline void reject_change_while_active(const Block& b, const ActiveEdge& active) {
-  if (!(ActiveEdge::of(b.state) == active))
-    throw UnsupportedError(b.words.line, "change of tool, D number, DL or OFFN while compensation is active");
+// TRC-RADIUS-3: the edge data in force changed while compensation is active, without a new
+// selection: a D, DL or OFFN change (or the edge's data) of the same tool, to an edge that is
+// defined, on the same side with a radius above 0, is blended over the next block that moves in
+// the plane (each engine, at that block); anything else is not supported (TRC-UNSUP-1).
+inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_side) {
+  const ModalState& s = b.state;
+  if (ActiveEdge::of(s) == active) return false;
+  if (s.tool != active.tool || s.edge == 0 || !s.edge_defined)
+    throw UnsupportedError(b.words.line,
+                           "a change of tool, or to D0 or an undefined edge, while compensation is active");
+  CompensationSide cs = compensation_side(s);
+  if (cs.s != active_side || cs.r.sign() <= 0)
+    throw UnsupportedError(b.words.line,
+                           "a D, DL or OFFN change that swaps the side or makes the radius 0 while compensation is "
+                           "active (select anew with G41/G42)");
+  return true;
+}
+
+inline void reject_change_while_active(const Block& b, const ActiveEdge& active, int active_side) {
+  radius_changes(b, active, active_side);
   reject_kontc_kontt(b, false);
 }
 
