@@ -75,10 +75,6 @@ Outcome judge(CaseRuns runs) {
 
 Outcome evaluate(const ContourCase& c) { return judge(run_case(c, false)); }
 
-double margin_of(const Decision& d) {
-  return d.margin_exact.empty() ? d.margin : std::strtod(d.margin_exact.c_str(), nullptr);
-}
-
 int bin_of(double value) {
   if (!(value > 0)) return 0;
   int b = static_cast<int>(std::floor((std::log10(value) + 20) * 10)) + 1;
@@ -216,7 +212,7 @@ CaseRecord run_one(const CampaignOptions& o, long k) {
       std::pair<long, long>& b = r.decisions[std::string(d.clause)][std::string(d.branch)];
       ++b.first;
       double band = out.runs.tolerance.band(d.clause);
-      if (d.has_margin && band > 0 && std::fabs(margin_of(d)) <= band) ++b.second;
+      if (d.has_margin && band > 0 && std::fabs(margin_value(d)) <= band) ++b.second;
     }
     if (out.verdict == "agree") r.error = out.error, r.ratio = out.ratio;
     r.evidence = evidence_of(ref);

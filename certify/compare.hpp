@@ -3,6 +3,7 @@
 // documented for that clause; coordinates must agree within a tolerance scaled to the contour.
 #pragma once
 
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,6 +13,13 @@
 #include "cutcom/sink.hpp"
 
 namespace cutcom::props {
+
+constexpr double kUnitRoundoff = 0x1p-53;
+
+// A decision's margin as a number: ref's exact text read to the nearest double, or fast's double.
+inline double margin_value(const Decision& d) {
+  return d.margin_exact.empty() ? d.margin : std::strtod(d.margin_exact.c_str(), nullptr);
+}
 
 // What the tolerances depend on, read off the program.
 struct Conditioning {

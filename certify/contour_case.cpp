@@ -227,9 +227,6 @@ std::string to_program(const ContourCase& c) {
       p.pop_back();
       p += fmt::format(" F{}\n", 300 + 100 * static_cast<int>(i % 5));
     }
-    // PROP-DIFF-3: actions on contour blocks, and blocks that also move the applicate (a slanted
-    // line, a helix), so that where actions run and the heights of inserted circles are compared;
-    // no random draw either, and the plane geometry stays that of the seed.
     if (static_cast<int>(i) == d_change) {  // D2 of twice the radius (a scaled case scales it), its data
       // just before it: the header stays as it was
       std::size_t block = p.rfind('\n', p.size() - 2) + 1;
@@ -237,6 +234,9 @@ std::string to_program(const ContourCase& c) {
       p.pop_back();
       p += " D2\n";
     }
+    // PROP-DIFF-3: actions on contour blocks, and blocks that also move the applicate (a slanted
+    // line, a helix), so that where actions run and the heights of inserted circles are compared;
+    // no random draw either, and the plane geometry stays that of the seed.
     if (i % 4 == 1 && !c.plane_only) {
       p.pop_back();
       p += fmt::format(" M{}\n", i % 8 == 1 ? 8 : 9);

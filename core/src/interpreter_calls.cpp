@@ -223,6 +223,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     return true;
   }
   bool explicit_call = n == "CALL" || n == "PCALL" || n == "EXTCALL";
+  bool l_number = false;  // Ln: a call, whatever follows
   if (explicit_call) {
     std::size_t e;
     if (i < s.size() && s[i] == '"') {
@@ -236,13 +237,10 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
       n = upper_text(s.substr(i, e - i));
     }
     if (n.empty()) throw InputError(cx().line, static_cast<int>(i) + 1, "a subprogram name is expected");
-    std::size_t slash = n.find_last_of("/\\");
-    if (slash != std::string::npos) n = n.substr(slash + 1);  // EXTCALL "PATH/NAME": the name
-    for (const char* ext : {".SPF", ".MPF"})
-      if (n.size() > 4 && n.compare(n.size() - 4, 4, ext) == 0) n.resize(n.size() - 4);
+    n = called_name(std::move(n));
     i = skip_space(s, e);
   } else {
-    bool l_number = n.size() > 1 && n[0] == 'L';
+    l_number = n.size() > 1 && n[0] == 'L';
     for (std::size_t k = 1; l_number && k < n.size(); ++k) l_number = is_digit(n[k]);
     if (!l_number && (n.size() < 2 || find_variable(n) || is_r_parameter(n))) return false;
     bool next_ok = i >= s.size() || s[i] == ';' || s[i] == '(' ||
@@ -252,26 +250,17 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     // files the folders hold; but E_…/F_… are ShopMill cycles only by their prefix (NC-CYCLE-1), so
     // the program's own subprogram of that name is called.
     if (!l_number && reader_knows(n) && !(is_shopmill_cycle_name(n) && find_subprogram(n))) return false;
-    if (!find_subprogram(n)) {
-      // NC-CYCLE-3: a cycle of the machine: the block reader takes it as not simulated.
-      if (std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
-      if (l_number)
-        throw InputError(
-            cx().line, static_cast<int>(word) + 1,
-            fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path; a cycle of "
-                        "the machine itself, not simulated: --machine-cycle {})",
-                        n, n, n));
-      return false;  // not a call: the lexer names the word
-    }
   }
   std::optional<std::string> file = find_subprogram(n);
-  // NC-CYCLE-3: CALL "NAME" of a cycle of the machine: the block reader takes it as not simulated.
-  if (!file && std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
-  if (!file)  // CALL "NAME" of a missing file (a name or Ln without a file was handled above)
+  if (!file) {
+    // NC-CYCLE-3: a cycle of the machine: the block reader takes it as not simulated.
+    if (std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
+    if (!explicit_call && !l_number) return false;  // not a call: the lexer names the word
     throw InputError(cx().line, static_cast<int>(word) + 1,
                      fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path; a cycle of "
                                  "the machine itself, not simulated: --machine-cycle {})",
                                  n, n, n));
+  }
   // Arguments: values now; a VAR parameter's argument is also remembered by name.
   InterpreterLookup lookup(*this, cx().line);
   std::vector<std::optional<NcValue>> args;

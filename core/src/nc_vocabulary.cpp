@@ -151,6 +151,14 @@ bool is_shopmill_cycle_name(std::string_view n) {
   return (n.substr(0, 2) == "E_" || n.substr(0, 2) == "F_") && n.size() > 2;
 }
 
+std::string called_name(std::string n) {
+  std::size_t slash = n.find_last_of("/\\");
+  if (slash != std::string::npos) n = n.substr(slash + 1);  // EXTCALL "PATH/NAME": the name
+  for (const char* ext : {".SPF", ".MPF"})
+    if (n.size() > 4 && n.compare(n.size() - 4, 4, ext) == 0) n.resize(n.size() - 4);
+  return n;
+}
+
 bool starts_synchronized_action(std::string_view n) {
   return n == "WHEN" || n == "WHENEVER" || n == "EVERY" || n == "FROM" || n == "DO" || n == "ID" || n == "IDS";
 }

@@ -24,6 +24,8 @@ NamedWord classify_named_word(std::string_view upper_name);
 // NC-CYCLE-1: an E_…/F_… name (ShopMill/ShopTurn) is a cycle only by its prefix: a subprogram of
 // the program's own with such a name is called.
 bool is_shopmill_cycle_name(std::string_view upper_name);
+// NC-PARAM-SUB-1: the subprogram a CALL/PCALL/EXTCALL names (upper case): "PATH/NAME.SPF" is NAME.
+std::string called_name(std::string upper_name);
 bool is_action_value_wrapper(std::string_view upper_name);  // DC, ACP, ACN, AC, IC
 // NC-WORD-9: ID, IDS, WHEN, WHENEVER, FROM, EVERY, DO: a synchronized action to the block's end.
 bool starts_synchronized_action(std::string_view upper_name);

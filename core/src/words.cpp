@@ -136,18 +136,13 @@ void WordLexer::explicit_machine_call(const std::string& n, std::size_t at) {
     if (close == std::string_view::npos) fail("the name has no closing '\"'");
     for (std::size_t k = i_ + 1; k < close; ++k) target.push_back(upper(s_[k]));
     i_ = close + 1;
-    std::size_t slash = target.find_last_of("/\\");
-    if (slash != std::string::npos) target = target.substr(slash + 1);
-    for (const char* ext : {".SPF", ".MPF"})
-      if (target.size() > 4 && target.compare(target.size() - 4, 4, ext) == 0) target.resize(target.size() - 4);
+    target = called_name(std::move(target));
   } else {
     target = letters();
     name_tail(target);
   }
   if (target.empty() || !machine_cycle(target)) fail(unknown_message(n), at);
-  if (!out_.not_simulated.empty()) fail(fmt::format("'{}' and '{}' in one block", out_.not_simulated, target), at);
-  optional_arguments(target, at);
-  out_.not_simulated = target;
+  not_simulated_cycle(target, at);
 }
 
 // Multi-letter words other than the compensation parameters.

@@ -274,11 +274,12 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
 
 void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
+  bool traversing = b.state.side == side && !anew(b) && b.moves_in_plane();
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
-  bool blend = b.state.side == side && !anew(b) && b.moves_in_plane() && !(ActiveEdge::of(b.state) == edge);
+  bool blend = traversing && !(ActiveEdge::of(b.state) == edge);
   if (blend) reject_blend_here(b, looking || approach_until >= 0);
   const BlockCopy* current = nullptr;  // a traversing block, converted once
-  if (b.state.side == side && !anew(b) && b.moves_in_plane()) {
+  if (traversing) {
     int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
     copy_into(prev_blocks[static_cast<std::size_t>(slot)], b);
     const BlockCopy& before = prev_blocks[static_cast<std::size_t>(prev_slot)];

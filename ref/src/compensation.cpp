@@ -186,11 +186,11 @@ void Compensation::waiting_for_contour(const Block& b) {
 
 void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
+  bool traversing = b.state.side == comp_->side && !anew(b) && b.moves_in_plane();
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
-  bool blend =
-      b.state.side == comp_->side && !anew(b) && b.moves_in_plane() && !(ActiveEdge::of(b.state) == comp_->edge);
+  bool blend = traversing && !(ActiveEdge::of(b.state) == comp_->edge);
   if (blend) reject_blend_here(b, looking_ || approach_search_.has_value());
-  if (b.state.side == comp_->side && !anew(b) && b.moves_in_plane()) {
+  if (traversing) {
     const Block* before = prev_block_;
     prev_block_ = &b;
     if (approach_search_ && approach_further_ahead(b)) return;
