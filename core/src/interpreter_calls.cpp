@@ -172,13 +172,15 @@ std::uint32_t Interpreter::block_source() {
   return it->second;
 }
 
-// The file of a subprogram: NAME.SPF (or .MPF, any case) in the program's folder or the search
-// path (NC-PARAM-SUB-1).
-std::optional<std::string> Interpreter::find_subprogram(const std::string& name) const {
+// The text of a subprogram: a unit of the program's own file (NC-PARAM-SUB-8), else NAME.SPF (or
+// .MPF, any case) in the program's folder or the search path (NC-PARAM-SUB-1).
+std::optional<Interpreter::SubprogramText> Interpreter::find_subprogram(const std::string& name) const {
   // Looked up once per name: a word met in every pass of a loop does not probe the files again.
   auto known = found_.find(name);
   if (known != found_.end()) return known->second;
-  std::optional<std::string>& found = found_[name];
+  if (!units_scanned_) scan_units();
+  std::optional<SubprogramText>& found = found_[name];
+  if (auto unit = units_.find(name); unit != units_.end()) return found = unit->second;
   if (!subprogram_files_) return found;
   std::string lower = name;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -187,7 +189,7 @@ std::optional<std::string> Interpreter::find_subprogram(const std::string& name)
                                  name + ".mpf", lower + ".mpf", "_N_" + name + "_SPF", name}) {
       std::string path = dir.empty() ? f : dir + "/" + f;
       std::ifstream probe(path);
-      if (probe) return found = path;
+      if (probe) return found = SubprogramText{path, "", 0, 0};
     }
   return found;
 }
@@ -207,7 +209,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     std::size_t e = name_end(s, i);
     std::string target = upper_text(s.substr(i, e - i));
     modal_call_.reset();  // a new MCALL replaces the one in force
-    std::optional<std::string> file = find_subprogram(target);
+    std::optional<SubprogramText> file = find_subprogram(target);
     if (!file) return false;  // a standard cycle, or an error: the lexer names it
     std::vector<std::optional<NcValue>> args;
     std::vector<std::string> names;
@@ -251,7 +253,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     // the program's own subprogram of that name is called.
     if (!l_number && reader_knows(n) && !(is_shopmill_cycle_name(n) && find_subprogram(n))) return false;
   }
-  std::optional<std::string> file = find_subprogram(n);
+  std::optional<SubprogramText> file = find_subprogram(n);
   if (!file) {
     // NC-CYCLE-3: a cycle of the machine: the block reader takes it as not simulated.
     if (std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
@@ -288,7 +290,7 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
   return true;
 }
 
-void Interpreter::enter(const std::string& file, std::vector<std::optional<NcValue>> args,
+void Interpreter::enter(const SubprogramText& text, std::vector<std::optional<NcValue>> args,
                         std::vector<std::string> names, int passes, std::size_t word) {
   ++variables_epoch_;  // NC-PARAM-EXPR-4: records resolve their names again
   if (stack_.size() >= kMaxLevels)
@@ -297,9 +299,17 @@ void Interpreter::enter(const std::string& file, std::vector<std::optional<NcVal
         fmt::format("more than {} program levels (subprograms calling subprograms: NC-PARAM-SUB-2)", kMaxLevels));
   control_flow_ = true;
   Context c;
-  c.path = file;
-  c.cache = &line_caches_[file];
-  c.name = std::filesystem::path(file).filename().string();
+  if (text.file.empty()) {  // NC-PARAM-SUB-8: a unit of the main program's text, read from its stream
+    c.in = stack_.front().in;
+    c.cache = stack_.front().cache;
+    c.name = text.unit;
+    c.offset = c.start_offset = c.header = text.header;
+    c.line = c.start_line = text.line;
+  } else {
+    c.path = text.file;
+    c.cache = &line_caches_[text.file];
+    c.name = std::filesystem::path(text.file).filename().string();
+  }
   c.passes_left = passes - 1;
   c.args = std::move(args);
   c.arg_names = std::move(names);
@@ -564,7 +574,7 @@ void Interpreter::leave_subprogram() {
   if (again) {  // P: run it again from its start, with the same arguments
     --c.passes_left;
     count_backward_jump();
-    seek(c.start_offset, 0);
+    seek(c.start_offset, c.start_line);
     c.frames.clear(), c.open_ifs.clear(), c.variables.clear(), c.by_reference.clear(), c.labels_seen.clear();
   } else {
     stack_.pop_back();

@@ -364,7 +364,7 @@ bool Interpreter::find_backward(std::string_view target, int before_line) {
     }
   }
   // A block number (or a label not seen): read the program again from its start.
-  seek(cx().start_offset, 0);
+  seek(cx().start_offset, cx().start_line);
   std::string text;
   std::optional<std::pair<std::streamoff, int>> found;
   while (cx().line < before_line) {

@@ -231,10 +231,13 @@ class Interpreter {
     std::string path;  // a subprogram's file as found
     std::string name;  // the file, for messages ("" for the main program)
     LineCache* cache = nullptr;
-    std::streamoff stream_at = -1;                // where `in` stands (-1: to be sought)
+    mutable std::streamoff stream_at = -1;        // where `in` stands (-1: to be sought)
     std::streamoff offset = 0, start_offset = 0;  // of the next line, of the text's start
     std::streamoff line_start = 0;                // of the line just read
     int line = 0;
+    int start_line = 0;          // lines before the text's start (a unit: before its header)
+    std::streamoff header = -1;  // its own %_N_…_SPF/MPF header line (NC-PARAM-SUB-8), once seen
+    bool begun = false;          // a line other than a comment or header was read
     std::vector<Frame> frames;
     std::vector<int> open_ifs;  // lines of the IF structures whose running branch has not ended
     struct Section {            // a program section being repeated (NC-PARAM-FLOW-5)
@@ -256,11 +259,19 @@ class Interpreter {
   };
   static constexpr std::size_t kMaxLevels = 16;  // the main program and 15 subprogram levels
   bool call(std::string_view line, std::size_t word);
-  // The subprogram in `file` starts: its lines are read next.
-  void enter(const std::string& file, std::vector<std::optional<NcValue>> args, std::vector<std::string> names,
+  // Where a subprogram's text is: a file of its own, or a unit of the main program's file
+  // (NC-PARAM-SUB-8).
+  struct SubprogramText {
+    std::string file;           // "": a unit of the main program's text
+    std::string unit;           // the unit's name as its header writes it (_N_NAME_SPF)
+    std::streamoff header = 0;  // where the unit's header line starts
+    int line = 0;               // lines before it
+  };
+  // The subprogram starts: its lines are read next.
+  void enter(const SubprogramText& text, std::vector<std::optional<NcValue>> args, std::vector<std::string> names,
              int passes, std::size_t word);
   struct ModalCall {  // MCALL NAME(arguments): after every move of the level it was programmed in
-    std::string file;
+    SubprogramText file;
     std::vector<std::optional<NcValue>> args;
     std::vector<std::string> names;
     std::size_t level;
@@ -271,7 +282,16 @@ class Interpreter {
                  std::vector<std::string>& names);
   void procedure(std::string_view line, std::size_t at);
   void leave_subprogram();
-  std::optional<std::string> find_subprogram(const std::string& name) const;
+  std::optional<SubprogramText> find_subprogram(const std::string& name) const;
+  // NC-PARAM-SUB-8: the units after the first in the main program's text, by name; read once, when
+  // a subprogram is first looked for.
+  void scan_units() const;
+  bool unit_ends(Context& c, const std::string& text) const;
+  mutable std::map<std::string, SubprogramText> units_;
+  mutable bool units_scanned_ = false;
+  // Units share the main program's stream: a level reading it after another did must seek.
+  mutable const std::istream* last_in_ = nullptr;
+  mutable std::size_t last_level_ = 0;
   bool reader_knows(const std::string& word);
   std::size_t settable_offset(std::string_view line, std::size_t at);  // the block reader reads it as a word
   std::map<std::string, bool> known_words_;
@@ -302,8 +322,8 @@ class Interpreter {
   std::vector<std::string> search_path_;
   std::vector<std::string> machine_cycles_;  // NC-CYCLE-3
   bool subprogram_files_ = true;
-  mutable std::map<std::string, std::optional<std::string>> found_;  // subprogram files by name
-  std::map<std::string, NcValue, std::less<>> machine_values_;       // NC-PARAM-SYS-4
+  mutable std::map<std::string, std::optional<SubprogramText>> found_;  // subprograms by name
+  std::map<std::string, NcValue, std::less<>> machine_values_;          // NC-PARAM-SYS-4
   std::int64_t backward_jumps_ = 0;
   std::size_t total_elements_ = 0;  // of all DEF variables: memory stays bounded
   bool control_flow_ = false;
