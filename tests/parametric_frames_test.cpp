@@ -94,5 +94,26 @@ TEST(Parametric, FrameComponentsAndSettableFramesAsValues) {
   EXPECT_EQ(error_line("R1=$P_ACTFRAME[X,TR]\n", "frame variable $P_ACTFRAME is not simulated"), 1);
 }
 
+// covers: NC-PARAM-SYS-5 NC-OFFSET-1
+TEST(Parametric, ProgramWritesTheSettableFrameInForce) {
+  const std::string offsets = "$P_UIFR[1]=CTRANS(X,10,Y,20)\n$P_UIFR[2]=CTRANS(X,110,Y,20)\nG54 G0 X0 Y0\n";
+  // $P_IFRAME=$P_UIFR[n] activates offset n without its G function: X0 is at 110, 100 from G54's 10.
+  EXPECT_EQ(end_x(offsets + "R10=2\n$P_IFRAME=$P_UIFR[R10]\nG1 X0 F100\n"), "100");
+  // A component of the frame in force, and a frame of its own; G54 selects its offset again.
+  EXPECT_EQ(end_x(offsets + "$P_IFRAME[X,TR]=15\nG1 X0 F100\n"), "5");
+  EXPECT_EQ(end_x(offsets + "$P_IFRAME=CTRANS(X,5)\nG1 X1 F100\n"), "-4");
+  EXPECT_EQ(end_x(offsets + "$P_IFRAME=CTRANS(X,5)\nG1 X1 F100\nG54 X1\n"), "1");
+  // It comes from the next block on; group 8 still names G54.
+  EXPECT_EQ(end_x(offsets + "$P_IFRAME=$P_UIFR[2]\nG1 X=$P_UIFRNUM*10+$P_GG[8] F100\n"), "112");
+  // First of all: the output is in its system.
+  EXPECT_EQ(end_x("$P_IFRAME=CTRANS(X,7)\nG1 X1 F100\n"), "1");
+  EXPECT_EQ(error_line("$P_IFRAME=CROT(Z,30)\n", "a settable offset holds translations only"), 1);
+  EXPECT_EQ(error_line("$P_IFRAME=3\n", "$P_IFRAME is assigned a value that is not a frame"), 1);
+  EXPECT_EQ(error_line("$P_IFRAME[Q,TR]=3\n", "$P_IFRAME: "), 1);
+  EXPECT_EQ(error_line("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1 G1 G41 X1 Y1 F100\n$P_IFRAME=CTRANS(X,1)\n",
+                       "frame change with tool radius compensation"),
+            4);
+}
+
 }  // namespace
 }  // namespace cutcom::test

@@ -131,7 +131,7 @@ TEST(Reader, BadInputNamesLineAndColumn) {
       {"PROC CONTOUR SAVE XX\n", 1, 19, "unexpected 'XX' after the parameters of PROC"},
       {"CASE R1 OF 0 GOTOF AA\n", 1, 20, "jump target 'AA' not found after this block"},
       {"MSG(\"open\n", 1, 5, "the string has no closing '\"'"},
-      {"$P_IFRAME=CTRANS(X,1)\n", 1, 1, "system variable '$P_IFRAME' is SINUMERIK NC that cutcom does not simulate"},
+      {"$P_BFRAME=CTRANS(X,1)\n", 1, 1, "system variable '$P_BFRAME' is SINUMERIK NC that cutcom does not simulate"},
       {"X1.2.3\n", 1, 2, "X"},
       {"X0.0000000001\n", 1, 2, "more than 9 decimal places"},
       {"OFFN 5\n", 1, 6, "OFFN needs '='"},

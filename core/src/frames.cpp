@@ -129,6 +129,7 @@ bool ProgramReader::mirrors_plane(Plane plane) const {
 // The selected settable offset relative to the first one (NC-OFFSET-1).
 void ProgramReader::select_offset(int index) {
   offset_index_ = index;
+  if (index != kWrittenFrame) offset_gcode_ = index;  // NC-PARAM-SYS-5
   offsets_changed_ = false;
   Point3 d = offsets_.translation(offset_index_);
   if (first_offset_ > 0) {

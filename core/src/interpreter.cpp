@@ -435,6 +435,10 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       i = settable_offset(s, after);
       continue;
     }
+    if (n == "$P_IFRAME" && after < s.size() && (s[after] == '[' || s[after] == '=')) {  // NC-PARAM-SYS-5
+      i = settable_offset(s, after, true);
+      continue;
+    }
     if (n == "$P_PFRAME" && after < s.size() && (s[after] == '=' || s[after] == '[')) {  // NC-PARAM-FRAME-1/2
       std::size_t end = after;
       NcValue frame = s[after] == '[' ? frame_component_assignment(s, after, end) : NcValue{};

@@ -67,23 +67,37 @@ std::string settable_translation(const std::string& chain, int line, std::size_t
 
 // NC-PARAM-SYS-2: $P_UIFR[n]=frame (CTRANS(X,expr,…), $P_UIFR[k], a chain of them) or
 // $P_UIFR[n,X,TR]=expr, from just after the name (at '['); the values are evaluated and the
-// assignment, written on the grid, goes to the reader's settable offsets. Returns where the
-// assignment ends.
-std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i) {
+// assignment, written on the grid, goes to the reader's settable offsets. NC-PARAM-SYS-5, in_force:
+// $P_IFRAME=frame or $P_IFRAME[X,TR]=expr from just after the name, to the frame in force.
+// Returns where the assignment ends.
+std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i, bool in_force) {
   InterpreterLookup lookup(*this, cx().line);
+  const char* name = in_force ? "$P_IFRAME" : "$P_UIFR";
   std::size_t open = i;
-  ExpressionParser index(s, i + 1, cx().line, lookup);
-  std::string text = "$P_UIFR[" + grid_text(index.parse(), cx().line, i + 1);
-  i = skip_space(s, index.position());
-  bool component = i < s.size() && s[i] == ',';
+  std::string text = "$P_UIFR[";
+  bool component = false;
+  if (in_force) {  // $P_IFRAME=frame or $P_IFRAME[axis, component]=value
+    text += "1";
+    component = i < s.size() && s[i] == '[';
+  } else {
+    ExpressionParser index(s, i + 1, cx().line, lookup);
+    text += grid_text(index.parse(), cx().line, i + 1);
+    i = skip_space(s, index.position());
+    component = i < s.size() && s[i] == ',';
+  }
   if (component) {  // [n, axis, component]: names, kept as written
     std::size_t close = s.find(']', i);
     if (close == std::string_view::npos) throw InputError(cx().line, static_cast<int>(open) + 1, "']' expected");
-    for (char c : s.substr(i, close - i))
+    if (in_force) text += ',';
+    for (char c : s.substr(in_force ? i + 1 : i, close - (in_force ? i + 1 : i)))
       if (c != ' ' && c != '\t') text += upper(c);
     i = close;
   }
-  if (i >= s.size() || s[i] != ']') throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
+  if (in_force && !component) {
+    --i;  // at the '='
+  } else if (i >= s.size() || s[i] != ']') {
+    throw InputError(cx().line, static_cast<int>(i) + 1, "']' expected");
+  }
   i = skip_space(s, i + 1);
   if (i >= s.size() || s[i] != '=') throw InputError(cx().line, static_cast<int>(i) + 1, "'=' expected");
   text += "]=";
@@ -95,16 +109,18 @@ std::size_t Interpreter::settable_offset(std::string_view s, std::size_t i) {
     text += grid_text(v, cx().line, value_at);
   } else {
     if (v.type != NcValue::Type::kFrame)
-      throw InputError(cx().line, static_cast<int>(value_at) + 1, "$P_UIFR[n] is assigned a value that is not a frame");
+      throw InputError(cx().line, static_cast<int>(value_at) + 1,
+                       fmt::format("{} is assigned a value that is not a frame", in_force ? name : "$P_UIFR[n]"));
     text += settable_translation(v.text, cx().line, value_at);
   }
   bool taken = false;
   try {
-    taken = system_ && system_->write_settable_offset(text);
+    taken = system_ && (in_force ? system_->write_settable_frame(text) : system_->write_settable_offset(text));
   } catch (const InputError& e) {
-    throw InputError(cx().line, static_cast<int>(open) + 1, fmt::format("{}: {}", text, e.detail()));
+    throw InputError(cx().line, static_cast<int>(open) + 1,
+                     fmt::format("{}: {}", in_force ? std::string(name) : text, e.detail()));
   }
-  if (!taken) throw InputError(cx().line, static_cast<int>(open) + 1, "$P_UIFR cannot be written here");
+  if (!taken) throw InputError(cx().line, static_cast<int>(open) + 1, fmt::format("{} cannot be written here", name));
   control_flow_ = true;
   return i;
 }

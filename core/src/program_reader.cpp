@@ -106,6 +106,30 @@ bool ProgramReader::write_settable_offset(const std::string& assignment) {
   return true;
 }
 
+// NC-PARAM-SYS-5: the program writes the settable frame in force ($P_IFRAME): a copy of the one in
+// force with the assignment applied, selected at the next block as a G54 … would be.
+bool ProgramReader::write_settable_frame(const std::string& assignment) {
+  OffsetTable written;
+  Point3 now = offsets_.translation(offset_index_);
+  for (int a = 0; a < 3; ++a) written.set(1, a, coord(now, a));
+  std::istringstream in(assignment);
+  try {
+    written.load(in, "$P_IFRAME");
+  } catch (const InputError& e) {
+    std::string detail = e.detail();
+    if (detail.rfind("$P_IFRAME: ", 0) == 0) detail = detail.substr(11);
+    throw InputError(0, 1, detail);
+  }
+  if (state_.side != Side::kOff)  // as a frame instruction (NC-FRAME-1)
+    throw InputError(0, 1,
+                     "a frame change with tool radius compensation G41/G42 in force: deselect with G40 first (not "
+                     "simulated)");
+  Point3 t = written.translation(1);
+  for (int a = 0; a < 3; ++a) offsets_.set(kWrittenFrame, a, coord(t, a));
+  written_frame_due_ = true;
+  return true;
+}
+
 void ProgramReader::save_modal_state() {
   saved_.push_back({state_, units_, diameter_, offset_index_, frame_, circle_definition_});
 }
@@ -260,20 +284,25 @@ void ProgramReader::resolve(Block& b) {
   ModalState& s = state_;
   if (w.units) units_ = *w.units;
   if (w.diameter) diameter_ = *w.diameter;
-  if (w.settable_offset) {
-    int idx = *w.settable_offset;
+  std::optional<int> selected = w.settable_offset;
+  if (written_frame_due_ && !selected) selected = kWrittenFrame;  // NC-PARAM-SYS-5
+  written_frame_due_ = false;
+  if (selected) {
+    int idx = *selected;
     if (idx != offset_index_ && idx > 0) {
       if (first_offset_ < 0) {
         first_offset_ = idx;
         first_translation_ = offsets_.translation(idx);
         note(b, "NC-OFFSET-1",
              fmt::format("coordinates are in the workpiece system of {}",
-                         idx <= 4 ? fmt::format("G{}", idx + 53) : fmt::format("G{}", idx + 500)));
+                         idx == kWrittenFrame ? std::string("the frame written to $P_IFRAME")
+                         : idx <= 4           ? fmt::format("G{}", idx + 53)
+                                              : fmt::format("G{}", idx + 500)));
       } else if (!offsets_.defined(idx) || !offsets_.defined(first_offset_)) {
         note(b, "NC-OFFSET-1", "a second settable offset without --offsets data: taken as equal to the first");
       }
     }
-    bool changed = idx != offset_index_;
+    bool changed = idx != offset_index_ || idx == kWrittenFrame;
     select_offset(idx);
     if (changed) refresh_programmed();
   }

@@ -25,7 +25,7 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
     return in_units(coord(programmed_, axis));
   }
   if (n == "$P_PFRAME" || n == "$P_UIFR" || n == "$P_IFRAME") return frame_component(n, idx);  // NC-PARAM-FRAME-2
-  if (n == "$P_UIFRNUM" && idx.empty()) return static_cast<double>(offset_index_);
+  if (n == "$P_UIFRNUM" && idx.empty()) return static_cast<double>(offset_gcode_);
   if (n == "$P_GG" && idx.size() == 1 && idx[0].type != NcValue::Type::kString) return g_group_value(idx[0].number);
   // NC-PARAM-SYS-3: cutcom shows a normal run: no block search, no program test, no dry run, not
   // the control's own simulation; the tool programmed last.
@@ -79,7 +79,7 @@ std::optional<double> ProgramReader::g_group_value(double group) const {
     case 7:  // G40 G41 G42
       return number(state_.side);
     case 8:  // G500 G54 … G57 G505 … G599
-      return static_cast<double>(offset_index_ + 1);
+      return static_cast<double>(offset_gcode_ + 1);
     case 13:  // G70 G71 G700 G710
       return units_ == Units::kG70 ? 1.0 : units_ == Units::kG71 ? 2.0 : units_ == Units::kG700 ? 3.0 : 4.0;
     case 14:  // G90 G91

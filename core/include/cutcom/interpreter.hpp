@@ -55,6 +55,9 @@ class SystemValues {
   // NC-PARAM-SYS-2: "$P_UIFR[n]=CTRANS(X,10,Y,20)" or "$P_UIFR[n,X,TR]=10" with values on the
   // grid; false: not taken. Throws InputError (column 1) for a wrong assignment.
   virtual bool write_settable_offset(const std::string& /*assignment*/) { return false; }
+  // NC-PARAM-SYS-5: $P_IFRAME=… : the settable frame in force becomes the assignment's frame
+  // (written "$P_UIFR[1]=CTRANS(…)" or "$P_UIFR[1,X,TR]=10" for the frame in force); false: not taken.
+  virtual bool write_settable_frame(const std::string& /*assignment*/) { return false; }
   // NC-PARAM-FRAME-1: the programmable frame in force, as frame blocks the reader reads back to
   // the same frame ("TRANS X1 Y2\nAROT Z30\nASCALE X-1"); empty if not known.
   virtual std::optional<std::string> programmable_frame() { return std::nullopt; }
@@ -293,7 +296,8 @@ class Interpreter {
   mutable const std::istream* last_in_ = nullptr;
   mutable std::size_t last_level_ = 0;
   bool reader_knows(const std::string& word);
-  std::size_t settable_offset(std::string_view line, std::size_t at);  // the block reader reads it as a word
+  // $P_UIFR[n]… (NC-PARAM-SYS-2) or, in_force, $P_IFRAME… (NC-PARAM-SYS-5) from `at` ('[' or '=').
+  std::size_t settable_offset(std::string_view line, std::size_t at, bool in_force = false);
   std::map<std::string, bool> known_words_;
 
   Context& cx() { return stack_.back(); }

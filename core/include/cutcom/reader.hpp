@@ -124,7 +124,8 @@ class ProgramReader : private SystemValues {
   static bool polar_move(const BlockWords& w);
   // NC-PARAM-SUB-4: PROC … SAVE.
   bool write_settable_offset(const std::string& assignment) override;
-  std::optional<std::string> programmable_frame() override;  // NC-PARAM-FRAME-1
+  bool write_settable_frame(const std::string& assignment) override;  // NC-PARAM-SYS-5
+  std::optional<std::string> programmable_frame() override;           // NC-PARAM-FRAME-1
   std::optional<std::string> programmable_frame_with(int axis, std::string_view component,
                                                      std::string_view value) override;  // NC-PARAM-FRAME-2
   std::optional<std::string> settable_frame(int n) override;                            // NC-PARAM-FRAME-2
@@ -191,7 +192,12 @@ class ProgramReader : private SystemValues {
   std::optional<std::int64_t> preselected_;
   Units units_ = Units::kG71;
   DiameterMode diameter_ = DiameterMode::kDiamof;
-  int offset_index_ = 0;      // G500
+  int offset_index_ = 0;  // G500
+  // NC-PARAM-SYS-5: the frame a program wrote to $P_IFRAME is held as this settable offset; it is
+  // in force from the next block; group 8 ($P_UIFRNUM, $P_GG[8]) keeps the G function's number.
+  static constexpr int kWrittenFrame = 100;
+  bool written_frame_due_ = false;
+  int offset_gcode_ = 0;      // the settable offset the G function of group 8 selected
   Point3 offset_difference_;  // of offset_index_ (select_offset)
   bool offsets_changed_ = false;
   int first_offset_ = -1;
