@@ -100,7 +100,6 @@ constexpr Unsupported kUnsupported[] = {
     {"BSPLINE", "splines"},
     {"CSPLINE", "splines"},
     {"POLY", "polynomials"},
-    {"TRANSMIT", "transformations"},
     {"TRACYL", "transformations"},
     {"CUT2DF", "compensation in a frame plane"},
     {"CUT3DC", "3D compensation"},

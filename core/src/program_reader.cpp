@@ -13,6 +13,9 @@
 namespace cutcom {
 
 namespace {
+const char* transformation_name(Transformation t) {
+  return t == Transformation::kTraori ? "TRAORI" : t == Transformation::kTransmit ? "TRANSMIT" : "TRAFOOF";
+}
 // NC-CYCLE-1: the drilling cycles drill at the position they are called at and return to their
 // retraction plane: only the infeed axis is left unknown.
 bool is_drilling_cycle(const std::string& name) {
@@ -336,15 +339,27 @@ void ProgramReader::resolve(Block& b) {
   // along the contour, not simulated.
   // NC-WORD-11: under TRAORI X, Y, Z are the tool tip in the workpiece system whatever the rotary
   // axes do: without compensation they may move together in any block.
-  if (w.orientation_transformation) {
+  bool transmit_switched = false;  // NC-WORD-13: where the tool is in the face's X, Y is not simulated
+  if (w.transformation) {
+    transmit_switched =
+        (*w.transformation == Transformation::kTransmit) != (s.transformation == Transformation::kTransmit);
     if (s.side != Side::kOff)
       fail(fmt::format("{} while compensation is active is SINUMERIK NC that cutcom does not simulate",
-                       *w.orientation_transformation ? "TRAORI" : "TRAFOOF"));
-    s.orientation_transformation = *w.orientation_transformation;
+                       transformation_name(*w.transformation)));
+    s.transformation = *w.transformation;
+    if (s.transformation == Transformation::kTransmit)
+      note(b, "NC-WORD-13",
+           "TRANSMIT: the path is the tool centre's in the face's cartesian X, Y as programmed (the machine turns "
+           "the spindle's rotary axis for Y)");
   }
-  if (!w.orientation_word.empty() && !s.orientation_transformation)
+  // NC-WORD-13: which axis diameter programming means under TRANSMIT is the machine's data.
+  if (s.transformation == Transformation::kTransmit && diameter_ != DiameterMode::kDiamof)
+    fail(
+        "TRANSMIT with diameter programming (DIAMON, DIAM90) in force is SINUMERIK NC that cutcom does not "
+        "simulate: program DIAMOF before TRANSMIT");
+  if (!w.orientation_word.empty() && s.transformation != Transformation::kTraori)
     fail(fmt::format("{}= (the tool's orientation) is read under TRAORI, which is not in force", w.orientation_word));
-  if (!w.rotary_with_plane.empty() && s.orientation_transformation) {
+  if (!w.rotary_with_plane.empty() && s.transformation == Transformation::kTraori) {
     if (s.side != Side::kOff)
       throw InputError(
           w.line, w.rotary_column,
@@ -518,6 +533,11 @@ void ProgramReader::resolve(Block& b) {
     }
   }
   b.end = end;
+  if (transmit_switched) {  // NC-WORD-13: the rotary axis' angle turns X into X and Y
+    unknown_[0] = unknown_[1] = true;
+    unknown_after_ = transformation_name(*w.transformation);
+    unknown_line_ = w.line;
+  }
   if (cycle) {
     note(b, "NC-CYCLE-1",
          fmt::format("{} is not simulated: its motion is not in the path, and the position stays unknown until the "

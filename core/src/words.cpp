@@ -292,9 +292,14 @@ void WordLexer::keyword(const std::string& n, std::size_t at) {
     out_.stopre = true;
     return;
   }
-  if (n == "TRAORI" || n == "TRAFOOF") {  // NC-WORD-11: the 5-axis transformation on (its number) or off
-    bool arguments = n == "TRAORI" && optional_arguments(n, at);
-    set_once(out_.orientation_transformation, n == "TRAORI", "TRAORI/TRAFOOF", at);
+  // NC-WORD-11/13: the 5-axis or the face's polar transformation on (its number), or off.
+  if (n == "TRAORI" || n == "TRANSMIT" || n == "TRAFOOF") {
+    bool arguments = n != "TRAFOOF" && optional_arguments(n, at);
+    set_once(out_.transformation,
+             n == "TRAORI"     ? Transformation::kTraori
+             : n == "TRANSMIT" ? Transformation::kTransmit
+                               : Transformation::kOff,
+             "TRAORI/TRANSMIT/TRAFOOF", at);
     return add_text_action(arguments ? written(at) : n, at);
   }
   keyword_value(n, at);

@@ -40,6 +40,10 @@ enum class Units : std::uint8_t { kG71, kG70, kG710, kG700 };
 // Diameter programming of the transverse axis X in turning (NC-DIAM-1).
 enum class DiameterMode : std::uint8_t { kDiamof, kDiamon, kDiam90 };
 
+// Kinematic transformations: none (TRAFOOF), the 5-axis TRAORI (NC-WORD-11), the face's polar
+// TRANSMIT (NC-WORD-13).
+enum class Transformation : std::uint8_t { kOff, kTraori, kTransmit };
+
 // Programmable frames (NC-FRAME-*): the block's axis words are the frame's values, not a move.
 enum class FrameWord : std::uint8_t { kTrans, kAtrans, kScale, kAscale, kMirror, kAmirror, kRot, kArot };
 
@@ -166,12 +170,12 @@ struct BlockWordFields {
   // of them; allowed only in a rapid move without compensation (the reader decides).
   std::string_view rotary_with_plane;  // the rotary axis or orientation word moving with X, Y or Z (a literal)
   int rotary_column = 0;
-  std::string_view orientation_word;     // A2…C3, LEAD, TILT, THETA, PSI: the tool's orientation (NC-WORD-11)
-  Opt<bool> orientation_transformation;  // TRAORI (true), TRAFOOF (false): NC-WORD-11
-  bool modal_call = false;               // MCALL: the cycle in `not_simulated` runs after every move
-  bool modal_call_end = false;           // MCALL alone
-  bool repeats_from_start = false;       // GOTOS (NC-PARAM-FLOW-7): also a program end
-  bool synchronized_action = false;      // NC-WORD-9: WHEN/WHENEVER/EVERY/FROM/DO … kept as an action
+  std::string_view orientation_word;   // A2…C3, LEAD, TILT, THETA, PSI: the tool's orientation (NC-WORD-11)
+  Opt<Transformation> transformation;  // TRAORI, TRANSMIT, TRAFOOF: NC-WORD-11/13
+  bool modal_call = false;             // MCALL: the cycle in `not_simulated` runs after every move
+  bool modal_call_end = false;         // MCALL alone
+  bool repeats_from_start = false;     // GOTOS (NC-PARAM-FLOW-7): also a program end
+  bool synchronized_action = false;    // NC-WORD-9: WHEN/WHENEVER/EVERY/FROM/DO … kept as an action
 
   bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
 };
@@ -226,10 +230,10 @@ struct ModalState {
   FeedType feed_type = FeedType::kG94;
   PathMode path_mode = PathMode::kG60;
   Decimal feed;
-  std::int64_t tool = 0;                    // 0: no tool active
-  std::int64_t edge = 0;                    // 0: D0, no edge active
-  std::int64_t sum_offset = 0;              // DL: 0 none (TOOL-SUM-1)
-  bool orientation_transformation = false;  // TRAORI in force (NC-WORD-11)
+  std::int64_t tool = 0;                                 // 0: no tool active
+  std::int64_t edge = 0;                                 // 0: D0, no edge active
+  std::int64_t sum_offset = 0;                           // DL: 0 none (TOOL-SUM-1)
+  Transformation transformation = Transformation::kOff;  // in force (NC-WORD-11/13)
   Decimal offn;
   // Edge data captured when T or D was programmed (spec TOOL-EDGE-2).
   Decimal edge_radius;  // $TC_DP6
