@@ -129,7 +129,7 @@ std::string to_program(const ContourCase& c) {
     key = key * 131U + static_cast<std::uint64_t>((s.arc ? 1 : 0) + (s.g451 ? 2 : 0) + 4 * s.dummies);
   const bool rapid_ends = !c.plane_only && key % 4 == 1;
   const bool per_revolution = !c.plane_only && key % 6 == 2;
-  // TRC-RADIUS-3: for a fifth of the cases without CDON a D change on a straight contour block
+  // TRC-RADIUS-3: for a fifth of the cases without CDON a D (or T) change on a straight contour block
   // that is not the first of a selection (the blend's other cases are not supported).
   int d_change = -1;
   if (!c.plane_only && !c.cdon && c.radius_um > 0 && v != 3 && v != 4 && v != 5 && key % 5 == 3)
@@ -228,11 +228,14 @@ std::string to_program(const ContourCase& c) {
       p += fmt::format(" F{}\n", 300 + 100 * static_cast<int>(i % 5));
     }
     if (static_cast<int>(i) == d_change) {  // D2 of twice the radius (a scaled case scales it), its data
-      // just before it: the header stays as it was
+      // just before it: the header stays as it was. Every other such case changes the tool (T2 D1)
+      // instead, which the blend takes as it takes a D change.
+      bool tool_change = (key / 5) % 2 == 1;
       std::size_t block = p.rfind('\n', p.size() - 2) + 1;
-      p.insert(block, fmt::format("$TC_DP1[1,2]=120\n$TC_DP6[1,2]={}\n", fixed(2 * c.radius_um, c.decimals)));
+      p.insert(block, fmt::format("$TC_DP1[{0}]=120\n$TC_DP6[{0}]={1}\n", tool_change ? "2,1" : "1,2",
+                                  fixed(2 * c.radius_um, c.decimals)));
       p.pop_back();
-      p += " D2\n";
+      p += tool_change ? " T2 D1\n" : " D2\n";
     }
     // PROP-DIFF-3: actions on contour blocks, and blocks that also move the applicate (a slanted
     // line, a helix), so that where actions run and the heights of inserted circles are compared;

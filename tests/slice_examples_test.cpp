@@ -486,10 +486,12 @@ TEST(SliceExamples, ADChangeWhileActiveIsBlendedOverItsBlock) {
   // N40 runs inclined from (10,2) to its end on the new equidistant, (20,3).
   const std::string d2 = "$TC_DP1[1,2]=120\n$TC_DP6[1,2]=3\n";
   Runs r = run_both(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 X20\nN50 X30\nN60 Y10\nN70 G40 X40 Y20\n"));
-  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}), line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
-                  line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kOffset, {10, 2, 0}, {20, 3, 0}),
-                  line(K::kOffset, {20, 3, 0}, {27, 3, 0}), line(K::kOffset, {27, 3, 0}, {27, 10, 0}),
-                  line(K::kRetraction, {27, 10, 0}, {40, 20, 0})});
+  const std::vector<Expect> blended{
+      line(K::kProgrammed, {0, 0, 0}, {-10, 0, 0}),  line(K::kApproach, {-10, 0, 0}, {0, 2, 0}),
+      line(K::kOffset, {0, 2, 0}, {10, 2, 0}),       line(K::kOffset, {10, 2, 0}, {20, 3, 0}),
+      line(K::kOffset, {20, 3, 0}, {27, 3, 0}),      line(K::kOffset, {27, 3, 0}, {27, 10, 0}),
+      line(K::kRetraction, {27, 10, 0}, {40, 20, 0})};
+  expect_both(r, blended);
   for (const RunResult* x : {&r.ref, &r.fast}) EXPECT_TRUE(has_decision(*x, "TRC-RADIUS-3", "blend"));
   // The corner at N40's end turns outside (G450): its circle has the new radius about (20,0),
   // from (20,3) to N50's normal start (20+3, 0), clockwise on the left.
@@ -498,13 +500,20 @@ TEST(SliceExamples, ADChangeWhileActiveIsBlendedOverItsBlock) {
                   line(K::kOffset, {0, 2, 0}, {10, 2, 0}), line(K::kOffset, {10, 2, 0}, {20, 3, 0}),
                   arc({20, 3, 0}, {23, 0, 0}, {20, 0, 0}, false), line(K::kOffset, {23, 0, 0}, {23, -10, 0}),
                   line(K::kRetraction, {23, -10, 0}, {30, -20, 0})});
-  // Not specified (yet): in a circle (a spiral), under CDON, in the first contour block, another tool.
+  // A tool change is blended as a D change is: T2 D1 (r = 3) in N40 gives D2's path.
+  Runs t = run_both(program(d2 + "$TC_DP1[2,1]=120\n$TC_DP6[2,1]=3\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 T2 D1 X20\n"
+                                 "N50 X30\nN60 Y10\nN70 G40 X40 Y20\n"));
+  expect_both(t, blended);
+  // Not specified (yet): in a circle (a spiral), under CDON, in the first contour block, a
+  // turning tool's new tip (its edge centre lies elsewhere from the tip: TOOL-TURN-1).
   expect_not_supported(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 X10\nN40 D2 G3 X20 Y0 CR=5\nN50 G40 X30\n"), 8);
   expect_not_supported(program(d2 + "N20 G1 G41 CDON X0 Y0 F100\nN30 X10\nN40 D2 X20\nN50 G40 X30\n"), 8);
   expect_not_supported(program(d2 + "N20 G1 G41 X0 Y0 F100\nN30 D2 X10\nN40 G40 X30\n"), 7);
-  expect_not_supported(
-      program(d2 + "$TC_DP1[2,1]=120\n$TC_DP6[2,1]=3\nN20 G1 G41 X0 Y0 F100\nN30 X10\nN40 T2 D1 X20\nN50 G40 X30\n"),
-      10);
+  const std::string turning =
+      "$TC_DP1[1,1]=500\n$TC_DP2[1,1]=3\n$TC_DP6[1,1]=0.4\n$TC_DP1[1,2]=500\n$TC_DP2[1,2]=3\n$TC_DP6[1,2]=0.8\n"
+      "G18 T1 D1\nG0 X30 Z5\nG1 G42 X20 Z0 F0.2\nZ-10\n";
+  expect_not_supported(turning + "D2 Z-20\nG40 X40\n", 11);
+  expect_not_supported(turning + "OFFN=0.1\nZ-20\nD2\nG40 X40\n", 13);
 }
 
 // covers: TRC-SIDE-3 TRC-SEL-4 TRC-SEL-1

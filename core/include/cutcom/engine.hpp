@@ -19,8 +19,9 @@ class UnsupportedError : public InputError {
 struct ActiveEdge {
   std::int64_t tool = 0, edge = 0, sum_offset = 0;  // (a DL acts on the path as a D does: TOOL-SUM-1)
   Decimal radius, wear, offn;
+  std::int8_t position = 0;  // a turning tool's cutting edge position (TOOL-TURN-1)
   static ActiveEdge of(const ModalState& s) {
-    return {s.tool, s.edge, s.sum_offset, s.edge_radius, s.edge_wear, s.offn};
+    return {s.tool, s.edge, s.sum_offset, s.edge_radius, s.edge_wear, s.offn, s.edge_position};
   }
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
 };
@@ -41,15 +42,22 @@ inline bool selects_anew(const ModalState& s, Side side, std::uint32_t selection
 // TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
 // (decision 30): change the tool edge, or ask for KONTC/KONTT.
 // TRC-RADIUS-3: the edge data in force changed while compensation is active, without a new
-// selection: a D, DL or OFFN change (or the edge's data) of the same tool, to an edge that is
+// selection: a T, D, DL or OFFN change (or the edge's data), to an edge that is
 // defined, on the same side with a radius above 0, is blended over the next block that moves in
 // the plane (each engine, at that block); anything else is not supported (TRC-UNSUP-1).
 inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_side) {
   const ModalState& s = b.state;
-  if (ActiveEdge::of(s) == active) return false;
-  if (s.tool != active.tool || s.edge == 0 || !s.edge_defined)
+  ActiveEdge now = ActiveEdge::of(s);
+  if (now == active) return false;
+  if (s.edge == 0 || !s.edge_defined)
+    throw UnsupportedError(b.words.line, "a change to D0 or to an undefined edge while compensation is active");
+  // The tip of a turning tool lies off its edge centre by the edge's radius (TOOL-TURN-1): a new
+  // tip would shift the contour by another vector at each end of the blend.
+  if ((active.position != 0 || now.position != 0) &&
+      (active.position != now.position || active.radius + active.wear != now.radius + now.wear))
     throw UnsupportedError(b.words.line,
-                           "a change of tool, or to D0 or an undefined edge, while compensation is active");
+                           "a change of a turning tool's tip (its cutting edge position, radius or wear) while "
+                           "compensation is active");
   CompensationSide cs = compensation_side(s);
   if (cs.s != active_side || cs.r.sign() <= 0)
     throw UnsupportedError(b.words.line,
