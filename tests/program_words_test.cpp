@@ -127,6 +127,25 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_THROW(read("WAITM 1\n"), InputError);      // a call needs its arguments in (…)
 }
 
+// covers: NC-WORD-7 NC-ERR-3
+TEST(ProgramWords, MotionEndRepositioningAndRetractionWordsAreActions) {
+  auto b = read(
+      "FINEA COARSEA[C] IPOENDA[Z] IPOBRKA(X,100) ADISPOSA(Z,1,0.5) FPR(C) FPRAON(C,S1) FPRAOF\n"
+      "ORISON STOPREOF RMB DISPR=2 POLF[X]=10 POLFMASK(X) CORROF(X,\"DRF\") CLGON(10) CLGOF ORISOF\n"
+      "WRTPR(\"START\") EXTCLOSE(\"/_N_WKS_DIR/LOG.MPF\") G1 X10 F100\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(actions(b[0]), (std::vector<std::string>{"FINEA", "COARSEA[C]", "IPOENDA[Z]", "IPOBRKA(X,100)",
+                                                     "ADISPOSA(Z,1,0.5)", "FPR(C)", "FPRAON(C,S1)", "FPRAOF"}));
+  EXPECT_EQ(actions(b[1]),
+            (std::vector<std::string>{"ORISON", "STOPREOF", "RMB", "DISPR=2", "POLF[X]=10", "POLFMASK(X)",
+                                      "CORROF(X,\"DRF\")", "CLGON(10)", "CLGOF", "ORISOF"}));
+  EXPECT_EQ(b[2].end.x.to_string(), "10");
+  EXPECT_THROW(read("FINEA[1]\n"), InputError);  // an axis in the brackets
+  // Words that move or switch what cutcom follows: named, not simulated.
+  for (const char* text : {"FXS[Z]=1\n", "GEOAX(1,X)\n", "TCA(\"DRILL\",1)\n", "REPOSA\n", "DELDL(1,1)\n"})
+    EXPECT_NE(error_of(text).find("SINUMERIK NC that cutcom does not simulate ("), std::string::npos) << text;
+}
+
 // covers: NC-WORD-7
 TEST(ProgramWords, FeedProfileOrientationAndDialectWordsAreActions) {
   auto b = read(

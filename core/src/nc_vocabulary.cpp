@@ -34,7 +34,12 @@ constexpr std::string_view kActionKeywords[] = {
     "GWPSON", "GWPSOF", "TMON", "TMOF",
     // NC-WORD-7: diameter programming in cycles off, orientation at outer corners, the boundary
     // conditions of splines (which are not simulated)
-    "DIAMCYCOF", "ORIC", "ORID", "BAUTO", "BNAT", "BTAN", "EAUTO", "ENAT", "ETAN"};
+    "DIAMCYCOF", "ORIC", "ORID", "BAUTO", "BNAT", "BTAN", "EAUTO", "ENAT", "ETAN",
+    // NC-WORD-7: orientation smoothing, the preprocessing stop's suppression, repositioning
+    // modes, handwheel and overlay offsets off, clearance control off, feed per revolution of
+    // positioning axes off; the exact stop of positioning axes (FINEA[C], FINEA=C)
+    "ORISON", "ORISOF", "STOPREOF", "RMB", "RME", "RMI", "RMN", "CORROF", "CLGOF", "FPRAOF", "FINEA", "COARSEA",
+    "IPOENDA"};
 constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS", "SPOSA",
                                               // NC-WORD-7: compressor tolerances, axis dynamics
                                               "CTOL", "OTOL", "ATOL", "ACC", "VELOLIM", "JERKLIM",
@@ -48,23 +53,28 @@ constexpr std::string_view kActionValues[] = {"ADIS", "ADISPOS", "LIMS", "SPOS",
                                               "TOFFL", "TOFF",
                                               // NC-WORD-12: thread start angle, run-in and run-out
                                               "SF", "DITS", "DITE",
-                                              // NC-WORD-7: an axis's speed limit
-                                              "FL"};
-constexpr std::string_view kActionCalls[] = {"MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
-                                             // NC-WORD-8: the rotary axes set to an orientation
-                                             "ORIRESET",
-                                             // NC-WORD-9: synchronized actions cancelled, locked, unlocked
-                                             "CANCEL", "LOCK", "UNLOCK",
-                                             // NC-WORD-7: channel coordination, piece count, feed group
-                                             "WAITM", "WAITMC", "WAITE", "WAITS", "SETM", "CLEARM", "SETPIECE",
-                                             "FGROUP",
-                                             // NC-WORD-7: waiting for positioning axes
-                                             "WAITP",
-                                             // NC-WORD-10: tool length offsets, programmed
-                                             "TOFFON",
-                                             // NC-WORD-7: tangential follow-up of a rotary axis, a
-                                             // file written, the subprograms' search path
-                                             "TANG", "TANGON", "TANGOF", "WRITE", "CALLPATH"};
+                                              // NC-WORD-7: an axis's speed limit, the repositioning
+                                              // path, the retraction position of extended stop and retract
+                                              "FL", "DISPR", "POLF"};
+constexpr std::string_view kActionCalls[] = {
+    "MSG", "WORKPIECE", "GROUP_BEGIN", "GROUP_END", "CYCLE832", "SETMS",
+    // NC-WORD-8: the rotary axes set to an orientation
+    "ORIRESET",
+    // NC-WORD-9: synchronized actions cancelled, locked, unlocked
+    "CANCEL", "LOCK", "UNLOCK",
+    // NC-WORD-7: channel coordination, piece count, feed group
+    "WAITM", "WAITMC", "WAITE", "WAITS", "SETM", "CLEARM", "SETPIECE", "FGROUP",
+    // NC-WORD-7: waiting for positioning axes
+    "WAITP",
+    // NC-WORD-10: tool length offsets, programmed
+    "TOFFON",
+    // NC-WORD-7: tangential follow-up of a rotary axis, a
+    // file written, the subprograms' search path
+    "TANG", "TANGON", "TANGOF", "WRITE", "CALLPATH",
+    // NC-WORD-7: a file written and closed, feed per revolution
+    // from an axis, motion end of positioning axes, clearance
+    // control, the retraction axes of extended stop and retract
+    "WRTPR", "EXTCLOSE", "FPR", "FPRAON", "IPOBRKA", "ADISPOSA", "CLGON", "POLFMASK", "POLFMLIN"};
 
 // Known SINUMERIK words cutcom does not simulate, and why (the message names the family).
 struct Unsupported {
@@ -128,6 +138,21 @@ constexpr Unsupported kUnsupported[] = {
     {"TRAILOF", "coupled motion"},
     {"COUPON", "coupled motion"},
     {"COUPOF", "coupled motion"},
+    {"FXS", "travel to fixed stop"},
+    {"FXST", "travel to fixed stop"},
+    {"FXSW", "travel to fixed stop"},
+    {"GEOAX", "geometry axes switched over"},
+    {"TCA", "tool management: a tool change of its own"},
+    {"PUTFTOC", "tool management: a fine tool offset written"},
+    {"DELDL", "tool management: sum offsets deleted"},
+    {"GETSELT", "tool management"},
+    {"CHKDNO", "tool management"},
+    {"REPOSA", "repositioning at the end of an interrupt routine"},
+    {"REPOSL", "repositioning at the end of an interrupt routine"},
+    {"REPOSQ", "repositioning at the end of an interrupt routine"},
+    {"REPOSQA", "repositioning at the end of an interrupt routine"},
+    {"REPOSH", "repositioning at the end of an interrupt routine"},
+    {"REPOSHA", "repositioning at the end of an interrupt routine"},
     {"MEAS", "measuring"},
     {"MEAW", "measuring"},
     {"MEASA", "measuring"},

@@ -157,6 +157,17 @@ void WordLexer::named_word(const std::string& n, std::size_t at) {
   if (n == "CALL" || n == "PCALL" || n == "EXTCALL") return explicit_machine_call(n, at);
   switch (classify_named_word(n)) {
     case NamedWord::kActionKeyword:  // NC-WORD-5/6: SOFT, FFWON, CFC, …, with its axes: BRISKA(X,Y), TOFFOF()
+      if ((n == "FINEA" || n == "COARSEA" || n == "IPOENDA") && peek() == '[') {  // NC-WORD-7: FINEA[C]
+        ++i_;
+        skip_space();
+        if (!is_letter(peek())) fail(fmt::format("{}: an axis is expected", n));
+        std::string axis = letters();
+        name_tail(axis);
+        skip_space();
+        if (peek() != ']') fail(fmt::format("{}: ']' expected", n));
+        ++i_;
+        return add_text_action(written(at), at);
+      }
       return add_text_action(optional_arguments(n, at) ? written(at) : n, at);
     case NamedWord::kActionValue: {  // NC-WORD-5/3/7: ADIS=, LIMS=, SPOS=, SPOS[n]=, ACC[X]=
       if (peek() == '[') {
