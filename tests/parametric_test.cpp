@@ -318,6 +318,20 @@ TEST(Parametric, RunModeActiveEdgeAndGivenParameters) {
   EXPECT_EQ(error_line("R1=$P_SUBPAR[0]\n", "$P_SUBPAR takes one index"), 1);
 }
 
+// covers: NC-PARAM-EXPR-6 NC-PARAM-VAR-1
+TEST(Parametric, AxisNamesAsValues) {
+  // AXNAME gives an AXIS value (also as a DEF's initial value), AXSTRING its name back.
+  EXPECT_EQ(end_x("DEF AXIS AA=AXNAME(\"x\")\nG1 AX[AA]=7 F100\n"), "7");
+  EXPECT_EQ(end_x("DEF AXIS AA\nDEF STRING[8] SS\nAA=AXNAME(\"X\")\nSS=AXSTRING(AA)<<\"1\"\n"
+                  "IF SS==\"X1\"\nG1 X4 F100\nENDIF\n"),
+            "4");
+  // The three geometry axes exist.
+  EXPECT_EQ(end_x("IF ISAXIS(1) AND ISAXIS(3) AND NOT ISAXIS(4)\nG1 X2 F100\nENDIF\n"), "2");
+  EXPECT_EQ(error_line("G1 X1 F1\nR1=AXNAME(5)\n", "AXNAME: argument 1 must be a string"), 2);
+  EXPECT_EQ(error_line("DEF AXIS AA=AXNAME(\"1X\")\n", "'1X' is not an axis name"), 1);
+  EXPECT_EQ(error_line("R1=AXSTRING(1)\n", "AXSTRING: argument 1 must be an axis"), 1);
+}
+
 // covers: NC-PARAM-SUB-1
 TEST(Parametric, AProgramWithoutAFolderCallsNoFile) {
   std::string dir = folder_with("nofiles", {{"LONGWAY.SPF", "G1 X5 F100\nM17\n"}});

@@ -100,7 +100,8 @@ void Interpreter::define(std::string_view s, std::size_t i, std::map<std::string
           throw InputError(cx().line, static_cast<int>(open) + 1, fmt::format("more values than '{}' holds", name));
         for (std::size_t k = 0; k < list_values.size(); ++k) store(v, k, list_values[k], open);
         i = skip_space(s, q);
-      } else if (type == "AXIS" && at < s.size() && is_letter(s[at])) {  // an axis name: X, Y, Z …
+      } else if (type == "AXIS" && at < s.size() && is_letter(s[at]) &&
+                 !(skip_space(s, w) < s.size() && s[skip_space(s, w)] == '(')) {  // an axis name: X, Y, Z …
         for (std::size_t k = 0; k < v.values.size(); ++k)
           v.values[k] = NcValue::string(upper_text(s.substr(at, w - at)));
         i = skip_space(s, w);

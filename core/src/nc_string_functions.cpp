@@ -111,6 +111,25 @@ bool ExpressionParser::string_function(const std::string& n, const std::vector<N
     }
     return out = NcValue::string(t), true;
   }
+  // NC-PARAM-EXPR-6: axis names as values. AXNAME("X") the axis of that name, AXSTRING(axis) its
+  // name as a string, ISAXIS(n) whether geometry axis n (1 … 3) exists: cutcom's channel has X, Y, Z.
+  if (n == "AXNAME" || n == "AXSTRING") {
+    need(1, 1);
+    if (a[0].type != NcValue::Type::kString)
+      fail(n == "AXNAME" ? "argument 1 must be a string (the axis' name)" : "argument 1 must be an axis");
+    std::string name = a[0].text;
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    bool ok = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0])) &&
+              std::all_of(name.begin(), name.end(),
+                          [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+    if (!ok) fail(fmt::format("'{}' is not an axis name", a[0].text));
+    return out = NcValue::string(name), true;
+  }
+  if (n == "ISAXIS") {
+    need(1, 1);
+    double k = as_number(a[0], line_, at);
+    return out = NcValue::boolean(k == 1 || k == 2 || k == 3), true;
+  }
   if (n == "STRLEN") return need(1, 1), out = NcValue::integer(static_cast<double>(text(0).size())), true;
   if (n == "INDEX") return need(2, 2), out = position(text(0).find(character(1))), true;
   if (n == "RINDEX") return need(2, 2), out = position(text(0).rfind(character(1))), true;
