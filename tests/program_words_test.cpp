@@ -120,6 +120,13 @@ TEST(ProgramWords, ChannelToleranceAndDynamicsWordsAreActions) {
   EXPECT_EQ(actions(o[0]), (std::vector<std::string>{"$A_DBB[3]=1", "$A_OUT[2]=4", "$AC_MARKER[1]=0"}));
   EXPECT_THROW(read("R1=$A_IN[1]\n"), InputError);
   EXPECT_THROW(read("$A_DBB[3]\n"), InputError);
+  // The workpiece counters: written as actions; read back once written.
+  auto parts = read("$AC_ACTUAL_PARTS=3 $AC_TOTAL_PARTS=7\nR1=$AC_ACTUAL_PARTS+1\n$AC_ACTUAL_PARTS=R1\nG1 X=R1 F100\n");
+  ASSERT_EQ(parts.size(), 3u);
+  EXPECT_EQ(actions(parts[0]), (std::vector<std::string>{"$AC_ACTUAL_PARTS=3", "$AC_TOTAL_PARTS=7"}));
+  EXPECT_EQ(actions(parts[1]), (std::vector<std::string>{"$AC_ACTUAL_PARTS=4"}));
+  EXPECT_EQ(parts[2].end.x.to_string(), "4");
+  EXPECT_THROW(read("R1=$AC_REQUIRED_PARTS\n"), InputError);  // the machine's value, not given
   auto g = read("G26 S3000\nG25 S20\n");
   EXPECT_EQ(actions(g[0]), (std::vector<std::string>{"G26", "S3000"}));
   EXPECT_THROW(read("X1 G26 Y100\n"), InputError);  // the working area's axes come after G26

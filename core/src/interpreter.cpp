@@ -488,7 +488,7 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       }
     }
     bool assignment = k < s.size() && s[k] == '=' && !(k + 1 < s.size() && s[k + 1] == '=');
-    if (n[0] == '$' && !tool_data && raw_index.empty()) assignment = false;
+    if (n[0] == '$' && !tool_data && raw_index.empty() && !is_machine_counter(n)) assignment = false;
     if (!assignment) {
       if (variable && !indexed && !is_r_parameter(n))
         throw InputError(cx().line, static_cast<int>(start) + 1,
@@ -516,6 +516,19 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
       continue;
     }
     std::size_t v = skip_space(s, k + 1);
+    if (is_machine_counter(n)) {  // NC-WORD-7: the value goes to the reader; later reads see it
+      plan.reset();
+      std::size_t value_end;
+      NcValue value = expression(s, v, lookup, value_end, nullptr);
+      std::string t = grid_text(value, cx().line, v);
+      machine_values_[n] = NcValue::real(value.number);
+      out.append(s, space, j - space);
+      out += '=';
+      out += t;
+      words = true;
+      i = value_end;
+      continue;
+    }
     if (variable) {  // NC-PARAM-VAR-*: an assignment, run now; the reader never sees it
       std::size_t value_end;
       int recorded;

@@ -211,6 +211,12 @@ bool is_machine_output(std::string_view n) {
   return contains(kOutputs, n);
 }
 
+bool is_machine_counter(std::string_view n) {
+  static constexpr std::string_view kCounters[] = {"$AC_ACTUAL_PARTS", "$AC_TOTAL_PARTS", "$AC_REQUIRED_PARTS",
+                                                   "$AC_SPECIAL_PARTS"};
+  return contains(kCounters, n);
+}
+
 bool is_action_value_wrapper(std::string_view n) {
   return n == "DC" || n == "ACP" || n == "ACN" || n == "AC" || n == "IC";
 }

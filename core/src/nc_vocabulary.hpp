@@ -31,6 +31,8 @@ bool is_action_value_wrapper(std::string_view upper_name);  // DC, ACP, ACN, AC,
 bool starts_synchronized_action(std::string_view upper_name);
 // NC-WORD-7: a PLC interface or synchronized-action variable a program writes ($A_OUT, $A_DBB, …).
 bool is_machine_output(std::string_view upper_name);
+// NC-WORD-7: the workpiece counters a program writes ($AC_ACTUAL_PARTS=…): the machine's, no index.
+bool is_machine_counter(std::string_view upper_name);
 
 // "'X' is SINUMERIK NC that cutcom does not simulate (what)".
 std::string unsupported_message(std::string_view word, std::string_view what = {});

@@ -30,6 +30,11 @@ void WordLexer::system_variable() {
     number(full + " value");
     return add_text_action(written(at), at);
   }
+  if (is_machine_counter(full)) {  // NC-WORD-7: $AC_ACTUAL_PARTS=v, …: the machine's, kept as written
+    if (!equals()) fail(fmt::format("{} is written with '=' (a program cannot read it in cutcom)", full), at);
+    number(full + " value");
+    return add_text_action(written(at), at);
+  }
   if (n == "TC_TP1" || n == "TC_TP3" || n == "TC_TP4" || n == "TC_TP5" || n == "TC_TP6" || n == "TC_TP7" ||
       n == "TC_TP8" || n == "TC_TP9" || n == "TC_TP10" || n == "TC_TP11") {
     return ignored_tool_parameter(full);
