@@ -494,6 +494,26 @@ TEST(Cli, AToolEdgeGivenOnTheCommandLine) {
   EXPECT_EQ(nlohmann::json::parse(given.out)["path"], nlohmann::json::parse(archive.out)["path"]);
 }
 
+// covers: CLI-1 NC-WORD-13
+TEST(Cli, TheFaceMillingExampleRunsUnderTransmit) {
+  const std::string flats = CUTCOM_SOURCE_DIR "/examples/turning/FLATS.MPF";
+  for (const char* engine : {"fast", "ref"}) {
+    Result r = sh(kCli + " run " + flats + " --md 'MD20150[5]=2' --tool 3=4 --format json --engine " + engine);
+    ASSERT_EQ(r.status, 0) << engine << r.out;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    int offsets = 0, circles = 0;  // the hexagon's six sides, its six outer corners with G450
+    for (const auto& el : j["path"]) {
+      offsets += el["origin"]["kind"] == "offset";
+      circles += el["origin"]["kind"] == "transition_circle";
+    }
+    EXPECT_EQ(offsets, 7) << engine;  // the top flat in two halves
+    EXPECT_EQ(circles, 6) << engine;
+    bool noticed = false;
+    for (const auto& n : j["notices"]) noticed |= n["clause"] == "NC-WORD-13";
+    EXPECT_TRUE(noticed) << engine;
+  }
+}
+
 // covers: CLI-1 NC-ERR-3
 TEST(Cli, RejectedProgramsLeaveNoOutputFileAndDirectoriesAreNamed) {
   std::string out = std::string(CUTCOM_BINARY_DIR) + "/rejected.txt";
