@@ -64,6 +64,26 @@ TEST(Reader, WordsOfABlock) {
   EXPECT_TRUE(k[0].words.program_end);
 }
 
+// covers: NC-LEX-1 TOOL-FILE-1 NC-PARAM-VAR-3
+TEST(Reader, AByteOrderMarkAndWindowsLineEndsAreNotText) {
+  auto b = read("\xEF\xBB\xBF; saved on Windows\r\nN10 G1 X5 F100\r\nN20 Y2\r\n");
+  ASSERT_EQ(b.size(), 2u);  // (a comment line is no block)
+  EXPECT_EQ(b[0].end.x.to_string(), "5");
+  EXPECT_EQ(b[1].end.y.to_string(), "2");
+  ToolTable tools;
+  std::istringstream table("\xEF\xBB\xBF$TC_DP1[1,1]=120\r\n$TC_DP6[1,1]=2.5\r\n");
+  tools.load(table, "TO_INI.INI");
+  ASSERT_NE(tools.find(1, 1), nullptr);
+  EXPECT_EQ(tools.find(1, 1)->radius.to_string(), "2.5");
+  std::istringstream program("G1 X=LIMIT F100\n"), gud("\xEF\xBB\xBF"
+                                                       "DEF NCK REAL LIMIT=4\r\n");
+  ProgramReader reader(program);
+  reader.load_definitions(gud);
+  Block x;
+  ASSERT_TRUE(reader.next(x));
+  EXPECT_EQ(x.end.x.to_string(), "4");
+}
+
 // covers: NC-LEX-4
 TEST(Reader, SarAndCornerParameters) {
   auto b = read("G1 G41 G147 G340 G143 DISR=13 DISCL=AC(5) DISRP=2 FAD=PM(500) DISC=0 X1\nG248 DISCL=3 FAD=200\n");

@@ -63,6 +63,8 @@ bool Interpreter::getline(std::string& text) {
   c.offset += static_cast<std::streamoff>(text.size()) + 1;
   c.stream_at = c.offset;
   ++c.line;
+  // NC-LEX-1: a file saved with a UTF-8 byte order mark (Windows editors) starts after it.
+  if (c.line_start == 0 && text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   if (unit_ends(c, text)) return false;
   if ((control_flow_ || stack_.size() > 1) && cached_bytes_ + text.size() <= limits_.line_cache_bytes) {
     cached_bytes_ += text.size() + sizeof(CachedLine) + 32;  // with the table's own cost

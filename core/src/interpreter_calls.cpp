@@ -394,6 +394,7 @@ void Interpreter::load_definitions(std::istream& in) {
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
+    if (n == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // a UTF-8 byte order mark
     try {
       std::size_t rest;
       std::string first = first_word(line, rest);

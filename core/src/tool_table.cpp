@@ -75,6 +75,7 @@ void archive_lines(std::istream& in, const std::string& source_name, F f) {
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
+    if (n == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // a UTF-8 byte order mark
     std::string u = upper(trim(line));
     if (!archive_frame_line(u)) f(n, line, u);
   }
