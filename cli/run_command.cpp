@@ -141,20 +141,30 @@ int run_command(const RunOptions& o) {
   cutcom::MachineData md = machine_data(o);
   ControlData control = control_data(o);
 
-  std::ifstream file;
-  std::istream* in = &std::cin;
-  if (o.program != "-") {
-    if (std::filesystem::is_directory(o.program)) {
-      std::cerr << fmt::format("cutcom: '{}' is a directory, not an NC program\n", o.program);
-      return kBadInput;
-    }
-    file.open(o.program);
-    if (!file) {
-      std::cerr << fmt::format("cutcom: cannot open program '{}': {}\n", o.program, std::strerror(errno));
-      return kBadInput;
-    }
-    in = &file;
+  // Standard input is kept in a temporary file: a program's backward jumps and loops, the units
+  // of a job archive (NC-PARAM-SUB-8) and the picture's second reading read it again.
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> spool(nullptr, std::fclose);
+  std::string path = o.program;
+  if (o.program == "-") {
+    spool.reset(std::tmpfile());
+    if (!spool) throw std::runtime_error("cannot create a temporary file for standard input");
+    std::string chunk(1 << 16, '\0');
+    while (std::cin.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || std::cin.gcount() > 0)
+      if (std::fwrite(chunk.data(), 1, static_cast<std::size_t>(std::cin.gcount()), spool.get()) !=
+          static_cast<std::size_t>(std::cin.gcount()))
+        throw std::runtime_error("cannot keep standard input in a temporary file (disk full?)");
+    if (std::fflush(spool.get()) != 0) throw std::runtime_error("cannot keep standard input in a temporary file");
+    path = fmt::format("/proc/self/fd/{}", fileno(spool.get()));
+  } else if (std::filesystem::is_directory(o.program)) {
+    std::cerr << fmt::format("cutcom: '{}' is a directory, not an NC program\n", o.program);
+    return kBadInput;
   }
+  std::ifstream file(path);
+  if (!file) {
+    std::cerr << fmt::format("cutcom: cannot open program '{}': {}\n", o.program, std::strerror(errno));
+    return kBadInput;
+  }
+  std::istream* in = &file;
   std::unique_ptr<OutputFile> out_file;
   std::ostream* out = &std::cout;
   if (!o.output.empty() && o.output != "-") {
@@ -169,18 +179,7 @@ int run_command(const RunOptions& o) {
   bool ok = true;
   if (o.format == "svg") {
     // The picture needs the programmed contour too: the program is read twice, from the file
-    // (standard input is kept in a temporary file), the picture in bounded memory.
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> spool(nullptr, std::fclose);
-    std::string path = o.program;
-    if (o.program == "-") {
-      spool.reset(std::tmpfile());
-      if (!spool) throw std::runtime_error("cannot create a temporary file for standard input");
-      std::string chunk(1 << 16, '\0');
-      while (std::cin.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || std::cin.gcount() > 0)
-        std::fwrite(chunk.data(), 1, static_cast<std::size_t>(std::cin.gcount()), spool.get());
-      std::fflush(spool.get());
-      path = fmt::format("/proc/self/fd/{}", fileno(spool.get()));
-    }
+    // (standard input was kept in a temporary file), the picture in bounded memory.
     cutcom::SvgPicture picture;
     {
       std::ifstream first(path);

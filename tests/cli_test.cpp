@@ -494,6 +494,19 @@ TEST(Cli, AToolEdgeGivenOnTheCommandLine) {
   EXPECT_EQ(nlohmann::json::parse(given.out)["path"], nlohmann::json::parse(archive.out)["path"]);
 }
 
+// covers: CLI-1 NC-PARAM-SUB-8 NC-PARAM-FLOW-1
+TEST(Cli, AProgramPipedInJumpsBackAndCallsItsUnits) {
+  // A loop (a backward jump) and a call of a unit of the same text, read from standard input.
+  Result r =
+      sh("printf 'R1=0\\nAGAIN: R1=R1+1\\nSTEP(R1)\\nIF R1<3 GOTOB AGAIN\\nM30\\n"
+         "%%_N_STEP_SPF\\nPROC STEP(REAL XX)\\nG1 X=XX*10 F100\\nRET\\n' | " +
+         kCli + " run - --format json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["path"].size(), 3u) << r.out;
+  EXPECT_EQ(j["path"][2]["end"][0], 30.0);
+}
+
 // covers: CLI-1 NC-WORD-13
 TEST(Cli, TheFaceMillingExampleRunsUnderTransmit) {
   const std::string flats = CUTCOM_SOURCE_DIR "/examples/turning/FLATS.MPF";
