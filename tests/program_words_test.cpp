@@ -326,6 +326,17 @@ TEST(ProgramWords, UnderTransmitTheFacesCartesianContourIsCompensated) {
   EXPECT_THROW(read("DIAMON\nTRANSMIT\n"), InputError);
   EXPECT_THROW(read("DIAMOF\nTRANSMIT\nDIAMON\n"), InputError);
   EXPECT_THROW(read("G17 T1 D1 G1 G41 X10 Y0 F100\nTRANSMIT\n"), InputError);
+  // A tool change under compensation: blended without a transformation (TRC-RADIUS-3), an error
+  // under TRANSMIT, as the control allows it there only after G40.
+  const std::string tools = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\n$TC_DP1[2,1]=120\n$TC_DP6[2,1]=3\n";
+  const std::string change = "G17 T1 D1 G0 X30 Y0\nG1 G41 X20 Y-10 F100\nY10\nT2 D1 X-10\nY-10\nG40 X30 Y-20\n";
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok = false;
+    MachineData md;
+    test::run_engine(engine, tools + "DIAMOF\n" + change, md, &ok);
+    EXPECT_TRUE(ok) << engine;
+    EXPECT_THROW(test::run_engine(engine, tools + "DIAMOF\nTRANSMIT\n" + change, md, &ok), InputError) << engine;
+  }
 }
 
 // covers: NC-WORD-8 NC-ERR-3

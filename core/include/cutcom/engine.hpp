@@ -51,6 +51,11 @@ inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_
   if (now == active) return false;
   if (s.edge == 0 || !s.edge_defined)
     throw UnsupportedError(b.words.line, "a change to D0 or to an undefined edge while compensation is active");
+  // NC-WORD-13: under a transformation the control changes tools only with G40 (JOB06 §7.10).
+  if (s.tool != active.tool && s.transformation != Transformation::kOff)
+    throw InputError(b.words.line, 1,
+                     "a tool change with tool radius compensation G41/G42 in force under a transformation "
+                     "(TRANSMIT, TRAORI): the control changes tools there only after G40");
   // The tip of a turning tool lies off its edge centre by the edge's radius (TOOL-TURN-1): a new
   // tip would shift the contour by another vector at each end of the blend.
   if ((active.position != 0 || now.position != 0) &&
