@@ -443,6 +443,11 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
     // Lines built on one tangent (SAR lines at the two ends of a full circle: campaign 20261207,
     // case 314401) lie on one line for ref; in double they cross anywhere along it.
     parallel = on_one_line(cu, cv);
+  } else if (open_el.arc && cand.arc) {
+    // Arcs of one programmed circle have one circle as equidistant: no point for ref (-inf); in
+    // double a centre corrected onto the chord's bisector is off by a rounding and the two cross
+    // anywhere (campaign 20261241, case 419850).
+    parallel = on_one_circle(cu, cv);
   }
   // Carriers within rounding of touching touch (campaign 20261214, case 492847: a line exactly
   // tangent to a SAR semicircle's equidistant missed it by 4e-16 mm, alarm 10751 in fast only;
@@ -452,7 +457,7 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   bool valid = false;
   // No intersection at all: minus the gap between the carriers (parallel lines, and one circle
   // carrying both, which has no gap and no point: -inf).
-  double gap = cu.circle || cv.circle ? carrier_gap(cu, cv) : 0;
+  double gap = !parallel && (cu.circle || cv.circle) ? carrier_gap(cu, cv) : 0;
   double margin = gap > 0 ? -gap : -std::numeric_limits<double>::infinity();
   if (found) {
     Extent on = extent_of(cand, radius, y);

@@ -194,6 +194,14 @@ bool on_one_line(const Carrier& u, const Carrier& v) {
   return std::fabs(cross(du, dv)) <= 16 * eps && std::fabs(cross(du, v.point - u.point)) <= 64 * eps * size;
 }
 
+bool on_one_circle(const Carrier& u, const Carrier& v) {
+  if (!u.circle || !v.circle) return false;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double size =
+      std::fabs(u.point.a) + std::fabs(u.point.b) + std::fabs(v.point.a) + std::fabs(v.point.b) + u.radius + v.radius;
+  return norm(v.point - u.point) <= 64 * eps * size && std::fabs(u.radius - v.radius) <= 64 * eps * size;
+}
+
 // The sign is that of the quantity carrier_intersections decides on (PROP-BOUNDARY-1: the
 // branch "meet" or "miss" must agree with the margin traced), the size the distance in mm.
 double carrier_gap(const Carrier& u, const Carrier& v) {

@@ -80,6 +80,9 @@ bool touching_within_rounding(const Carrier& u, const Carrier& v, Vec2& out);
 double intersection_error(const Carrier& u, const Carrier& v, Vec2 x);
 // Two line carriers parallel and on one line within the rounding of their data.
 bool on_one_line(const Carrier& u, const Carrier& v);
+// Two circles within rounding of one circle (the same centre and radius to the doubles' error):
+// arcs of one programmed circle, whose equidistants on one side are one circle.
+bool on_one_circle(const Carrier& u, const Carrier& v);
 // All points common to two carriers (0, 1 or 2; tangency gives one).
 int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]);
 // <= 0 when two carriers (at least one a circle) meet: see ref's carrier_gap.
