@@ -71,6 +71,9 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
     const PathPiece& e = entry[i];
     if (!e.arc && e.a.a == e.b.a && e.a.b == e.b.b) continue;
     Carrier c = carrier(e);
+    // Pieces of one circle: no crossing, as ref (and as concentric ones); in double a centre off
+    // by a rounding would cross it anywhere (TRC-LOOK-2's case of campaign 20261241).
+    if (on_one_circle(h, c)) continue;
     bool has_depth = h.circle || c.circle;
     double depth = has_depth ? -carrier_gap(h, c) : 0;
     Vec2 xs[2];
