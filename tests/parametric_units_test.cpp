@@ -84,6 +84,9 @@ TEST(ParametricUnits, AUnitEndsAtTheNextHeader) {
   EXPECT_NE(r.error.find("in subprogram _N_BAD_SPF line 5, column 6 (called from line 2): undefined variable 'UNDEF'"),
             std::string::npos)
       << r.error;
+  // Two units of one name: an error naming both.
+  r = read("G0 X0\nTWICE\nM30\n%_N_TWICE_SPF\nG0 X1\n%_N_TWICE_SPF\nG0 X2\n");
+  EXPECT_NE(r.error.find("two units named TWICE (lines 4 and 6)"), std::string::npos) << r.error;
   // A unit's backward jump searches its own text from its own start.
   r = read("G0 X0\nLOOP2\nM30\n%_N_LOOP2_SPF\nDEF INT NN=0\nAGAIN: NN=NN+1\nG0 X=NN\nIF NN<2 GOTOB AGAIN\nM17\n");
   EXPECT_EQ(r.ends, (std::vector<std::string>{"0,0", "1,0", "2,0"}));

@@ -129,7 +129,8 @@ void Interpreter::scan_units() const {
     std::string_view unit = unit_header(text);
     if (!unit.empty()) {
       std::string name = upper_text(unit.substr(3, unit.size() - 7));
-      if (!first) units_.try_emplace(name, SubprogramText{"", std::string(unit), at, line});
+      if (!first && !units_.try_emplace(name, SubprogramText{"", std::string(unit), at, line}).second)
+        duplicate_units_.try_emplace(name, line + 1);  // the second header's line
       first = false;
     } else if (std::size_t k = text.find_first_not_of(" \t\r");
                first && k != std::string::npos && text[k] != ';' && text[k] != '%') {

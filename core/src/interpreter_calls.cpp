@@ -196,7 +196,14 @@ std::optional<Interpreter::SubprogramText> Interpreter::find_subprogram(const st
   if (known != found_.end()) return known->second;
   if (!units_scanned_) scan_units();
   std::optional<SubprogramText>& found = found_[name];
-  if (auto unit = units_.find(name); unit != units_.end()) return found = unit->second;
+  if (auto unit = units_.find(name); unit != units_.end()) {
+    if (auto twice = duplicate_units_.find(name); twice != duplicate_units_.end())
+      throw InputError(cx().line, 1,
+                       fmt::format("the program's file holds two units named {} (lines {} and {}): which one the "
+                                   "control keeps depends on how the file is loaded",
+                                   name, unit->second.line + 1, twice->second));
+    return found = unit->second;
+  }
   if (!subprogram_files_) return found;
   std::string lower = name;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

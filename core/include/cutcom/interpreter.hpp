@@ -291,6 +291,7 @@ class Interpreter {
   void scan_units() const;
   bool unit_ends(Context& c, const std::string& text) const;
   mutable std::map<std::string, SubprogramText> units_;
+  mutable std::map<std::string, int> duplicate_units_;  // a name's second header: its line
   mutable bool units_scanned_ = false;
   // Units share the main program's stream: a level reading it after another did must seek.
   mutable const std::istream* last_in_ = nullptr;
