@@ -149,7 +149,8 @@ TEST(ProgramWords, MotionEndRepositioningAndRetractionWordsAreActions) {
   EXPECT_EQ(b[2].end.x.to_string(), "10");
   EXPECT_THROW(read("FINEA[1]\n"), InputError);  // an axis in the brackets
   // Words that move or switch what cutcom follows: named, not simulated.
-  for (const char* text : {"FXS[Z]=1\n", "GEOAX(1,X)\n", "TCA(\"DRILL\",1)\n", "REPOSA\n", "DELDL(1,1)\n"})
+  for (const char* text : {"FXS[Z]=1\n", "GEOAX(1,X)\n", "TCA(\"DRILL\",1)\n", "REPOSA\n", "DELDL(1,1)\n",
+                           "TRAANG(45)\n", "TRACON(1)\n", "TRACYL(40)\n"})
     EXPECT_NE(error_of(text).find("SINUMERIK NC that cutcom does not simulate ("), std::string::npos) << text;
 }
 

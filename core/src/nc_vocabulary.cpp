@@ -111,6 +111,8 @@ constexpr Unsupported kUnsupported[] = {
     {"CSPLINE", "splines"},
     {"POLY", "polynomials"},
     {"TRACYL", "transformations"},
+    {"TRAANG", "transformations: the inclined axis"},
+    {"TRACON", "transformations: chained"},
     {"CUT2DF", "compensation in a frame plane"},
     {"CUT3DC", "3D compensation"},
     {"CUT3DF", "3D compensation"},
