@@ -97,15 +97,23 @@ bool ProgramReader::polar_move(const BlockWords& w) {
 
 // NC-PARAM-SYS-2: the program writes a settable offset; it takes effect when an offset is
 // selected (G54 …) next, as when it was given with --offsets.
-bool ProgramReader::write_settable_offset(const std::string& assignment) {
+namespace {
+// One "$P_UIFR[n]…" line into `table`; an error without the table's source name (the program's
+// line names it).
+void load_assignment(OffsetTable& table, const std::string& assignment, const std::string& source) {
   std::istringstream in(assignment);
   try {
-    offsets_.load(in, "$P_UIFR");
+    table.load(in, source);
   } catch (const InputError& e) {
     std::string detail = e.detail();
-    if (detail.rfind("$P_UIFR: ", 0) == 0) detail = detail.substr(9);
+    if (detail.rfind(source + ": ", 0) == 0) detail = detail.substr(source.size() + 2);
     throw InputError(0, 1, detail);
   }
+}
+}  // namespace
+
+bool ProgramReader::write_settable_offset(const std::string& assignment) {
+  load_assignment(offsets_, assignment, "$P_UIFR");
   return true;
 }
 
@@ -115,14 +123,7 @@ bool ProgramReader::write_settable_frame(const std::string& assignment) {
   OffsetTable written;
   Point3 now = offsets_.translation(offset_index_);
   for (int a = 0; a < 3; ++a) written.set(1, a, coord(now, a));
-  std::istringstream in(assignment);
-  try {
-    written.load(in, "$P_IFRAME");
-  } catch (const InputError& e) {
-    std::string detail = e.detail();
-    if (detail.rfind("$P_IFRAME: ", 0) == 0) detail = detail.substr(11);
-    throw InputError(0, 1, detail);
-  }
+  load_assignment(written, assignment, "$P_IFRAME");
   if (state_.side != Side::kOff)  // as a frame instruction (NC-FRAME-1)
     throw InputError(0, 1,
                      "a frame change with tool radius compensation G41/G42 in force: deselect with G40 first (not "
