@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // NC-PARAM-FLOW-6's check is the same at any limit: a lower one keeps an endless loop from
   // taking the fuzzer's time.
   cutcom::InterpreterLimits limits;
-  limits.max_backward_jumps = 20'000;
+  limits.max_backward_jumps = 2'000;
   reader.set_limits(limits);
   cutcom::Block b;
   try {
