@@ -15,6 +15,7 @@
 #include "cutcom/background_sink.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/output.hpp"
+#include "cutcom/read_ahead.hpp"
 #include "cutcom/ref/engine.hpp"
 
 namespace cutcom::cli {
@@ -51,10 +52,11 @@ void hint_after(const std::vector<int>& alarms, const RunOptions& o) {
            "the program\n";
 }
 
-bool run_engine(const std::string& engine, cutcom::ProgramReader& reader, const cutcom::MachineData& md,
+// The reader runs ahead on a thread of its own (ReadAhead), the engine on this one.
+bool run_engine(const std::string& engine, cutcom::BlockSource& blocks, const cutcom::MachineData& md,
                 cutcom::PathSink& out, const RunOptions& o) {
   AlarmWatch sink(out);
-  bool ok = engine == "ref" ? cutcom::ref::run(reader, md, sink) : cutcom::fast::run(reader, md, sink);
+  bool ok = engine == "ref" ? cutcom::ref::run(blocks, md, sink) : cutcom::fast::run(blocks, md, sink);
   hint_after(sink.numbers, o);
   return ok;
 }
@@ -128,11 +130,12 @@ bool run_to_the_end(Writer& writer, cutcom::BackgroundSink& background, Run run,
 template <class Writer>
 bool run_writing(Writer& writer, cutcom::ProgramReader& reader, const cutcom::MachineData& md, const RunOptions& o,
                  std::ostream& out) {
+  cutcom::ReadAhead blocks(reader);
   cutcom::BackgroundSink background(writer, o.trace);
-  background.set_upstream_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
+  background.set_upstream_sources([&blocks](std::uint32_t id) -> const std::string& { return blocks.source_text(id); });
   writer.set_sources(background.sources());
   return run_to_the_end(
-      writer, background, [&] { return run_engine(o.engine, reader, md, background, o); }, o, out);
+      writer, background, [&] { return run_engine(o.engine, blocks, md, background, o); }, o, out);
 }
 
 }  // namespace
@@ -200,7 +203,8 @@ int run_command(const RunOptions& o) {
     std::ifstream second(path);
     cutcom::ProgramReader reader(second, md.initial_state());
     control.into(reader);
-    ok = run_engine(o.engine, reader, md, picture, o);
+    cutcom::ReadAhead blocks(reader);
+    ok = run_engine(o.engine, blocks, md, picture, o);
     std::string title = fmt::format("cutcom — {} — engine {}", o.program == "-" ? "stdin" : o.program, o.engine);
     picture.write(*out, title);
     for (const auto& a : picture.alarms()) std::cerr << fmt::format("ALARM {} {}\n", a.number, a.text);

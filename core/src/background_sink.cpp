@@ -1,12 +1,17 @@
 #include "cutcom/background_sink.hpp"
 
+#include <pthread.h>
+
 #include <utility>
 
 namespace cutcom {
 
 BackgroundSink::BackgroundSink(PathSink& target, bool decisions) : target_(target), decisions_(decisions) {
   filling_.reserve(kBatch);
-  writer_ = std::thread([this] { write(); });
+  writer_ = std::thread([this] {
+    pthread_setname_np(pthread_self(), "cutcom-writer");  // profiles tell the two threads apart
+    write();
+  });
 }
 
 BackgroundSink::~BackgroundSink() {

@@ -52,15 +52,16 @@ void Engine::finish() {
 
 std::optional<Point3> Engine::take_reposition() { return state_->sar.take_reposition(); }
 
-bool run(ProgramReader& reader, const MachineData& md, PathSink& sink) {
+bool run(BlockSource& blocks, const MachineData& md, PathSink& sink) {
   Engine engine(md, sink);
-  Block b;
-  while (!engine.stopped() && reader.next(b)) {
-    engine.push(b);
-    if (auto p = engine.take_reposition()) reader.set_position(*p);  // SAR-END-3
+  while (!engine.stopped()) {
+    const Block* b = blocks.next_block();
+    if (!b) break;
+    engine.push(*b);
+    if (auto p = engine.take_reposition()) blocks.set_position(*p);  // SAR-END-3
   }
   // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
-  while (engine.stopped() && reader.next(b)) {
+  while (engine.stopped() && blocks.next_block()) {
   }
   engine.finish();
   return !engine.stopped();

@@ -29,15 +29,17 @@ class Pipeline {
   }
 
   // Blocks are read one by one, as a control reads them.
-  bool run(ProgramReader& reader) {
-    Block b;
-    while (!trace_.stopped() && reader.next(b)) {
+  bool run(BlockSource& blocks) {
+    while (!trace_.stopped()) {
+      const Block* read = blocks.next_block();
+      if (!read) break;
+      const Block& b = *read;
       if (!b.notice.empty()) sink_.notice({b.words.line, b.notice_clause, b.notice, b.words.source});  // the reader's
       sar_.take(b);
-      if (auto p = sar_.take_reposition()) reader.set_position(*p);  // SAR-END-1/3
+      if (auto p = sar_.take_reposition()) blocks.set_position(*p);  // SAR-END-1/3
     }
     // NC-ERR-2: a reading error anywhere rejects the program, even after an alarm.
-    while (trace_.stopped() && reader.next(b)) {
+    while (trace_.stopped() && blocks.next_block()) {
     }
     sar_.finish();
     if (!trace_.stopped()) compensation_.end_of_program();
@@ -55,14 +57,14 @@ class Pipeline {
 
 }  // namespace
 
-bool run_exact(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactPath& path) {
-  return Pipeline(md, sink, path).run(reader);
+bool run_exact(BlockSource& blocks, const MachineData& md, PathSink& sink, ExactPath& path) {
+  return Pipeline(md, sink, path).run(blocks);
 }
 
-bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
+bool run(BlockSource& blocks, const MachineData& md, PathSink& sink, ExactCheckReport* checks) {
   ExactPath path;
   path.keep_elements(checks != nullptr);
-  bool ok = Pipeline(md, sink, path).run(reader);
+  bool ok = Pipeline(md, sink, path).run(blocks);
   if (checks) path.check(*checks);
   return ok;
 }

@@ -58,5 +58,5 @@ class ExactPath {
 
 namespace cutcom::ref {
 // Runs a program and hands over ref's exact path (metamorphic checks).
-bool run_exact(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactPath& path);
+bool run_exact(BlockSource& blocks, const MachineData& md, PathSink& sink, ExactPath& path);
 }  // namespace cutcom::ref

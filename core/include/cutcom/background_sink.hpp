@@ -48,7 +48,7 @@ class BackgroundSink : public PathSink {
   };
   using Event = std::variant<PathElement, ActionEvent, OwnedDecision, Alarm, Notice, SarVariables>;
   using Batch = std::vector<Event>;
-  static constexpr std::size_t kBatch = 256;
+  static constexpr std::size_t kBatch = 4096;
   static constexpr std::size_t kQueued = 2;  // batches waiting at most: the memory bound
 
   void push(Event&& e);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cutcom/block.hpp"
+#include "cutcom/block_source.hpp"
 #include "cutcom/input_error.hpp"
 #include "cutcom/interpreter.hpp"
 
@@ -76,15 +77,17 @@ struct ProgrammableFrame {
   bool rotated() const { return !rotation.is_zero(); }
 };
 // Reads blocks one by one and resolves modal state and positions (NC-MODAL-*, NC-POS-*).
-class ProgramReader : private SystemValues {
+class ProgramReader final : public BlockSource, private SystemValues {
  public:
   explicit ProgramReader(std::istream& in, ModalState initial = {});
   // Next block, or false at the end of the text or after M2/M30. Throws InputError.
   // Contour definitions (NC-CONTOUR-*) may hold a block back until the next element is read.
   bool next(Block& out);
+  // BlockSource: the next block read into the reader's own (for the engines).
+  const Block* next_block() override { return next(current_) ? &current_ : nullptr; }
   // SAR-END-3: after a SAR retraction without end point the tool is where the retraction ended;
   // blocks read after it start there (the engines give the in-plane position exactly).
-  void set_position(const Point3& p);
+  void set_position(const Point3& p) override;
   ToolTable& tools() { return tools_; }
   OffsetTable& offsets() {
     offsets_changed_ = true;  // offset_difference_ is taken again at the next block
@@ -116,6 +119,7 @@ class ProgramReader : private SystemValues {
   void set_machine_values(const std::map<std::string, std::string>& values) { interpreter_.set_machine_values(values); }
 
  private:
+  Block current_;  // what next_block() gives
   bool read_block(Block& out);
   bool take_block(Block& out, int line);  // the interpreter's line as a block; false: none
   // NC-PARAM-SYS-1: the system variables a program may read.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "cutcom/block_source.hpp"
 #include "cutcom/engine.hpp"
 #include "cutcom/machine_data.hpp"
 #include "cutcom/sink.hpp"
@@ -26,7 +27,7 @@ class Engine {
   // An alarm stopped the program; further blocks are ignored.
   bool stopped() const;
   // SAR-END-3: after a SAR retraction without end point, where blocks read next start (the
-  // caller's ProgramReader::set_position); empty otherwise.
+  // caller's BlockSource::set_position); empty otherwise.
   std::optional<Point3> take_reposition();
 
  private:
@@ -34,7 +35,8 @@ class Engine {
   std::unique_ptr<State> state_;
 };
 
-// Reads the whole program from `reader` through the engine. Returns false if an alarm stopped it.
-bool run(ProgramReader& reader, const MachineData& md, PathSink& sink);
+// Reads the whole program from `blocks` (the reader, or the reader on its own thread: ReadAhead)
+// through the engine. Returns false if an alarm stopped it.
+bool run(BlockSource& blocks, const MachineData& md, PathSink& sink);
 
 }  // namespace cutcom::fast

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cutcom/block_source.hpp"
 #include "cutcom/engine.hpp"
 #include "cutcom/machine_data.hpp"
 #include "cutcom/sink.hpp"
@@ -25,6 +26,6 @@ struct ExactCheckReport {
 
 // Reads the program block by block and runs it. Returns false if an alarm stopped it.
 // With `checks`, also verifies the exact path (costs exact zero tests: milliseconds each).
-bool run(ProgramReader& reader, const MachineData& md, PathSink& sink, ExactCheckReport* checks = nullptr);
+bool run(BlockSource& blocks, const MachineData& md, PathSink& sink, ExactCheckReport* checks = nullptr);
 
 }  // namespace cutcom::ref
