@@ -241,7 +241,10 @@ def main():
     ap.add_argument("--memory-blocks", default="10000,200000,2000000",
                     help="program lengths at which cutcom's peak memory is measured (flat: the same at all)")
     ap.add_argument("--ref-memory-blocks", default="10000,100000",
-                    help="program lengths at which ref's peak memory and time are measured (about 0.5 ms a block)")
+                    help="program lengths at which ref's peak memory and time are measured with CDON "
+                         "(about 0.25 ms a block)")
+    ap.add_argument("--ref-cdof-blocks", default="10000,100000,1000000",
+                    help="the same without CDON, the issue's typical contour (about 0.05 ms a block)")
     ap.add_argument("--bench-engines", default="build/bench/bench_engines")
     ap.add_argument("--write-docs", action="store_true", help="write docs/performance.md and its chart")
     a = ap.parse_args()
@@ -305,15 +308,17 @@ def main():
         print(f"peak memory, lines+arcs with CDON, {n} blocks: text {mb(kb)}, SVG {mb(svg_kb)} ({svg_s:.2f} s)")
         os.remove(spf)
     ref_memory = []
-    for n in [int(v) for v in a.ref_memory_blocks.split(",") if v]:
-        spf = os.path.join(tmp, f"ref_memory_{n}.mpf")
-        with open(spf, "w") as f:
-            f.write(sinumerik_program(bumps_and_corners(n), cdon=True))
-        t = time.perf_counter()
-        kb = peak_kb([a.cutcom, "run", "--engine", "ref", spf, *md, "-o", "/dev/null"])
-        ref_memory.append((n, kb, time.perf_counter() - t))
-        print(f"ref, lines+arcs with CDON, {n} blocks: peak memory {mb(kb)}, {ref_memory[-1][2]:.1f} s")
-        os.remove(spf)
+    for cdon, lengths in ((False, a.ref_cdof_blocks), (True, a.ref_memory_blocks)):
+        label = "lines+arcs" + (", CDON" if cdon else "")
+        for n in [int(v) for v in lengths.split(",") if v]:
+            spf = os.path.join(tmp, f"ref_memory_{n}.mpf")
+            with open(spf, "w") as f:
+                f.write(sinumerik_program(bumps_and_corners(n), cdon=cdon))
+            t = time.perf_counter()
+            kb = peak_kb([a.cutcom, "run", "--engine", "ref", spf, *md, "-o", "/dev/null"])
+            ref_memory.append((label, n, kb, time.perf_counter() - t))
+            print(f"ref, {label}, {n} blocks: peak memory {mb(kb)}, {ref_memory[-1][3]:.1f} s")
+            os.remove(spf)
     pocket = parametric_rows(a, tmp)
     engines = engine_rows(a)
     for name, median, best in engines:
@@ -407,9 +412,9 @@ def write_docs(rows, memory, ref_memory, pocket, engines, a):
     if ref_memory:
         lines += ["", "ref keeps the blocks its window, look-ahead and approach still refer to (and a spare of "
                   "64), not the program: its peak memory does not grow with the program either "
-                  "(`cutcom run --engine ref`, the same contour, text output).", "",
-                  "| blocks | ref peak memory | ref time (s) | per block (ms) |", "|---|---|---|---|"]
-        lines += [f"| {n} | {mb(kb)} | {t:.1f} | {1000 * t / n:.2f} |" for n, kb, t in ref_memory]
+                  "(`cutcom run --engine ref`, the same contours, text output).", "",
+                  "| contour | blocks | ref peak memory | ref time (s) | per block (ms) |", "|---|---|---|---|---|"]
+        lines += [f"| {label} | {n} | {mb(kb)} | {t:.1f} | {1000 * t / n:.3f} |" for label, n, kb, t in ref_memory]
     lines += ["", "## A parametric program", "",
               "A pocket of 25,000 passes of four blocks under G41, once as a WHILE loop that computes its "
               "coordinates, once written out block by block (`cutcom run FILE -o /dev/null`, whole process, "

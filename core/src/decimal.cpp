@@ -76,18 +76,18 @@ Decimal::ParseResult Decimal::parse(std::string_view s) {
 }
 
 std::optional<std::int64_t> Decimal::to_integer() const {
+  if (units_ >= INT64_MIN && units_ <= INT64_MAX) {  // 64-bit division: most values are small
+    auto u = static_cast<std::int64_t>(units_);
+    if (u % kUnitsPerOne != 0) return std::nullopt;
+    return u / kUnitsPerOne;
+  }
   if (units_ % kUnitsPerOne != 0) return std::nullopt;
   Int128 v = units_ / kUnitsPerOne;
   if (v > INT64_MAX || v < INT64_MIN) return std::nullopt;
   return static_cast<std::int64_t>(v);
 }
 
-double Decimal::to_double() const {
-  // Up to 2^53 units both the units and 10^9 are exact doubles, and IEEE division of exact
-  // operands rounds correctly: the same result as the text conversion below, without it.
-  constexpr Int128 kExact = Int128(1) << 53;
-  if (units_ <= kExact && units_ >= -kExact)
-    return static_cast<double>(static_cast<std::int64_t>(units_)) / static_cast<double>(kUnitsPerOne);
+double Decimal::to_double_rounded() const {
   // strtod of the exact text "<units>e-9" rounds correctly; a stack buffer keeps it allocation-free.
   char buf[64];
   char* end = buf + sizeof buf;

@@ -52,6 +52,7 @@ void ReadAhead::read() {
       std::unique_lock lock(mutex_);
       if (!empty_.empty()) batch = std::move(empty_.front()), empty_.pop_front();
     }
+    if (batch.blocks.empty()) batch.blocks.resize(kBatch);  // the first few batches only
     fill(batch);
     bool stops = batch.stops, last = batch.last;
     std::unique_lock lock(mutex_);
@@ -88,7 +89,7 @@ const Block* ReadAhead::next_block() {
     resume_ = true;
     current_.stops = false;
   }
-  if (current_.blocks.size() == kBatch) empty_.push_back(std::move(current_));  // its blocks are reused
+  if (!current_.blocks.empty()) empty_.push_back(std::move(current_));  // its blocks are reused
   changed_.notify_all();
   changed_.wait(lock, [this] { return !full_.empty(); });
   current_ = std::move(full_.front());

@@ -39,8 +39,16 @@ class Decimal {
   constexpr int sign() const { return units_ > 0 ? 1 : (units_ < 0 ? -1 : 0); }
   // Whole number if the value is integral and fits, else nullopt.
   std::optional<std::int64_t> to_integer() const;
-  // Nearest double (correctly rounded); for the fast engine and for output only.
-  double to_double() const;
+  // Nearest double (correctly rounded); for the fast engine and for output only. Up to 2^53
+  // units both the units and 10^9 are exact doubles, and IEEE division of exact operands rounds
+  // correctly (inline: the engines convert every coordinate of every block).
+  double to_double() const {
+    constexpr Int128 kExact = Int128(1) << 53;
+    if (units_ <= kExact && units_ >= -kExact)
+      return static_cast<double>(static_cast<std::int64_t>(units_)) / static_cast<double>(kUnitsPerOne);
+    return to_double_rounded();
+  }
+  double to_double_rounded() const;  // to_double beyond 2^53 units
   // Exact decimal text, trailing zeros removed ("12.5", "-0.001", "3").
   std::string to_string() const;
 

@@ -42,7 +42,7 @@ class ReadAhead final : public BlockSource {
   static constexpr std::size_t kBatch = 64;  // blocks handed over at once
   static constexpr std::size_t kQueued = 3;  // batches read ahead at most: the memory bound
   struct Batch {
-    std::vector<Block> blocks = std::vector<Block>(kBatch);
+    std::vector<Block> blocks;  // kBatch of them once used; reused, so their text keeps its room
     std::size_t count = 0;
     bool stops = false;              // ends with a SAR block: the reader waits for the engine
     bool last = false;               // the program's end or the reader's error follows
