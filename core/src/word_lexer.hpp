@@ -96,9 +96,11 @@ class WordLexer {
     }
   }
 
-  std::string letters() {
-    std::string n;
-    while (!at_end() && is_letter(s_[i_])) n.push_back(upper(s_[i_++]));
+  std::string letters() {  // measured first, then copied at once (most words are one letter)
+    std::size_t from = i_;
+    while (!at_end() && is_letter(s_[i_])) ++i_;
+    std::string n(s_.substr(from, i_ - from));
+    for (char& c : n) c = upper(c);
     return n;
   }
   // The rest of a multi-letter name: letters, digits and '_' (CYCLE832, GROUP_BEGIN, R_T).

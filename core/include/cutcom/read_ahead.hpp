@@ -39,7 +39,7 @@ class ReadAhead final : public BlockSource {
   const std::string& source_text(std::uint32_t id) const { return names_[id < names_.size() ? id : 0]; }
 
  private:
-  static constexpr std::size_t kBatch = 64;  // blocks handed over at once
+  static constexpr std::size_t kBatch = 256; // blocks handed over at once
   static constexpr std::size_t kQueued = 3;  // batches read ahead at most: the memory bound
   struct Batch {
     std::vector<Block> blocks;  // kBatch of them once used; reused, so their text keeps its room
