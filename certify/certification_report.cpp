@@ -235,6 +235,12 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "realistic change of fast) and judges it by a 20,000-case campaign under PROP-BOUNDARY-1 and\n"
      << "PROP-KNIFE-1, then by the CI properties. The score, the killing check of every mutant and\n"
      << "every survivor's explanation are in [mutants.md](mutants.md).\n";
+  md << "\n## Fuzzing\n\n"
+     << "The fuzz targets (`fuzz/`, built with ASan and UBSan) judge what they generate by the same\n"
+     << "comparison as the campaign (`props::replay`): `reader_fuzz` reads any bytes as NC text (the\n"
+     << "reader must read them or reject them naming the line), `differential_fuzz` runs NC text or\n"
+     << "generated contours through both engines. Every run, its executions and its findings (each in\n"
+     << "the corpus): the fuzzing table of [campaigns.md](campaigns.md).\n";
   md << "\n## Coordinate error\n\n"
      << "The largest coordinate difference (mm, max norm over start, end and centre of every element)\n"
      << "between fast and ref per agreeing case, and the same relative to the case's documented\n"
