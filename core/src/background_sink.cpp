@@ -9,7 +9,7 @@ namespace cutcom {
 BackgroundSink::BackgroundSink(PathSink& target, bool decisions) : target_(target), decisions_(decisions) {
   filling_.reserve(kBatch);
   writer_ = std::thread([this] {
-    pthread_setname_np(pthread_self(), "cutcom-writer");  // profiles tell the two threads apart
+    pthread_setname_np(pthread_self(), "cutcom-writer");  // profiles tell the threads apart
     write();
   });
 }

@@ -73,7 +73,6 @@ void ReadAhead::read() {
 const Block* ReadAhead::next_block() {
   if (!started_) {
     started_ = true;
-    current_.count = 0, current_.last = false;
     thread_ = std::thread([this] {
       pthread_setname_np(pthread_self(), "cutcom-reader");  // profiles tell the threads apart
       read();

@@ -48,7 +48,6 @@ class Decimal {
       return static_cast<double>(static_cast<std::int64_t>(units_)) / static_cast<double>(kUnitsPerOne);
     return to_double_rounded();
   }
-  double to_double_rounded() const;  // to_double beyond 2^53 units
   // Exact decimal text, trailing zeros removed ("12.5", "-0.001", "3").
   std::string to_string() const;
 
@@ -74,6 +73,7 @@ class Decimal {
   }
 
  private:
+  double to_double_rounded() const;  // to_double beyond 2^53 units
   Int128 units_ = 0;
 };
 
