@@ -1,14 +1,17 @@
 // Time per block of both engines on the bundled example, and fast's throughput and allocations
-// on long programs generated on the fly (the text is never held in memory).
+// on long programs generated on the fly (the text is never held in memory as a whole).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cstdlib>
 #include <fstream>
 #include <new>
 #include <sstream>
 #include <streambuf>
 #include <string>
+#include <string_view>
 
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/ref/engine.hpp"
@@ -34,7 +37,8 @@ class NullSink : public PathSink {
 };
 
 // A compensated zig-zag of `blocks` blocks (inner and outer corners, G450 circles, infeeds),
-// produced line by line as the reader asks for it.
+// produced as the reader asks for it, 64 KB of lines at a time. The digits are written by hand
+// (std::to_chars) so that the generator costs little beside the reader it feeds.
 class ZigZagProgram : public std::streambuf {
  public:
   explicit ZigZagProgram(long blocks, bool cdon = false) : total_(blocks), cdon_(cdon) {}
@@ -42,28 +46,31 @@ class ZigZagProgram : public std::streambuf {
  protected:
   int_type underflow() override {
     if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-    if (n_ > total_ + 3) return traits_type::eof();
-    line_ = next_line();
-    setg(line_.data(), line_.data(), line_.data() + line_.size());
+    char* p = chunk_;
+    while (n_ <= total_ + 3 && p + kLongestLine <= chunk_ + sizeof chunk_) p = next_line(p);
+    if (p == chunk_) return traits_type::eof();
+    setg(chunk_, chunk_, p);
     return traits_type::to_int_type(*gptr());
   }
 
  private:
-  std::string next_line() {
+  static constexpr long kLongestLine = 64;
+  static char* put(char* p, std::string_view s) { return std::copy(s.begin(), s.end(), p); }
+  char* next_line(char* p) {
     long k = n_++;
-    if (k == 0) return "$TC_DP6[1,1]=2\n";
-    if (k == 1) return "N1 G0 X-10 Y-10 T1 D1\n";
-    if (k == 2) return cdon_ ? "N2 G1 G41 CDON X0 Y0 F500\n" : "N2 G1 G41 X0 Y0 F500\n";
-    if (k == total_ + 3) return "G40 X-10 Y-10\n";
-    if (k % 7 == 0) return "Z-1 M8\n";  // a block without plane motion
+    if (k == 0) return put(p, "$TC_DP6[1,1]=2\n");
+    if (k == 1) return put(p, "N1 G0 X-10 Y-10 T1 D1\n");
+    if (k == 2) return put(p, cdon_ ? "N2 G1 G41 CDON X0 Y0 F500\n" : "N2 G1 G41 X0 Y0 F500\n");
+    if (k == total_ + 3) return put(p, "G40 X-10 Y-10\n");
+    if (k % 7 == 0) return put(p, "Z-1 M8\n");  // a block without plane motion
     long i = k - 3;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "X%ld.5 Y%d\n", 10 * (i + 1), i % 2 == 0 ? 20 : 0);
-    return buf;
+    *p++ = 'X';
+    p = std::to_chars(p, p + 24, 10 * (i + 1)).ptr;
+    return put(p, i % 2 == 0 ? ".5 Y20\n" : ".5 Y0\n");
   }
   long total_, n_ = 0;
   bool cdon_;  // collision detection on: output held back over the MD20240 window (TRC-CD-1)
-  std::string line_;
+  char chunk_[1 << 16];
 };
 
 // Islands of 6 blocks each: a SAR approach (G247 G341), a rectangle, a SAR retraction (G248 G340
