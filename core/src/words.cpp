@@ -1,5 +1,7 @@
 // NC-LEX-*, NC-WORD-*: the words of one block (addresses, keywords, actions, tools). An unknown
 // or unsupported word is named whole, in one wording (NC-ERR-3).
+#include <cstring>
+
 #include "word_lexer.hpp"
 
 namespace cutcom::lexer {
@@ -504,6 +506,14 @@ InputError::InputError(int line, int column, const std::string& what)
       line_(line),
       column_(column),
       detail_(what) {}
+
+void reset_fields(BlockWordFields& fields) {
+  static const BlockWordFields kEmpty{};
+  // A size the compiler cannot see: a known one this large is inlined as `rep movsq`.
+  std::size_t size = sizeof kEmpty;
+  asm("" : "+r"(size));
+  std::memcpy(static_cast<void*>(&fields), &kEmpty, size);
+}
 
 void parse_block_words(std::string_view text, int line, BlockWords& out,
                        const std::vector<std::string>& machine_cycles) {
