@@ -60,35 +60,44 @@ class CollisionWindow {
     release_before(traversing_ + 1 - md_.cutcom_maxnum_check_blocks);
   }
   // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
-  bool direct() const { return !holding_ && records_.empty(); }
+  bool direct() const { return !holding_ && empty(); }
 
-  void hold(const HeldRecord& r) { records_.push_back(r); }
+  void hold(const HeldRecord& r) {
+    // Released records are dropped only when the reserve is full: one move of the few held then,
+    // instead of one per released record.
+    if (records_.size() == records_.capacity() && head_ > 0) {
+      records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(head_));
+      head_ = 0;
+    }
+    records_.push_back(r);
+  }
   // Releases the records of traversing blocks before `seq`, in path order.
   void release_before(int seq) {
-    std::size_t n = 0;
-    for (; n < records_.size() && records_[n].seq < seq; ++n) {
-      if (records_[n].is_element)
-        sink_.element(records_[n].element);
+    for (; head_ < records_.size() && records_[head_].seq < seq; ++head_) {
+      if (records_[head_].is_element)
+        sink_.element(records_[head_].element);
       else
-        sink_.action(records_[n].action);
+        sink_.action(records_[head_].action);
     }
-    records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(n));
+    if (head_ == records_.size()) records_.clear(), head_ = 0;
   }
   void release_all() { release_before(std::numeric_limits<int>::max()); }
 
-  bool empty() const { return records_.empty(); }
-  std::size_t size() const { return records_.size(); }
-  const HeldRecord& operator[](std::size_t i) const { return records_[i]; }
+  bool empty() const { return head_ == records_.size(); }
+  std::size_t size() const { return records_.size() - head_; }
+  const HeldRecord& operator[](std::size_t i) const { return records_[head_ + i]; }
 
   // TRC-CD-4: the path is cut on `record`, which now ends at `end` (nothing is left of it when
   // `vanishes`); the records after it leave the window and are returned in path order, for the
   // cut blocks to run again (a reserved scratch list, valid until the next cut).
   const std::vector<HeldRecord>& cut(std::size_t record, const PathPoint& end, bool vanishes) {
-    auto after = records_.begin() + static_cast<std::ptrdiff_t>(record) + 1;
-    records_[record].element.end = end;
+    std::size_t at = head_ + record;
+    auto after = records_.begin() + static_cast<std::ptrdiff_t>(at) + 1;
+    records_[at].element.end = end;
     scratch_.assign(after, records_.end());
     records_.erase(after, records_.end());
-    if (vanishes) records_.erase(records_.begin() + static_cast<std::ptrdiff_t>(record));
+    if (vanishes) records_.erase(records_.begin() + static_cast<std::ptrdiff_t>(at));
+    if (head_ == records_.size()) records_.clear(), head_ = 0;
     return scratch_;
   }
 
@@ -96,6 +105,7 @@ class CollisionWindow {
   PathSink& sink_;
   const MachineData& md_;
   std::vector<HeldRecord> records_, scratch_;
+  std::size_t head_ = 0;  // records_[0, head_) are released
   int traversing_ = 0;
   bool holding_ = false;  // CDON in force for the block being processed
 };

@@ -104,6 +104,12 @@ class Compensation {
   int examined = 0, dummy_run = 0;
 
   std::array<BlockCopy, 2> prev_blocks;  // the last traversing block with compensation and the one before
+  struct SlotElement {
+    bool valid = false;
+    PlaneAxes axes{0, 1, 2};
+    Element element;
+  };
+  mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; a copy_into empties both
   int prev_slot = 0;
   bool has_prev = false;
   EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until
@@ -115,6 +121,7 @@ class Compensation {
     return c;
   }
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
+    slot_elements[0].valid = slot_elements[1].valid = false;
     c.assign(b);
     c.seq = held.seq();
     if (&b == over_block) over.apply(c);
@@ -178,7 +185,16 @@ class Compensation {
   void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
            const Origin& from_what);
 
-  Element element_of(const BlockCopy& c) const { return element_in(c, axes); }
+  // A block's element; that of a block in one of prev_blocks' slots is computed once per block
+  // and plane (the entry under CDON, the corner and the next block's entry all ask for it).
+  Element element_of(const BlockCopy& c) const {
+    std::size_t k = &c == &prev_blocks[0] ? 0 : &c == &prev_blocks[1] ? 1 : 2;
+    if (k == 2) return element_in(c, axes);
+    SlotElement& m = slot_elements[k];
+    if (!m.valid || m.axes.abscissa != axes.abscissa || m.axes.ordinate != axes.ordinate)
+      m.element = element_in(c, axes), m.axes = axes, m.valid = true;
+    return m.element;
+  }
 
   // TRC-DUMMY-1: blocks without motion in the plane run at the corner point P*.
   void run_held_back(Vec2 at);
