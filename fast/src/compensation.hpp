@@ -109,7 +109,7 @@ class Compensation {
     PlaneAxes axes{0, 1, 2};
     Element element;
   };
-  mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; a copy_into empties both
+  mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
   int prev_slot = 0;
   bool has_prev = false;
   EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until
@@ -121,7 +121,8 @@ class Compensation {
     return c;
   }
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
-    slot_elements[0].valid = slot_elements[1].valid = false;
+    for (std::size_t k = 0; k < 2; ++k)
+      if (&c == &prev_blocks[k]) slot_elements[k].valid = false;
     c.assign(b);
     c.seq = held.seq();
     if (&b == over_block) over.apply(c);
