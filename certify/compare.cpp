@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -70,11 +71,22 @@ namespace {
 // carriers (a line tangent to the G461 circle, circles touching at a corner), ill-conditioned
 // by a square root. Inside the band both branches are legitimate and the point is known only
 // to within Tolerance::touching.
+// A CDON entry (TRC-CD-2 `entry`) is such a decision only at a corner with a circle, where its
+// margin is also how near the carriers come to missing each other; between two lines it is the
+// entry's extent, and its point, where two lines meet, is well conditioned: an entry of one
+// point (extent 0) is still compared (mutant 23 hid behind this).
+bool entry_at_circle(const Decision& d, const Tolerance& tol) {
+  if (tol.plane_lines.empty()) return true;  // blocks unknown: as before, any entry
+  auto circle = [&](int line) { return std::binary_search(tol.circle_lines.begin(), tol.circle_lines.end(), line); };
+  auto at = std::lower_bound(tol.plane_lines.begin(), tol.plane_lines.end(), d.line);
+  return circle(d.line) || (at != tol.plane_lines.begin() && circle(*std::prev(at)));
+}
 bool touching_carriers(const Decision& d, const Tolerance& tol) {
   bool kind = (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses")) ||
               d.clause == "TRC-ARC-CORNER-1" || (d.clause == "TRC-EDGE-5" && d.branch == "hit") ||
               (d.clause == "TRC-EDGE-6" && d.branch == "circle") || d.clause == "TRC-LOOK-2" ||
-              d.clause == "TRC-CD-5" || d.clause == "TRC-CD-6" || (d.clause == "TRC-CD-2" && d.branch == "entry");
+              d.clause == "TRC-CD-5" || d.clause == "TRC-CD-6" ||
+              (d.clause == "TRC-CD-2" && d.branch == "entry" && entry_at_circle(d, tol));
   return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
 }
 }  // namespace
@@ -284,6 +296,15 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       if (!same_decision(ref.decisions[ir], fast.decisions[jf])) return knife;
       resumed = ref.decisions[ir].line, resumed_at = ir;
       continue;
+    }
+    // fast's own crossing touches (its margin in the band) where ref found none to compare: an
+    // entry exactly one point long in ref is nothing, a rounding longer in fast a sliver that may
+    // touch a held piece (corpus cdon-entry-of-zero-length).
+    if (r.clause == f.clause && r.line == f.line && touching_crossing(f, tol)) {
+      v.kind = Verdict::Kind::kKnifeEdge;
+      v.clause = std::string(f.clause);
+      v.explanation = where + ", fast's crossing touches";
+      return v;
     }
     // After a knife edge only a touching decision since the runs met again explains a parting.
     if (parted_after_touching(ref, resumed_at, ir, tol, where, v)) return v;

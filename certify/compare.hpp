@@ -23,15 +23,16 @@ inline double margin_value(const Decision& d) {
 
 // What the tolerances depend on, read off the program.
 struct Conditioning {
-  double size = 1;               // L: largest coordinate magnitude or radius, mm
-  double shortest = 1;           // d_min: shortest in-plane block, mm
-  double radius = 0;             // |r|, mm
-  double corner = 1;             // kappa: largest 1/(1 + cos phi) over the contour's corners
-  double crossing = 1;           // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
-                                 // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
-  double reach = 0;              // largest coordinate magnitude of ref's path, mm (0: not read)
-  int window = 3;                // MD20240: blocks the look-ahead and CDON see ahead
-  std::vector<int> plane_lines;  // lines of the blocks that move in the plane, ascending
+  double size = 1;                // L: largest coordinate magnitude or radius, mm
+  double shortest = 1;            // d_min: shortest in-plane block, mm
+  double radius = 0;              // |r|, mm
+  double corner = 1;              // kappa: largest 1/(1 + cos phi) over the contour's corners
+  double crossing = 1;            // chi: largest 1/|sin phi| over corners with a circle (carrier intersections)
+                                  // and over pairs of blocks the look-ahead or CDON may intersect (MD20240 apart)
+  double reach = 0;               // largest coordinate magnitude of ref's path, mm (0: not read)
+  int window = 3;                 // MD20240: blocks the look-ahead and CDON see ahead
+  std::vector<int> plane_lines;   // lines of the blocks that move in the plane, ascending
+  std::vector<int> circle_lines;  // of those, the circles and the SAR blocks (whose element may be one)
 };
 // `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)
 // may intersect two blocks' equidistants.
@@ -53,6 +54,7 @@ struct Tolerance {
   // look-ahead and CDON count them.
   int window = 4;
   std::vector<int> plane_lines;
+  std::vector<int> circle_lines;  // Conditioning::circle_lines, ascending
   static Tolerance for_program(const Conditioning& c);
   double band(std::string_view clause) const;  // the band of a clause's margin
 };

@@ -179,6 +179,26 @@ void approach_window_collapsed_circle(ContourCase& c, std::int64_t hair) {
   down.dy = -3 * r;
   c.steps = {first, up, half, down};
 }
+// TRC-CD-2 at an extent of exactly 0: under CDON, G41 along +x, a block exactly r long turning
+// left (an inner right-angle corner, whose trim is r) so that the entry's intersection is its
+// equidistant's normal end: an entry of one point, still compared with the window (TRC-CD-3);
+// a nanometre longer, an entry; shorter, none. Positions on a quarter-millimetre grid, so that
+// fast's doubles hold them and the extent exactly.
+void cd_entry_at_end(ContourCase& c, std::int64_t hair) {
+  std::int64_t q = kMm / 4, v = *inRange<std::int64_t>(1, 8) * q, r = 2 * v;
+  c.radius_um = r;
+  c.right = false, c.cdon = true, c.kont_select = false;
+  c.md20240 = std::max(c.md20240, 3);
+  c.first_x = c.first_x / q * q, c.first_y = c.first_y / q * q;
+  c.start_x = c.first_x - 4 * r, c.start_y = c.first_y - 2 * r;
+  Step held{}, before{}, up{}, on{};
+  held.dx = *inRange<std::int64_t>(2, 6) * v;  // in the window when `up` is checked
+  before.dx = *inRange<std::int64_t>(3, 8) * v;
+  up.dy = r + hair;
+  on.dx = *inRange<std::int64_t>(2, 6) * v;  // an outer corner after it
+  c.steps = {held, before, up, on};
+}
+
 // SAR-SIDE-2: a smooth approach by a circle (G247/G347) with G143, so that the side is that of
 // the start P0 against the tangent at P4: P0 exactly on the tangent line (alarm 10744), or off it
 // by a cross product of 1 nm^2, a distance of 1/|d| nm (d the first block, 2 to 20 mm long:
@@ -234,7 +254,8 @@ rc::Gen<ContourCase> exact_situations() {
                                                 {"full-circle", full_circle},
                                                 {"look-ahead-at-candidate-start", look_ahead_at_candidate_start},
                                                 {"approach-window-collapsed-circle", approach_window_collapsed_circle},
-                                                {"sar-start-on-tangent", sar_start_on_tangent}};
+                                                {"sar-start-on-tangent", sar_start_on_tangent},
+                                                {"cd-entry-at-end", cd_entry_at_end}};
     const Situation& situation = kSituations[*inRange<std::size_t>(0, std::size(kSituations))];
     situation.write(c, hair);
     c.style = std::string("exact/") + situation.name +

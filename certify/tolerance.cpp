@@ -44,6 +44,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
           std::max({c.size, std::fabs(p->x.to_double()), std::fabs(p->y.to_double()), std::fabs(p->z.to_double())});
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
     if (b.moves_in_plane() || b.is_sar_block()) c.plane_lines.push_back(b.words.line);
+    if ((b.moves_in_plane() && b.is_arc()) || b.is_sar_block()) c.circle_lines.push_back(b.words.line);
     if (b.is_sar_block() && b.words.disr) {
       // SAR-DISR-1/2: the generated element is L = DISR + r long, or of radius DISR +- r.
       double d = b.words.disr->to_double(), r = std::fabs(b.state.effective_radius().to_double());
@@ -222,6 +223,8 @@ Tolerance Tolerance::for_program(const Conditioning& c) {
   t.window = std::max(c.window, 0) + 1;
   t.plane_lines = c.plane_lines;
   std::sort(t.plane_lines.begin(), t.plane_lines.end());
+  t.circle_lines = c.circle_lines;
+  std::sort(t.circle_lines.begin(), t.circle_lines.end());
   return t;
 }
 

@@ -194,6 +194,40 @@ TEST(Comparison, ACollapseAtAnExactZeroRadiusIsNoKnifeEdge) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kKnifeEdge);
 }
 
+// A CDON entry at margin 0 between two lines is an entry of one point, well conditioned: a parting
+// after it is a divergence (mutant 23: the point entry refused after it was traced). At a corner
+// with a circle the margin is also the carriers' gap: there it is touching carriers.
+// covers: PROP-DIFF-1 TRC-CD-2 TRC-CD-3
+TEST(Comparison, AnEntryOfOnePointBetweenLinesExplainsNothingAfterIt) {
+  auto at = [](Decision d, int line) {
+    d.line = line;
+    return d;
+  };
+  Tolerance tol = tolerance();
+  tol.plane_lines = {6, 7, 8, 9};
+  RunResult ref, fast;
+  ref.decisions = {at(decision("TRC-CD-2", "entry", 0, "0"), 8), at(decision("TRC-CD-3", "none", -1, "-1"), 8)};
+  fast.decisions = {at(decision("TRC-CD-2", "entry", 0), 8), at(decision("TRC-CORNER-1", "inner", 1), 8)};
+  Verdict v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  tol.circle_lines = {7};  // the block before is a circle
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_NE(v.explanation.find("after touching carriers"), std::string::npos) << v.explanation;
+  tol.circle_lines = {8};  // the block itself
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
+  tol.circle_lines = {6};  // two blocks before: not at this corner
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  // fast's entry a rounding longer than ref's point: a sliver whose crossing touches a held piece
+  // (its own margin 0) where ref compares nothing: that crossing is the knife edge.
+  fast.decisions[1] = at(decision("TRC-CD-3", "cut", 0), 8);
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_NE(v.explanation.find("fast's crossing touches"), std::string::npos) << v.explanation;
+  fast.decisions[1] = at(decision("TRC-CD-3", "cut", 0.5), 8);  // a crossing well inside: no knife edge
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+}
+
 // What an element belongs to and its feed, the actions and where they run, SAR's variables and
 // the notices: a bug that changes only these would otherwise pass.
 // covers: PROP-DIFF-3
