@@ -75,7 +75,8 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
     // by a rounding would cross it anywhere (TRC-LOOK-2's case of campaign 20261241).
     if (on_one_circle(h, c)) continue;
     bool has_depth = h.circle || c.circle;
-    double depth = has_depth ? -carrier_gap(h, c) : 0;
+    double depth = 0;  // -carrier_gap, taken once a point lies on both pieces (the only use)
+    bool depth_known = false;
     Vec2 xs[2];
     int n = carrier_intersections(h, c, xs);
     if (!h.circle && !c.circle && n == 0) {  // parallel: no crossing; the near miss is their distance
@@ -92,7 +93,10 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
       OnPiece on_held = locate(held, xs[k]), on_entry = locate(e, xs[k]);
       double slack = std::min(on_held.slack, on_entry.slack);
       bool on = on_held.on && on_entry.on;
-      if (on && has_depth) slack = std::min(slack, depth);
+      if (on && has_depth) {
+        if (!depth_known) depth = -carrier_gap(h, c), depth_known = true;
+        slack = std::min(slack, depth);
+      }
       if (!on) {
         out.near_miss = std::max(out.near_miss, slack);
         continue;
