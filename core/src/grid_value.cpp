@@ -4,11 +4,42 @@
 #include <gmp.h>
 
 #include <string>
+#include <vector>
 
 namespace cutcom::grid {
 
 namespace {
 thread_local mpfr_prec_t current_precision = detail::kFirstPrecision;
+
+// Enclosures of the current precision that were released, kept for the next ones: an evaluation
+// makes and drops hundreds of intervals, and each would otherwise cost two allocations.
+class IntervalPool {
+ public:
+  ~IntervalPool() { drop(); }
+  void init(mpfi_t v) {
+    if (free_.empty()) {
+      mpfi_init2(v, current_precision);
+      return;
+    }
+    *v = free_.back();
+    free_.pop_back();
+  }
+  void release(mpfi_t v) {
+    if (mpfi_get_prec(v) == current_precision && free_.size() < kKept)
+      free_.push_back(*v);
+    else
+      mpfi_clear(v);
+  }
+  void drop() {  // on a change of precision
+    for (auto& v : free_) mpfi_clear(&v);
+    free_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kKept = 1024;
+  std::vector<__mpfi_struct> free_;
+};
+thread_local IntervalPool pool;
 
 void set_int128(mpz_t z, Int128 v) {
   std::string text = int128_to_string(v);
@@ -17,6 +48,10 @@ void set_int128(mpz_t z, Int128 v) {
 
 // The decimal's units (an integer) from an integral mpfr value; false if out of range.
 bool units_of(const mpfr_t integral, Int128& units) {
+  if (mpfr_fits_slong_p(integral, MPFR_RNDN)) {  // the usual case, without a detour through text
+    units = mpfr_get_si(integral, MPFR_RNDN);
+    return true;
+  }
   mpz_t z;
   mpz_init(z);
   mpfr_get_z(z, integral, MPFR_RNDN);
@@ -41,14 +76,23 @@ bool last_precision() { return current_precision >= detail::kLastPrecision; }
 
 mpfr_prec_t precision() { return current_precision; }
 
-void detail::set_precision(mpfr_prec_t bits) { current_precision = bits; }
+void detail::set_precision(mpfr_prec_t bits) {
+  if (bits != current_precision) pool.drop();
+  current_precision = bits;
+}
 
 Interval::Interval() {
-  mpfi_init2(value, current_precision);
+  pool.init(value);
   mpfi_set_ui(value, 0);
 }
 Interval::Interval(Decimal d) {
-  mpfi_init2(value, current_precision);
+  pool.init(value);
+  const Int128 units = d.units();
+  if (units >= -(Int128(1) << 62) && units <= (Int128(1) << 62)) {  // fits a long: no detour through text
+    mpfi_set_si(value, static_cast<long>(units));
+    mpfi_div_ui(value, value, static_cast<unsigned long>(Decimal::kUnitsPerOne));
+    return;
+  }
   mpz_t z;
   mpz_init(z);
   set_int128(z, d.units());
@@ -62,7 +106,10 @@ Interval Interval::integer(long v) {
   return r;
 }
 Interval::Interval(const Interval& o) {
-  mpfi_init2(value, mpfi_get_prec(o.value));
+  if (mpfi_get_prec(o.value) == current_precision)
+    pool.init(value);
+  else
+    mpfi_init2(value, mpfi_get_prec(o.value));
   mpfi_set(value, o.value);
 }
 Interval& Interval::operator=(const Interval& o) {
@@ -72,7 +119,7 @@ Interval& Interval::operator=(const Interval& o) {
   }
   return *this;
 }
-Interval::~Interval() { mpfi_clear(value); }
+Interval::~Interval() { pool.release(value); }
 
 Interval operator+(const Interval& a, const Interval& b) {
   Interval r;
@@ -105,13 +152,10 @@ Interval operator-(const Interval& a) {
 }
 Interval sqrt(const Interval& a) {
   Interval r;
-  mpfi_t clipped;
-  mpfi_init2(clipped, current_precision);
-  mpfi_set(clipped, a.value);
-  if (mpfr_sgn(&clipped->left) < 0) mpfr_set_zero(&clipped->left, 1);
-  if (mpfr_sgn(&clipped->right) < 0) mpfr_set_zero(&clipped->right, 1);
-  mpfi_sqrt(r.value, clipped);
-  mpfi_clear(clipped);
+  Interval clipped(a);
+  if (mpfr_sgn(&clipped.value->left) < 0) mpfr_set_zero(&clipped.value->left, 1);
+  if (mpfr_sgn(&clipped.value->right) < 0) mpfr_set_zero(&clipped.value->right, 1);
+  mpfi_sqrt(r.value, clipped.value);
   return r;
 }
 Interval atan2(const Interval& y, const Interval& x) {
