@@ -7,12 +7,22 @@
 namespace cutcom::fast {
 
 namespace {
-constexpr double kTurn = 2 * std::numbers::pi;
-
 // The rotation in [0, 2 pi) from `from` to `to` in the sense `sense`.
 double rotation(Vec2 from, Vec2 to, int sense) {
   double a = sense * std::atan2(cross(from, to), dot(from, to));
-  return a < 0 ? a + kTurn : a;
+  return a < 0 ? a + 2 * std::numbers::pi : a;
+}
+
+// Positions on a circle are only compared with each other, so a pseudo-angle in [0, 4) that grows
+// with the rotation (a quarter turn is 1) stands in for it: atan2 was a tenth of a CDON run.
+constexpr double kPseudoTurn = 4;
+double pseudo_rotation(Vec2 from, Vec2 to, int sense) {
+  double x = dot(from, to), y = sense * cross(from, to);
+  double size = std::fabs(x) + std::fabs(y);
+  if (size == 0) return 0;  // from or to of no length: the start, as atan2(0, 0)
+  double p = y / size;      // [-1, 1]
+  if (x < 0) return 2 - p;
+  return p < 0 ? kPseudoTurn + p : p;
 }
 
 Carrier carrier(const PathPiece& p) {
@@ -39,7 +49,7 @@ OnPiece locate(const PathPiece& piece, Vec2 p) {
     o.position = along, o.slack = std::min(along, left), o.on = o.slack >= 0;
     return o;
   }
-  o.position = rotation(piece.a - piece.centre, p - piece.centre, piece.sense);
+  o.position = pseudo_rotation(piece.a - piece.centre, p - piece.centre, piece.sense);
   o.on = piece.sweep - o.position >= 0;
   double nearer = std::min(norm(p - piece.a), norm(p - piece.b));
   o.slack = o.on ? nearer : -nearer;
@@ -56,7 +66,7 @@ PathPiece PathPiece::segment(Vec2 from, Vec2 to) {
 PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn) {
   PathPiece p;
   p.arc = true, p.a = from, p.b = to, p.centre = centre, p.radius = radius, p.sense = sense;
-  p.sweep = full_turn ? kTurn : rotation(from - centre, to - centre, sense);
+  p.sweep = full_turn ? kPseudoTurn : pseudo_rotation(from - centre, to - centre, sense);
   return p;
 }
 
@@ -104,9 +114,11 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
       if (found && on_held.position >= best) continue;
       found = true, best = on_held.position;
       out.point = xs[k], out.entry_piece = i, out.slack = slack;
-      out.along = held.arc ? best * held.radius : best;
     }
   }
+  // The length along the held circle: its rotation, only for the point taken.
+  if (found)
+    out.along = held.arc ? rotation(held.a - held.centre, out.point - held.centre, held.sense) * held.radius : best;
   return out;
 }
 

@@ -8,13 +8,14 @@
 
 namespace cutcom::fast {
 
-// A segment from a to b, or a circle about `centre` from a through `sweep` in the sense `sense`.
+// A segment from a to b, or a circle about `centre` from a through `sweep` in the sense `sense`
+// (a pseudo-angle: a quarter turn is 1, a full turn 4; see bottleneck.cpp).
 struct PathPiece {
   bool arc = false;
   Vec2 a, b, centre;
   double radius = 0;
   int sense = 1;
-  double sweep = 0;  // [0, 2 pi]
+  double sweep = 0;  // [0, 4]
 
   static PathPiece segment(Vec2 from, Vec2 to);
   static PathPiece circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn = false);
