@@ -54,7 +54,7 @@ struct OnPiece {
 bool same_point(const Point& p, const Point& q) { return p.x().Rep() == q.x().Rep() && p.y().Rep() == q.y().Rep(); }
 
 // `margins`: the slack too (a margin only: where nothing keeps the trace it is left out, see
-// Trace::keeps_margins; the exact distances to the ends were most of ref's time under CDON).
+// Trace::keeps_decisions; the exact distances to the ends were most of ref's time under CDON).
 OnPiece locate(const PathPiece& piece, const Point& p, bool margins) {
   OnPiece o;
   if (same_point(p, piece.a) || same_point(p, piece.b)) {  // an end of the piece: on it, no slack

@@ -72,7 +72,7 @@ class Compensation {
   void decide(const ProgrammedDecision& d, int line) { trace_.decide(d, line); }
   // Whether margins reach anything: an exact margin as text costs an approximation of its value,
   // most of ref's time on a plain contour; without a trace the text is left out.
-  bool margins_kept() const { return trace_.keeps_margins(); }
+  bool margins_kept() const { return trace_.keeps_decisions(); }
   void raise(int number, const Block& at, std::string_view clause = {}) { trace_.raise(number, at, clause); }
 
   // Auxiliary functions of a block run before its first element (PATH-ACTION-1).

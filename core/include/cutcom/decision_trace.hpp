@@ -19,25 +19,25 @@ namespace cutcom {
 class Trace {
  public:
   enum class Margins { kDouble, kExact };
-  Trace(PathSink& sink, Margins margins) : sink_(sink), margins_(margins), keeps_margins_(sink.keeps_decisions()) {}
+  Trace(PathSink& sink, Margins margins) : sink_(sink), margins_(margins), keeps_decisions_(sink.keeps_decisions()) {}
   // Whether a decision given to decide() reaches anything (PathSink::keeps_decisions): if not,
   // decide() returns at once.
-  bool keeps_margins() const { return keeps_margins_; }
+  bool keeps_decisions() const { return keeps_decisions_; }
 
   void decide(std::string_view clause, int line, std::string_view branch) {
-    if (!keeps_margins_) return;
+    if (!keeps_decisions_) return;
     Decision d;
     d.clause = clause, d.line = line, d.branch = branch;
     sink_.decision(d);
   }
   void decide(std::string_view clause, int line, std::string_view branch, double margin) {
-    if (!keeps_margins_) return;
+    if (!keeps_decisions_) return;
     Decision d;
     d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin = margin;
     sink_.decision(d);
   }
   void decide(std::string_view clause, int line, std::string_view branch, std::string exact_margin) {
-    if (!keeps_margins_) return;
+    if (!keeps_decisions_) return;
     Decision d;
     d.clause = clause, d.line = line, d.branch = branch, d.has_margin = true, d.margin_exact = std::move(exact_margin);
     sink_.decision(d);
@@ -79,7 +79,7 @@ class Trace {
  private:
   PathSink& sink_;
   Margins margins_;
-  bool keeps_margins_;
+  bool keeps_decisions_;
   std::function<void()> before_alarm_;
   bool stopped_ = false;
 };
