@@ -52,6 +52,7 @@ Outcome judge(CaseRuns runs) {
   Verdict v = compare(r.ref, r.fast, r.tolerance);
   o.explanation = v.explanation;
   o.compared_after = v.compared_after;
+  if (r.untraced) return o.explanation = *r.untraced, o.verdict = "diverge", o;  // PROP-TRACE-1
   if (r.ref_unsupported || r.fast_unsupported) {
     if (r.ref_unsupported == r.fast_unsupported) return o.verdict = "not-supported", o;
     if (v.kind != Verdict::Kind::kKnifeEdge) return o.verdict = "diverge", o;

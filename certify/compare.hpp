@@ -75,4 +75,9 @@ std::optional<std::string> broken_boundary_rule(const RunResult& run, std::strin
 // PATH-ELEMENT-1: an element of length zero in an engine's output, as written (used for fast).
 std::optional<std::string> zero_length_element(const RunResult& run, std::string_view engine);
 
+// PROP-TRACE-1: what differs between fast's run that keeps its decisions and the same run that
+// keeps none (`cutcom run` without --trace, which may leave out work only margins need): path,
+// actions and alarms must be identical, bit for bit. Empty when nothing does.
+std::optional<std::string> untraced_difference(const RunResult& traced, const RunResult& untraced);
+
 }  // namespace cutcom::props

@@ -1,6 +1,8 @@
 // Running a generated case through both engines.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <functional>
 #include <sstream>
 
@@ -16,6 +18,13 @@ struct CaseRuns {
   int ref_unsupported = 0, fast_unsupported = 0;  // line of a "not supported" rejection (TRC-UNSUP-1)
   ref::ExactCheckReport exact;
   Tolerance tolerance;
+  std::optional<std::string> untraced;  // PROP-TRACE-1: how fast without its trace differs
+};
+
+// A sink as `cutcom run` without --trace has: it keeps no decisions.
+class UntracedSink : public CollectingSink {
+ public:
+  bool keeps_decisions() const override { return false; }
 };
 
 inline MachineData machine_data_of(const ContourCase& c) {
@@ -39,6 +48,20 @@ inline void look_for_subprograms(ProgramReader& reader, const std::string& folde
   if (setup) setup(reader);
 }
 
+// fast on one program, into `sink`; the line of a "not supported" rejection, or 0.
+inline int run_fast(const std::string& text, const MachineData& md, const std::string& folder, const ReaderSetup& setup,
+                    CollectingSink& sink) {
+  std::istringstream in(text);
+  ProgramReader reader(in, md.initial_state());
+  look_for_subprograms(reader, folder, setup);
+  try {
+    fast::run(reader, md, sink);
+  } catch (const UnsupportedError& e) {
+    return e.line();
+  }
+  return 0;
+}
+
 // Both engines on one program text, and the tolerance read off it.
 inline CaseRuns run_program(const std::string& text, const MachineData& md, bool exact_checks = false,
                             const std::string& folder = {}, const ReaderSetup& setup = {}) {
@@ -56,16 +79,15 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
     out.ref = std::move(sink.result);
   }
   {
-    std::istringstream in(text);
-    ProgramReader reader(in, md.initial_state());
-    look_for_subprograms(reader, folder, setup);
     CollectingSink sink;
-    try {
-      fast::run(reader, md, sink);
-    } catch (const UnsupportedError& e) {
-      out.fast_unsupported = e.line();
-    }
+    out.fast_unsupported = run_fast(text, md, folder, setup, sink);
     out.fast = std::move(sink.result);
+    UntracedSink untraced;
+    int untraced_unsupported = run_fast(text, md, folder, setup, untraced);
+    out.untraced = untraced_difference(out.fast, untraced.result);
+    if (!out.untraced && untraced_unsupported != out.fast_unsupported)
+      out.untraced = fmt::format("fast without its trace: not supported at line {}, with it at line {}",
+                                 untraced_unsupported, out.fast_unsupported);
   }
   std::istringstream in(text);
   ProgramReader reader(in, md.initial_state());

@@ -29,6 +29,7 @@ void check_agreement(const ContourCase& c) {
   auto started = std::chrono::steady_clock::now();
   CaseRuns r = run_case(c, false);
   report_if_slow(c, std::chrono::steady_clock::now() - started);
+  if (r.untraced) RC_FAIL(*r.untraced);  // PROP-TRACE-1
   Verdict v = compare(r.ref, r.fast, r.tolerance);
   if (r.ref_unsupported || r.fast_unsupported) {
     // TRC-UNSUP-1: both reject naming the same line, or one does after a knife edge.
@@ -43,7 +44,8 @@ void check_agreement(const ContourCase& c) {
   if (v.kind == Verdict::Kind::kDiverge) RC_FAIL(v.explanation);
 }
 
-// covers: PROP-DIFF-1 TRC-CORNER-1 TRC-CORNER-3 TRC-CORNER-4 TRC-ELEMENT-1 TRC-G450-1 TRC-G451-1 TRC-INNER-1
+// covers: PROP-DIFF-1 PROP-TRACE-1 TRC-CORNER-1 TRC-CORNER-3 TRC-CORNER-4 TRC-ELEMENT-1 TRC-G450-1 TRC-G451-1
+// TRC-INNER-1
 RC_GTEST_PROP(Differential, FastAgreesWithRefOnAnyContour, ()) { check_agreement(*any_contour()); }
 
 // covers: PROP-DIFF-1 NC-CONTOUR-1 NC-POLAR-2 NC-FRAME-4 NC-GRID-1

@@ -32,7 +32,9 @@ struct PieceCrossing {
   double near_miss = -std::numeric_limits<double>::infinity();
   bool overlap = false;  // two collinear segments overlap or touch: a near miss of 0 (TRC-CD-3)
 };
-// `from`: the first entry piece compared (see ref).
-PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count, int from = 0);
+// `from`: the first entry piece compared (see ref). Without `margins` (no decision is kept) the
+// near miss and the overlap are left out where the pieces are plainly apart.
+PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int count, int from = 0,
+                             bool margins = true);
 
 }  // namespace cutcom::fast

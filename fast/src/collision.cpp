@@ -120,7 +120,7 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
     if (state == 0) state = entry_of(m, before, entry) ? 1 : -1;
     if (state < 0) return false;
     bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
-    c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0);
+    c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0, trace.keeps_decisions());
     near = std::max(near, c.near_miss);
     overlap = overlap || c.overlap;
     return c.entry_piece >= 0;
@@ -225,7 +225,7 @@ bool Compensation::search_further_back(BlockCopy& d, const EdgeCurve& curve) {
     const HeldRecord& rec = held[i];
     if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
     compared = true;
-    PieceCrossing c = piece_crossing(piece_of(rec), &aux, 1);
+    PieceCrossing c = piece_crossing(piece_of(rec), &aux, 1, 0, trace.keeps_decisions());
     near = std::max(near, c.near_miss);
     if (c.entry_piece < 0) continue;
     decide("TRC-CD-5", d.line, "earlier-block", std::min(c.slack, -near));
