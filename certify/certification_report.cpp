@@ -193,10 +193,11 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "generated NC program run through both engines and compared decision by decision, then\n"
      << "coordinate by coordinate (PROP-DIFF-1, [tolerances.md](tolerances.md)), then by what the path\n"
      << "carries besides its geometry: feeds, the SAR movement or insert an element belongs to, actions\n"
-     << "and where they run, SAR's variables, notices (PROP-DIFF-3); an *unexplained* divergence\n"
-     << "(decisions that differ while ref's exact margin lies outside the clause's band, coordinates\n"
-     << "beyond the tolerance, or any of those data different) stops the campaign and is written to\n"
-     << "`tests/corpus/`.\n\n"
+     << "and where they run, SAR's variables, notices (PROP-DIFF-3). fast also runs each case without\n"
+     << "its trace, as `cutcom run` does, and must take the same path bit for bit (PROP-TRACE-1). An\n"
+     << "*unexplained* divergence (decisions that differ while ref's exact margin lies outside the\n"
+     << "clause's band, coordinates beyond the tolerance, any of those data different, or a run\n"
+     << "without the trace that differs) stops the campaign and is written to `tests/corpus/`.\n\n"
      << "## The campaign\n\n| | |\n|---|---|\n"
      << fmt::format("| seed | {} |\n| shards | {} ({}) |\n| cases | {} |\n", s.seed, s.shards.size(),
                     fmt::join(s.shards, ", "), s.cases)
