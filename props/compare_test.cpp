@@ -33,6 +33,29 @@ Tolerance tolerance() {
   return t;
 }
 
+// covers: PROP-TRACE-1
+TEST(Comparison, FastWithoutItsTraceMustTakeTheSamePathBitForBit) {
+  RunResult traced;
+  traced.path = {line({0, 0, 0}, {10, 0, 0}), arc({10, 0, 0}, {10, 2, 0}, {10, 1, 0}, true)};
+  traced.decisions.push_back(Decision{});
+  RunResult untraced = traced;
+  untraced.decisions.clear();  // no decisions kept: that alone is no difference
+  EXPECT_FALSE(untraced_difference(traced, untraced));
+  // One ulp off in one coordinate, far below any tolerance, is a difference.
+  untraced.path[1].center.y = std::nextafter(1.0, 2.0);
+  ASSERT_TRUE(untraced_difference(traced, untraced));
+  EXPECT_NE(untraced_difference(traced, untraced)->find("element 1"), std::string::npos);
+  untraced = traced;
+  untraced.path.pop_back();
+  EXPECT_TRUE(untraced_difference(traced, untraced));
+  untraced = traced;
+  untraced.alarms.push_back(Alarm{});
+  EXPECT_TRUE(untraced_difference(traced, untraced));
+  untraced = traced;
+  untraced.actions.push_back(ActionEvent{});
+  EXPECT_TRUE(untraced_difference(traced, untraced));
+}
+
 // covers: PROP-DIFF-1
 TEST(Comparison, AnArcIsASliverByItsLengthAlongTheCircleNotByItsChord) {
   // In G18 (Z/X plane, applicate Y): a transition circle of radius 5 turning 3.4e-12 rad, about
