@@ -94,6 +94,30 @@ TEST(Parametric, ComputedValuesBecomeNinePlaceDecimals) {
             2);
 }
 
+// INT is 32 bits: a value beyond it is an error where an INT is needed, and a REAL elsewhere. The
+// fuzzer's first findings under -fno-sanitize-recover (undefined conversions) are the last lines.
+// covers: NC-PARAM-TYPE-1 NC-PARAM-SYS-1
+TEST(Parametric, IntHoldsThirtyTwoBitsAndBeyondItIsAnError) {
+  EXPECT_EQ(end_x("DEF INT KK=2147483647\nG1 X=KK F100\n"), "2147483647");
+  EXPECT_EQ(end_x("DEF INT KK=-2147483648\nG1 X=KK F100\n"), "-2147483648");
+  const std::string range = "outside the range of INT (-2147483648 to 2147483647)";
+  EXPECT_EQ(error_line("DEF INT KK\nKK=2147483647.5\n", range), 2);  // rounds to 2^31
+  EXPECT_EQ(error_line("DEF INT KK=2147483647\nKK=KK+1\nG1 X1 F100\n", range), 2);
+  EXPECT_EQ(error_line("R1=3000000000 B_AND 1\n", range), 1);
+  EXPECT_EQ(error_line("R1=B_NOT 1EX12\n", range), 1);
+  // Whole results beyond INT are REAL and stay exact where binary64 holds them.
+  EXPECT_EQ(end_x("R1=2147483647*2\nG1 X=R1/1000 F100\n"), "4294967.294");
+  EXPECT_EQ(end_x("R1=9000000000000 DIV 1000\nG1 X=R1 F100\n"), "9000000000");
+  // A constant of 20 digits is a REAL, written as one by <<.
+  std::istringstream none;
+  Interpreter in(none);
+  EXPECT_EQ(in.evaluate("66666666666666666666").type, NcValue::Type::kReal);
+  EXPECT_EQ(in.evaluate("\"A\"<<2147483647").text, "A2147483647");
+  // A group number or a parameter number of many digits names nothing (no overflow on the way).
+  EXPECT_EQ(error_line("R1=$P_GG[49333333333]\n", "$P_GG"), 1);
+  EXPECT_EQ(error_line("$TC_DP1[1,1]=120\nR1=$TC_DP36892191099[1,1]\n", "$TC_DP36892191099"), 2);
+}
+
 // covers: NC-PARAM-FLOW-1 NC-PARAM-FLOW-2 NC-PARAM-FLOW-3 NC-PARAM-FLOW-4 NC-PARAM-SYS-1 NC-PARAM-VAR-1 NC-PARAM-VAR-2
 TEST(Parametric, ParametricProgramGivesThePlainProgramsPath) {
   // A staircase of three steps (FOR), two bumps (WHILE), a branch on the tool radius (IF/ELSE),

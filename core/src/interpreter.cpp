@@ -672,7 +672,13 @@ void Interpreter::store(Variable& var, std::size_t at_offset, const NcValue& val
   if (text != (value.type == T::kString))
     throw InputError(cx().line, static_cast<int>(at) + 1,
                      text ? "a STRING variable is assigned a number" : "a number variable is assigned a string");
-  if (var.type == T::kInt) v = NcValue::integer(static_cast<double>(std::llround(value.number)));  // NC-PARAM-TYPE-1
+  if (var.type == T::kInt) {  // NC-PARAM-TYPE-1: rounded; beyond INT's range an error
+    double whole = std::round(value.number);
+    if (!NcValue::fits_int(whole))
+      throw InputError(cx().line, static_cast<int>(at) + 1,
+                       fmt::format("{} is outside the range of INT (-2147483648 to 2147483647)", value.number));
+    v = NcValue::integer(whole);
+  }
   if (var.type == T::kBool) v = NcValue::boolean(value.number != 0);
   if (var.type == T::kReal) v = NcValue::real(value.number);
   var.values[at_offset] = v;

@@ -31,11 +31,14 @@ double as_number(const NcValue& v, int line, std::size_t at) {
     throw InputError(line, static_cast<int>(at) + 1, "a number is needed here, not a frame");
   return v.number;
 }
-// NC-PARAM-TYPE-1: an INT from a REAL is rounded to the nearest whole number (halves away from 0).
+// NC-PARAM-TYPE-1: an INT from a REAL is rounded to the nearest whole number (halves away from 0);
+// a value beyond INT's range is an error.
 std::int64_t as_int(const NcValue& v, int line, std::size_t at) {
-  double d = as_number(v, line, at);
-  if (!(std::fabs(d) < 9.2e18)) throw InputError(line, static_cast<int>(at) + 1, "integer out of range");
-  return static_cast<std::int64_t>(std::llround(d));
+  double d = std::round(as_number(v, line, at));
+  if (!NcValue::fits_int(d))
+    throw InputError(line, static_cast<int>(at) + 1,
+                     fmt::format("{} is outside the range of INT (-2147483648 to 2147483647)", d));
+  return static_cast<std::int64_t>(d);
 }
 
 namespace {
@@ -226,7 +229,8 @@ NcValue ExpressionParser::concatenation() {
 std::string ExpressionParser::text_of(const NcValue& v) {
   if (v.type == NcValue::Type::kString) return v.text;
   if (v.type == NcValue::Type::kBool) return v.number != 0 ? "TRUE" : "FALSE";
-  if (v.type == NcValue::Type::kInt) return fmt::format("{}", static_cast<std::int64_t>(v.number));
+  if (v.type == NcValue::Type::kInt && NcValue::fits_int(v.number))
+    return fmt::format("{}", static_cast<std::int64_t>(v.number));
   return fmt::format("{}", v.number);
 }
 
@@ -291,9 +295,9 @@ NcValue ExpressionParser::bit_and() {
   }
 }
 
-// INT op INT stays INT where the result is whole; otherwise REAL.
+// INT op INT stays INT where the result is whole and within INT's range; otherwise REAL.
 static NcValue arithmetic(const NcValue& a, const NcValue& b, double r) {
-  if (a.type == NcValue::Type::kInt && b.type == NcValue::Type::kInt && r == std::trunc(r) && std::fabs(r) < 9e15)
+  if (a.type == NcValue::Type::kInt && b.type == NcValue::Type::kInt && r == std::trunc(r) && NcValue::fits_int(r))
     return NcValue::integer(r);
   return NcValue::real(r);
 }
@@ -334,8 +338,11 @@ NcValue nc_product(const NcValue& a, const NcValue& b, int op, int line, std::si
   // NC-PARAM-ERR-1: division by zero stops the program (alarm 14051 on the control).
   if (y == 0) throw InputError(line, static_cast<int>(at) + 1, "division by zero");
   if (op == 2) return NcValue::real(x / y);
-  if (op == 3) return NcValue::integer(std::trunc(x / y));  // DIV: the whole part
-  return arithmetic(a, b, std::fmod(x, y));                 // MOD: the remainder
+  if (op == 3) {  // DIV: the whole part, an INT where it fits
+    double q = std::trunc(x / y);
+    return NcValue::fits_int(q) ? NcValue::integer(q) : NcValue::real(q);
+  }
+  return arithmetic(a, b, std::fmod(x, y));  // MOD: the remainder
 }
 
 NcValue nc_negate(NcValue v, int line, std::size_t at) {
@@ -551,7 +558,7 @@ NcValue ExpressionParser::number() {
     exponent = std::stoi(std::string(s_.substr(e, i_ - e))) * (negative ? -1 : 1);
   }
   double v = std::strtod((digits + "e" + std::to_string(exponent)).c_str(), nullptr);
-  return point || exponent < 0 ? NcValue::real(v) : NcValue::integer(v);
+  return point || exponent < 0 || !NcValue::fits_int(v) ? NcValue::real(v) : NcValue::integer(v);
 }
 
 NcValue ExpressionParser::function(const std::string& n, const std::vector<NcValue>& a, std::size_t at) {

@@ -53,7 +53,7 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
       if (state_.edge == 0) return 0.0;  // D0: no offset in force
     }
     for (char c : active ? std::string_view() : n.substr(6)) {
-      if (c < '0' || c > '9') return std::nullopt;
+      if (c < '0' || c > '9' || k > 25) return std::nullopt;  // past 25 no parameter (nor an overflow)
       k = k * 10 + (c - '0');
     }
     const EdgeData* e = active ? tools_.find(state_.tool, state_.edge)
@@ -68,7 +68,7 @@ std::optional<double> ProgramReader::system_value(std::string_view n, const std:
 // manual's list of G function groups; the first of a group is 1). Only groups cutcom models.
 std::optional<double> ProgramReader::g_group_value(double group) const {
   auto number = [](auto e) { return static_cast<double>(static_cast<int>(e) + 1); };
-  switch (static_cast<int>(group) == group ? static_cast<int>(group) : -1) {
+  switch (group >= 0 && group <= 1000 && std::trunc(group) == group ? static_cast<int>(group) : -1) {
     case 1:  // G0 G1 G2 G3 CIP … CT
       if (circle_definition_) return *circle_definition_ == CircleDefinition::kCip ? 5.0 : 15.0;
       if (thread_ != 0)  // G33 10, G331 11, G332 12, G34 16, G35 17

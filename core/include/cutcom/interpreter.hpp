@@ -35,7 +35,10 @@ struct NcValue {
   // ("ATRANS X10", "AROT Z30", …; empty: the identity), NC-PARAM-FRAME-1.
   std::string text;
   static NcValue real(double v) { return {Type::kReal, v, {}}; }
-  static NcValue integer(double v) { return {Type::kInt, v, {}}; }
+  static NcValue integer(double v) { return {Type::kInt, v, {}}; }  // whole, within kIntMin…kIntMax
+  // NC-PARAM-TYPE-1: INT is a 32-bit integer with sign.
+  static constexpr double kIntMin = -2147483648.0, kIntMax = 2147483647.0;
+  static bool fits_int(double v) { return v >= kIntMin && v <= kIntMax; }
   static NcValue boolean(bool v) { return {Type::kBool, v ? 1.0 : 0.0, {}}; }
   static NcValue string(std::string s) { return {Type::kString, 0, std::move(s)}; }
   static NcValue frame(std::string chain) { return {Type::kFrame, 0, std::move(chain)}; }
