@@ -237,7 +237,8 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "PROP-KNIFE-1, then by the CI properties. The score, the killing check of every mutant and\n"
      << "every survivor's explanation are in [mutants.md](mutants.md).\n";
   md << "\n## Fuzzing\n\n"
-     << "The fuzz targets (`fuzz/`, built with ASan and UBSan) judge what they generate by the same\n"
+     << "The fuzz targets (`fuzz/`, built with ASan and UBSan, each stopping at its first report) judge\n"
+     << "what they generate by the same\n"
      << "comparison as the campaign (`props::replay`): `reader_fuzz` reads any bytes as NC text (the\n"
      << "reader must read them or reject them naming the line), `differential_fuzz` runs NC text or\n"
      << "generated contours through both engines. Every run, its executions and its findings (each in\n"

@@ -466,6 +466,17 @@ TEST(ProgramWords, TranslationScaleAndMirrorFrames) {
   EXPECT_THROW(read("SCALE X2 Y3\nG2 X10 Y0 CR=5\n"), InputError);  // an ellipse
   EXPECT_THROW(read("TRANS X10 G1 Y5\n"), InputError);
   EXPECT_THROW(read("G41 T1 D1\nTRANS X10\n"), InputError);
+  // An accumulated frame beyond the range of values is a reading error at its block, never a crash.
+  std::string grown;
+  for (int i = 0; i < 12; ++i) grown += "ASCALE X1000 Y1000\n";
+  for (const std::string& p : {grown, std::string("SCALE X1000\nASCALE X1000\nASCALE X1000\nATRANS X900000000\n")}) {
+    try {
+      read(p);
+      ADD_FAILURE() << "no error for " << p;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the frame is out of range"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // covers: NC-FRAME-3

@@ -85,7 +85,11 @@ bool ProgramReader::take_block(Block& out, int line) {
   out.notice.clear();
   out.notice_clause = {};
   out.insert = {};
-  resolve(out);
+  try {
+    resolve(out);
+  } catch (const std::overflow_error&) {  // the stages name their own; this is the net behind them
+    throw InputError(line, 1, "a value out of range: a position, offset or frame too large to hold exactly");
+  }
   if (w.program_end) end_line_ = line_;
   return true;
 }
@@ -315,8 +319,12 @@ void ProgramReader::resolve(Block& b) {
       fail("a frame instruction (TRANS, SCALE, MIRROR, …) must stand in a block of its own");
     if (state_.side != Side::kOff)
       fail("a frame change with tool radius compensation G41/G42 in force: deselect with G40 first (not simulated)");
-    apply_frame(w, w.plane ? *w.plane : state_.plane);
-    refresh_programmed();
+    try {
+      apply_frame(w, w.plane ? *w.plane : state_.plane);
+      refresh_programmed();
+    } catch (const std::overflow_error&) {  // e.g. ASCALE repeated in a loop
+      fail("the frame is out of range: its accumulated scale factor or translation is too large");
+    }
   }
   if (w.cw().pole) {
     if (w.motion || w.frame) fail("a pole (G110/G111/G112) stands in a block without motion or frame words");
