@@ -304,8 +304,11 @@ def main():
         t = time.perf_counter()
         svg_kb = peak_kb([a.cutcom, "run", spf, *md, "--format", "svg", "-o", "/dev/null"])
         svg_s = time.perf_counter() - t
-        memory.append((n, kb, svg_kb, svg_s))
-        print(f"peak memory, lines+arcs with CDON, {n} blocks: text {mb(kb)}, SVG {mb(svg_kb)} ({svg_s:.2f} s)")
+        # JSON with every decision traced: the lists after the path spill to a temporary file.
+        json_kb = peak_kb([a.cutcom, "run", spf, *md, "--format", "json", "--trace", "-o", "/dev/null"])
+        memory.append((n, kb, json_kb, svg_kb, svg_s))
+        print(f"peak memory, lines+arcs with CDON, {n} blocks: text {mb(kb)}, JSON with trace {mb(json_kb)}, "
+              f"SVG {mb(svg_kb)} ({svg_s:.2f} s)")
         os.remove(spf)
     ref_memory = []
     for cdon, lengths in ((False, a.ref_cdof_blocks), (True, a.ref_memory_blocks)):
@@ -406,9 +409,13 @@ def write_docs(rows, memory, ref_memory, pocket, engines, a):
               "## Memory", "",
               "cutcom's fast engine streams: its peak memory does not grow with the program "
               "(`cutcom run`, lines+arcs with CDON). The SVG picture keeps every element up to "
-              "20,000 of them, then polylines within a bound it states (at most 200,000 points).", "",
-              "| blocks | peak memory, text output | peak memory, SVG picture | SVG time (s) |", "|---|---|---|---|"]
-    lines += [f"| {n} | {mb(kb)} | {mb(svg_kb)} | {svg_s:.2f} |" for n, kb, svg_kb, svg_s in memory]
+              "20,000 of them, then polylines within a bound it states (at most 200,000 points). "
+              "JSON keeps its lists after the path (here every decision, `--trace`) in memory up to "
+              "1 MB each, then in a temporary file.", "",
+              "| blocks | peak memory, text output | peak memory, JSON with `--trace` | peak memory, SVG picture "
+              "| SVG time (s) |", "|---|---|---|---|---|"]
+    lines += [f"| {n} | {mb(kb)} | {mb(json_kb)} | {mb(svg_kb)} | {svg_s:.2f} |"
+              for n, kb, json_kb, svg_kb, svg_s in memory]
     if ref_memory:
         lines += ["", "ref keeps the blocks its window, look-ahead and approach still refer to (and a spare of "
                   "64), not the program: its peak memory does not grow with the program either "

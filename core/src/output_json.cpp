@@ -19,10 +19,7 @@ json point(const PathPoint& p) { return json::array({clean(p.x), clean(p.y), cle
 
 json block_ref(const std::optional<std::int64_t>& b) { return b ? json(*b) : json(nullptr); }
 
-void append(std::string& list, const json& item) {
-  if (!list.empty()) list += ",\n    ";
-  list += item.dump();
-}
+void append(SpillList& list, const json& item) { list.append(item.dump()); }
 }  // namespace
 
 JsonWriter::JsonWriter(std::ostream& out, std::string engine, bool with_trace) : out_(out), with_trace_(with_trace) {
@@ -178,8 +175,14 @@ void JsonWriter::finish() {
   out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
   buffer_.clear();
   out_ << (first_ ? "]" : "\n  ]");
-  auto list = [&](const char* key, const std::string& items) {
-    out_ << ",\n  \"" << key << "\": [" << (items.empty() ? "" : "\n    " + items + "\n  ") << "]";
+  auto list = [&](const char* key, const SpillList& items) {
+    out_ << ",\n  \"" << key << "\": [";
+    if (!items.empty()) {
+      out_ << "\n    ";
+      items.write_to(out_, ",\n    ");
+      out_ << "\n  ";
+    }
+    out_ << "]";
   };
   list("actions", actions_);
   list("alarms", alarms_);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cutcom/sink.hpp"
+#include "cutcom/spill_list.hpp"
 
 namespace cutcom {
 
@@ -41,8 +42,8 @@ class JsonWriter : public PathSink {
   bool with_trace_;
   bool first_ = true;
   std::string buffer_, text_;  // path elements not yet written; an origin's text (reused)
-  std::string actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
-  std::string error_;                                               // serialized object, if any
+  SpillList actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
+  std::string error_;                                             // serialized object, if any
 };
 
 class TextWriter : public PathSink {
