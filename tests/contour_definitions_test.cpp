@@ -229,6 +229,9 @@ TEST(ContourDefinitions, LinesByAngle) {
   EXPECT_NE(error_of("G0 X0 Y0\nG1 ANG=90 X5 F100\n").find("vertical"), std::string::npos);
   EXPECT_NE(error_of("G0 X0 Y0\nG1 ANG=30 F100\nM30\n").find("two-block"), std::string::npos);
   EXPECT_NE(error_of("G0 X0 Y0\nG1 ANG=30 X1 Y1 F100\n").find("given twice"), std::string::npos);
+  // Nearly parallel: a corner beyond the range of values is a reading error, not an internal one.
+  EXPECT_NE(error_of("G0 X0 Y0\nG1 ANG=0.000000001 F100\nX10 Y999999999 ANG=0\n").find("out of range"),
+            std::string::npos);
 }
 
 // covers: NC-CONTOUR-4

@@ -3,6 +3,8 @@
 // angle definition (ANG), and the full turns of a helix (TURN). Programs without them pass by.
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "contour_geometry.hpp"
 #include "cutcom/reader.hpp"
 
@@ -124,6 +126,8 @@ void ProgramReader::finish_pending(Block* next) {
       });
     } catch (const contour::ContourError& err) {
       fail(next->words.line, err.what);
+    } catch (const std::overflow_error&) {  // nearly parallel lines: the corner lies beyond any axis
+      fail(next->words.line, "the corner of the ANG definition lies out of range: the two lines are nearly parallel");
     }
     set_plane(p.end, ax, corner[0], corner[1]);
     p.words.axis[static_cast<std::size_t>(ax.abscissa)].present = true;
@@ -196,6 +200,8 @@ void ProgramReader::finish_pending(Block* next) {
            fmt::format("{} of {}/{}: {}", rounding ? "the rounding" : "the chamfer", named(p), named(*next), err.what));
     } catch (const std::domain_error&) {
       fail(p.words.line, "the rounding or chamfer has no solution at this corner");
+    } catch (const std::overflow_error&) {
+      fail(p.words.line, "the rounding or chamfer lies out of range");
     }
     // A cut whose two points fall on one grid point is shorter than the grid: inserted, a rounding
     // would read as a full circle (ARC rules: start = end), so nothing is.

@@ -30,6 +30,17 @@ bool is_drilling_cycle(const std::string& name) {
 ProgramReader::ProgramReader(std::istream& in, ModalState initial)
     : in_(in), interpreter_(in, this), state_(initial), effective_(initial) {}
 
+// The stages name their own values out of range (a position, a frame, a corner); this is the net
+// behind them, so that no value beyond what cutcom holds exactly ends a run as an internal error.
+template <typename Stage>
+void ProgramReader::out_of_range_is_an_error(Stage&& stage) {
+  try {
+    stage();
+  } catch (const std::overflow_error&) {
+    throw InputError(line_, 1, "a value out of range: a position, offset or frame too large to hold exactly");
+  }
+}
+
 bool ProgramReader::next(Block& out) {
   for (;;) {
     if (pop_ready(out)) {
@@ -38,7 +49,7 @@ bool ProgramReader::next(Block& out) {
     }
     if (!read_block(out)) {
       if (!pending_) return false;
-      finish_pending(nullptr);
+      out_of_range_is_an_error([&] { finish_pending(nullptr); });
       continue;
     }
     if (!pending_ && !needs_contour_stage(out)) {
@@ -46,7 +57,7 @@ bool ProgramReader::next(Block& out) {
       tool_tip_offset(out);
       return true;
     }
-    contour_stage(out);
+    out_of_range_is_an_error([&] { contour_stage(out); });
   }
 }
 
