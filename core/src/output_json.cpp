@@ -67,6 +67,11 @@ void append_key(std::string& out, std::string_view key) {  // "key": after a com
   out.append(key);
   out += "\":";
 }
+// ,"key": in one append where a key is known to follow another (the writer's hot path).
+template <std::size_t N>
+void append_next_key(std::string& out, const char (&comma_key_colon)[N]) {
+  out.append(comma_key_colon, N - 1);
+}
 }  // namespace
 
 void JsonWriter::element(const PathElement& e) {
@@ -74,28 +79,33 @@ void JsonWriter::element(const PathElement& e) {
   b += first_ ? "\n    {" : ",\n    {";
   first_ = false;
   const Origin& o = e.origin;
-  append_key(b, "block");
+  b += "\"block\":";
   if (o.block)
     text::append_integer(b, *o.block);
   else
     b += "null";
   bool arc = e.type == ElementType::kArc;
   if (arc) {
-    append_key(b, "ccw");
+    append_next_key(b, ",\"ccw\":");
     b += e.ccw ? "true" : "false";
-    append_key(b, "center");
+    append_next_key(b, ",\"center\":");
     append_point(b, e.center);
   }
-  append_key(b, "end");
+  append_next_key(b, ",\"end\":");
   append_point(b, e.end);
   if (!e.rapid) {
-    append_key(b, "feed");
-    append_string(b, e.feed.to_string());
+    append_next_key(b, ",\"feed\":");
+    if (e.feed != last_feed_ || last_feed_text_.empty()) {  // one feed runs over many elements
+      last_feed_ = e.feed;
+      last_feed_text_.clear();
+      append_string(last_feed_text_, e.feed.to_string());
+    }
+    b += last_feed_text_;
     if (e.feed_type == FeedType::kG95) append_key(b, "feed_type"), b += "\"G95\"";
   }
-  append_key(b, "line");
+  append_next_key(b, ",\"line\":");
   text::append_integer(b, o.line);
-  append_key(b, "origin");
+  append_next_key(b, ",\"origin\":");
   b += '{';
   bool inserted = o.insert.kind != InsertKind::kNone;  // NC-CONTOUR-*: an element the reader inserted
   if (inserted && o.insert.kind != InsertKind::kTurn)
@@ -114,11 +124,11 @@ void JsonWriter::element(const PathElement& e) {
   append_string(b, text_);
   if (inserted && o.insert.kind == InsertKind::kTurn) append_key(b, "turn"), text::append_integer(b, o.insert.turn);
   b += '}';
-  append_key(b, "rapid");
+  append_next_key(b, ",\"rapid\":");
   b += e.rapid ? "true" : "false";
-  append_key(b, "start");
+  append_next_key(b, ",\"start\":");
   append_point(b, e.start);
-  append_key(b, "type");
+  append_next_key(b, ",\"type\":");
   b += arc ? "\"arc\"" : "\"line\"";
   b += '}';
   written();

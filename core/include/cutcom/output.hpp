@@ -42,6 +42,8 @@ class JsonWriter : public PathSink {
   bool with_trace_;
   bool first_ = true;
   std::string buffer_, text_;  // path elements not yet written; an origin's text (reused)
+  Decimal last_feed_;          // the feed written last, and its JSON text
+  std::string last_feed_text_;
   SpillList actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
   std::string error_;                                             // serialized object, if any
 };
