@@ -187,8 +187,8 @@ std::set<std::string> evidence_of(const RunResult& ref) {
   for (const Alarm& a : ref.alarms) out.insert("alarm:" + std::string(a.clause));
   for (const Notice& n : ref.notices) out.insert("notice:" + std::string(n.clause));
   for (const PathElement& e : ref.path) {
-    out.insert("element:" + origin_kind_name(e.origin.kind));
-    if (e.origin.sar != SarMove::kNone) out.insert("sar:" + sar_move_name(e.origin.sar));
+    out.insert("element:" + std::string(origin_kind_name(e.origin.kind)));
+    if (e.origin.sar != SarMove::kNone) out.insert("sar:" + std::string(sar_move_name(e.origin.sar)));
     if (is_helix(e)) out.insert("helix");
   }
   if (!ref.actions.empty()) out.insert("actions");

@@ -4,7 +4,7 @@
 
 namespace cutcom {
 
-std::string origin_kind_name(OriginKind k) {
+std::string_view origin_kind_name(OriginKind k) {
   switch (k) {
     case OriginKind::kProgrammed:
       return "programmed";
@@ -88,7 +88,7 @@ void append_kind_description(std::string& out, const Origin& o) {
 }
 }  // namespace
 
-std::string sar_move_name(SarMove m) {
+std::string_view sar_move_name(SarMove m) {
   switch (m) {
     case SarMove::kNone:
       return "";
@@ -121,7 +121,7 @@ std::string describe(const Origin& o) {
   return text;
 }
 
-std::string insert_kind_name(InsertKind k) {
+std::string_view insert_kind_name(InsertKind k) {
   switch (k) {
     case InsertKind::kNone:
       return "";

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "cutcom/block.hpp"
 
@@ -56,10 +57,10 @@ struct ActionEvent {
   PathPoint at;
 };
 
-std::string origin_kind_name(OriginKind k);                  // "offset", "transition_circle", ...
+std::string_view origin_kind_name(OriginKind k);             // "offset", "transition_circle", ...
 std::string describe(const Origin& o);                       // "transition circle at corner N30/N40"
 void append_description(std::string& out, const Origin& o);  // the same, appended to `out`
-std::string sar_move_name(SarMove m);                        // "lead", "fast_infeed", ... ("" for kNone)
-std::string insert_kind_name(InsertKind k);                  // "rounding", "chamfer", "turn" ("" for kNone)
+std::string_view sar_move_name(SarMove m);                   // "lead", "fast_infeed", ... ("" for kNone)
+std::string_view insert_kind_name(InsertKind k);             // "rounding", "chamfer", "turn" ("" for kNone)
 
 }  // namespace cutcom
