@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -27,8 +28,9 @@ struct ProgramWithData {
   cutcom::MachineData md;
 };
 ProgramWithData read_program_with_data(const std::string& f) {
+  if (std::filesystem::is_directory(f)) throw FileError(fmt::format("'{}' is a directory, not an NC program", f));
   std::ifstream in(f);
-  if (!in) throw cutcom::MachineDataError(fmt::format("cannot open program '{}'", f));
+  if (!in) throw FileError(fmt::format("cannot open program '{}': {}", f, std::strerror(errno)));
   ProgramWithData p;
   p.text = read_all(in);
   std::filesystem::path md_file = std::filesystem::path(f).replace_extension(".md");
@@ -150,6 +152,10 @@ int certify_command(CertifyOptions& o) {
     std::cout << "; campaign " << o.campaign.seed << " case " << o.show << ", machine data: " << words << "\n"
               << program;
     return kDone;
+  }
+  if (o.merge.empty() && o.campaign.cases == 0 && o.campaign.seconds == 0) {  // it would never stop
+    std::cerr << "cutcom: --cases 0 runs until --time: give --time SECONDS, or a number of cases\n";
+    return kBadInput;
   }
   // The report's coverage table lists the spec's clauses: the folder must be there (run from the
   // repository, or name it), checked before a campaign runs.

@@ -9,6 +9,16 @@
 
 using namespace cutcom::cli;
 
+namespace {
+// CLI11's NonNegativeNumber names the largest double in its message; this one says what is meant.
+const CLI::Validator kNotNegative(
+    [](std::string& v) {
+      double d = 0;
+      return CLI::detail::lexical_cast(v, d) && d >= 0 ? std::string() : "'" + v + "' is not a number of 0 or more";
+    },
+    "0 or more");
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"cutcom: SINUMERIK 840D 2D tool radius compensation, exact reference and fast engine"};
   app.require_subcommand(1);
@@ -55,13 +65,13 @@ int main(int argc, char** argv) {
   CertifyOptions co;
   auto* certify =
       app.add_subcommand("certify", "certify fast against ref on generated programs (docs/certification.md)");
-  certify->add_option("--cases", co.campaign.cases, "cases in this shard (0: until --time)");
-  certify->add_option("--time", co.campaign.seconds, "stop after this many seconds");
+  certify->add_option("--cases", co.campaign.cases, "cases in this shard (0: until --time)")->check(kNotNegative);
+  certify->add_option("--time", co.campaign.seconds, "stop after this many seconds")->check(kNotNegative);
   certify
       ->add_option("--budget", co.campaign.budget,
                    "seconds one case may take (default 60; 0: no limit, all in this process); a case over "
                    "budget is recorded as over-budget, not compared")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNotNegative);
   certify->add_option("--seed", co.campaign.seed, "campaign seed (case k is the same program in any sharding)");
   certify->add_option("--shard", co.shard, "I/N: run cases k = I, I+N, I+2N, ... of the campaign");
   certify
@@ -88,7 +98,8 @@ int main(int argc, char** argv) {
       ->expected(1, -1);
   certify->add_option("--neighbours", co.neighbours, "--from: neighbours of each program (default 200)")
       ->check(CLI::Range(0L, 10'000'000L));
-  certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop");
+  certify->add_option("--show", co.show, "print the program of campaign case K (with --seed) and stop")
+      ->check(kNotNegative);
   // TOOL-FILE-1/2, NC-OFFSET-2, NC-PARAM-VAR-3, NC-PARAM-SUB-1: a user's programs need the control's data.
   certify->add_option("--tools", co.control.tool_files, "--replay/--from: tool-offset archive (as for run)");
   certify->add_option("--tool", co.control.tool_edges,

@@ -392,6 +392,19 @@ TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
 }
 
 // covers: CLI-2 PROP-CORPUS-1 PROP-FROM-1
+// A campaign that would never stop, or a negative count, is a usage error before anything runs.
+// covers: CLI-2
+TEST(Cli, CertifyRefusesCountsThatMakeNoCampaign) {
+  Result forever = sh("{ " + kCli + " certify --cases 0 --no-progress 2>&1; }");
+  EXPECT_EQ(forever.status, 2);
+  EXPECT_NE(forever.out.find("--cases 0 runs until --time"), std::string::npos) << forever.out;
+  for (const char* option : {"--cases -5", "--time -1", "--show -3", "--budget -2"}) {
+    Result r = sh("{ " + kCli + " certify " + option + " --no-progress 2>&1; }");
+    EXPECT_EQ(r.status, 2) << option;
+    EXPECT_NE(r.out.find("is not a number of 0 or more"), std::string::npos) << option << ": " << r.out;
+  }
+}
+
 TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
   const std::string src = CUTCOM_SOURCE_DIR, dir = CUTCOM_BINARY_DIR;
   // A corpus case: a knife edge of TRC-CD-3 (its MD20240 = 2 read from the .md beside it) after
@@ -416,6 +429,10 @@ TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
   Result missing = sh("{ " + kCli + " certify --replay " + dir + "/no-such-program.mpf 2>&1; }");
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.out.find("cannot open program"), std::string::npos) << missing.out;
+  EXPECT_EQ(missing.out.find("machine data"), std::string::npos) << missing.out;  // a program, not a datum
+  Result folder = sh("{ " + kCli + " certify --replay " + dir + " 2>&1; }");
+  EXPECT_EQ(folder.status, 2);
+  EXPECT_NE(folder.out.find("is a directory, not an NC program"), std::string::npos) << folder.out;
   // A program whose tool lives in the control's table: certified with the table given as for run;
   // without it the error names the program.
   std::string named = dir + "/certify-named-tool.mpf";

@@ -36,6 +36,18 @@ TEST(MachineData, SetByNumberOrNameAndValidated) {
   EXPECT_THROW(md.set("MD20204", "-1"), MachineDataError);
   EXPECT_THROW(md.set("MD99999", "1"), MachineDataError);
   EXPECT_THROW(md.set_assignment("MD20204"), MachineDataError);
+  // The message says what is wrong with a number: out of range, too many decimals, not a number.
+  auto message = [&](const char* name, const char* value) {
+    try {
+      md.set(name, value);
+    } catch (const MachineDataError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("MD20240", "99999999999999").find("out of range (1 .. 50)"), std::string::npos);
+  EXPECT_NE(message("MD20204", "0.0000000001").find("more than nine decimals"), std::string::npos);
+  EXPECT_NE(message("MD20204", "x").find("is not a decimal number"), std::string::npos);
 }
 
 TEST(MachineData, FileErrorsNameTheLine) {

@@ -66,6 +66,10 @@ const MachineDatumInfo& lookup(std::string_view name) {
 
 Decimal decimal_in(const MachineDatumInfo& d, std::string_view text, Decimal lo, std::optional<Decimal> hi) {
   auto r = Decimal::parse(trim(text));
+  if (!r.value && r.error == Decimal::ParseError::kOutOfRange)
+    throw MachineDataError(fmt::format("{} = {} is out of range ({})", d.id, trim(text), d.range));
+  if (!r.value && r.error == Decimal::ParseError::kTooManyDecimals)
+    throw MachineDataError(fmt::format("{}: '{}' has more than nine decimals", d.id, text));
   if (!r.value) throw MachineDataError(fmt::format("{}: '{}' is not a decimal number", d.id, text));
   if (*r.value < lo || (hi && *r.value > *hi))
     throw MachineDataError(fmt::format("{} = {} is out of range ({})", d.id, r.value->to_string(), d.range));
