@@ -277,3 +277,47 @@ TEST(ArcExamples, FullCircleCutARoundingPastItsStartStaysAWholeTurn) {
 
 }  // namespace
 }  // namespace cutcom::test
+
+namespace cutcom::test {
+namespace {
+
+std::vector<std::string> corner_kinds(const RunResult& r) {
+  std::vector<std::string> kinds;
+  for (const auto& d : r.decisions)
+    if (d.clause == "TRC-CORNER-1") kinds.emplace_back(d.branch);
+  return kinds;
+}
+
+// covers: TRC-CORNER-1
+TEST(ArcExamples, TangentCornersAtCirclesWithACentreAreExactInBothEngines) {
+  // A line along (3.217, 4.289), a ccw circle tangent to it (centre on its left normal, I/J the
+  // normal itself), a line leaving along the circle's end tangent (-4.289, 3.217). In doubles the
+  // tangents differ by a rounding (fast once took both corners as outer, with slivers of circle);
+  // as integer vectors they are parallel: both engines decide tangent.
+  Runs r =
+      run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X3.217 Y4.289\nN40 G3 X2.145 Y11.795 I-4.289 J3.217\n"
+                       "N50 G1 X-2.144 Y15.012\nN60 G40 X-10 Y15\n",
+                       "0.5"));
+  EXPECT_EQ(corner_kinds(r.fast), (std::vector<std::string>{"tangent", "tangent"}));
+  EXPECT_EQ(corner_kinds(r.ref), corner_kinds(r.fast));
+  // A centre a little off (I-4.29: the end lies 0.0008 off its circle, within MD21000) is moved
+  // onto the chord's bisector (ARC-CENTRE-1): then the circle meets the line at an angle, and
+  // both engines see the same kind at the first corner.
+  Runs off =
+      run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X3.217 Y4.289\nN40 G3 X2.145 Y11.795 I-4.29 J3.217\n"
+                       "N50 G1 X-2.144 Y15.012\nN60 G40 X-10 Y15\n",
+                       "0.5"));
+  ASSERT_FALSE(corner_kinds(off.ref).empty());
+  EXPECT_NE(corner_kinds(off.ref)[0], "tangent");
+  EXPECT_EQ(corner_kinds(off.fast), corner_kinds(off.ref));
+  // A full circle after a line tangent to it, and the line after it.
+  Runs full =
+      run_both(program("N20 G1 G41 X0 Y0 F100\nN30 X3.217 Y4.289\nN40 G3 X3.217 Y4.289 I-4.289 J3.217\n"
+                       "N50 G1 X6.434 Y8.578\nN60 G40 X10 Y0\n",
+                       "0.5"));
+  EXPECT_EQ(corner_kinds(full.fast), (std::vector<std::string>{"tangent", "tangent"}));
+  EXPECT_EQ(corner_kinds(full.ref), corner_kinds(full.fast));
+}
+
+}  // namespace
+}  // namespace cutcom::test

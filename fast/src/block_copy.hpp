@@ -149,6 +149,7 @@ struct PlaneOverride {
     if (start) c.start = xyz_in(start_ab, h_in(c.start, a), a);
     if (end) c.end = xyz_in(end_ab, h_in(c.end, a), a);
     if (circle) c.arc = true, c.has_centre = true, c.centre = xyz_in(centre, h_in(c.start, a), a), c.sense = sense;
+    if (start || end || circle) c.exact = false;  // `delta` and `to_centre` are the decimals' no more
     c.tangent_after = tangent_after, c.tangent_before = tangent_before;
   }
 };

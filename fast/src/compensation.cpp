@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "arc_check.hpp"
+#include "exact_tangent.hpp"
 
 namespace cutcom::fast {
 
@@ -207,16 +208,21 @@ void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& 
     c.kind = Corner::Kind::kTangent, c.sine = 0;
     return;
   }
-  if (first.arc || second.arc || !first.exact || !second.exact) return;
-  std::optional<ExactProducts> p = exact_products(first.delta, second.delta);
-  if (!p) return;
-  Int128 cr = p->cross, dt = p->dot;
-  if (cr == 0) {
-    c.kind = dt > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
+  // Lines and circles with a centre: the tangents are integer vectors (exact_tangent.hpp).
+  std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
+  if (!t1 || !t2) return;  // a CR= circle, a SAR block, beyond the range: the double decision stands
+  int cross = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
+  int dot = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
+  if (cross == 0) {
+    c.kind = dot > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
     c.sine = 0;
-  } else {
-    c.kind = (cr > 0) == (s > 0) ? Corner::Kind::kInner : Corner::Kind::kOuter;
+    return;
   }
+  c.kind = (cross > 0) == (s > 0) ? Corner::Kind::kInner : Corner::Kind::kOuter;
+  // The margin stays fast's double sine; where rounding gave it the other sign or 0, it is the
+  // smallest double of the exact sign, so that branch and margin agree (PROP-BOUNDARY-1).
+  double sign = c.kind == Corner::Kind::kInner ? 1.0 : -1.0;
+  if (!(c.sine * sign > 0)) c.sine = sign * std::numeric_limits<double>::denorm_min();
 }
 
 std::optional<Compensation::ExactProducts> Compensation::exact_products(const std::array<Int128, 3>& t,

@@ -1,0 +1,28 @@
+// TRC-CORNER-1 exactly where ref decides it in rationals: at lines and at circles with a centre
+// (I/J/K, and the centres the reader puts on the grid). A corner's kind is the sign of the cross
+// and dot products of two tangents; each tangent is an integer vector (units of 1e-9 mm) times a
+// positive factor, and the products are taken in 256 bits. Private to fast.
+#pragma once
+
+#include <optional>
+
+#include "block_copy.hpp"
+
+namespace cutcom::fast {
+
+struct IntVec {
+  Int128 a = 0, b = 0;
+};
+
+// The sign of p·q − r·t, exactly (each product in 256 bits).
+int sign_of_difference(Int128 p, Int128 q, Int128 r, Int128 t);
+
+// The tangent of `c` at its start (or end) in the plane `axes`, exactly, times a positive factor:
+// a line's displacement d; a circle's σ·perp(P − c') times 2|d|², c' the programmed centre moved
+// onto the chord's bisector as ref does (ARC-CENTRE-1):
+//   start: σ·(2 n d − |d|² perp d),  end: σ·(2 n d + |d|² perp d),  n = (c − start)·perp d;
+// a full circle's (d = 0) σ·perp(start − c). nullopt where it is not exact: a CR= circle, a SAR
+// block, components of d or c − start from 2^40 units (1,099 mm) on (the products would not fit).
+std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_end);
+
+}  // namespace cutcom::fast

@@ -1,0 +1,64 @@
+// fast's exact corner products (fast/src/exact_tangent.hpp) against GMP's integers.
+#include "../fast/src/exact_tangent.hpp"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace cutcom::fast {
+namespace {
+
+mpz_class big(Int128 v) {
+  bool negative = v < 0;
+  unsigned __int128 m = negative ? static_cast<unsigned __int128>(0) - static_cast<unsigned __int128>(v)
+                                 : static_cast<unsigned __int128>(v);
+  mpz_class r = static_cast<unsigned long>(m >> 64);
+  r <<= 64;
+  r += static_cast<unsigned long>(m & ~0ul);
+  return negative ? mpz_class(-r) : r;
+}
+
+// covers: TRC-CORNER-1
+TEST(ExactTangent, SignOfADifferenceOfProductsIsExactIn256Bits) {
+  std::mt19937_64 g(20261128);
+  auto value = [&](int bits) {
+    Int128 v = (static_cast<Int128>(g()) << 64 | g()) & ((Int128(1) << bits) - 1);
+    return g() % 2 ? -v : v;
+  };
+  for (int k = 0; k < 200000; ++k) {
+    int bits = 1 + static_cast<int>(g() % 126);
+    Int128 p = value(bits), q = value(bits), r = value(bits), t = value(bits);
+    if (k % 3 == 0) r = q, t = p;           // equal products: the tie
+    if (k % 5 == 0) t += g() % 2 ? 1 : -1;  // (with the tie above: a product one factor off it)
+    mpz_class d = big(p) * big(q) - big(r) * big(t);
+    ASSERT_EQ(sign_of_difference(p, q, r, t), sgn(d)) << k;
+  }
+}
+
+// covers: TRC-CORNER-1
+TEST(ExactTangent, ATangentIsTheRadiusTurnedAQuarterInTheSenseOfTravel) {
+  BlockCopy arc;
+  arc.arc = true, arc.has_centre = true, arc.sense = 1;  // ccw from (10,0) to (0,10) about (0,0)
+  arc.delta = {-10, 10, 0}, arc.to_centre = {-10, 0, 0};
+  PlaneAxes xy{0, 1, 2};
+  auto s = exact_tangent(arc, xy, false), e = exact_tangent(arc, xy, true);
+  ASSERT_TRUE(s && e);
+  EXPECT_TRUE(s->a == 0 && s->b > 0);  // +Y at the start
+  EXPECT_TRUE(e->a < 0 && e->b == 0);  // -X at the end
+  arc.sense = -1;                      // the same points clockwise (the long way): reversed
+  s = exact_tangent(arc, xy, false);
+  EXPECT_TRUE(s->a == 0 && s->b < 0);
+  arc.has_centre = false;  // CR=: not exact
+  EXPECT_FALSE(exact_tangent(arc, xy, false));
+  arc.has_centre = true, arc.to_centre = {Int128(1) << 41, 0, 0};  // beyond 2^40 units
+  EXPECT_FALSE(exact_tangent(arc, xy, false));
+  BlockCopy line;
+  line.delta = {3, 4, 0};
+  EXPECT_TRUE(exact_tangent(line, xy, true)->a == 3);
+  line.exact = false;  // a SAR block's points are not its decimals
+  EXPECT_FALSE(exact_tangent(line, xy, true));
+}
+
+}  // namespace
+}  // namespace cutcom::fast
