@@ -31,6 +31,21 @@ TEST(ApproachRetraction, KontInFrontOrOnTheLineIsNorm) {
   EXPECT_EQ(front.ref.decisions[2].margin_exact, "7");
 }
 
+// covers: TRC-KONT-1
+TEST(ApproachRetraction, KontOnTheTangentLineOfACircleIsInFrontInBothEngines) {
+  // N30 is a ccw circle about S + (5.726, 8.917): its tangent at S = (-2.202, 9.42) is
+  // (8.917, -5.726), and the start (-20.036, 20.872) = S - 2 (8.917, -5.726) lies exactly on that
+  // line: in front (TRC-KONT-1's boundary rule), NORM. In doubles the start lay a rounding behind
+  // it for fast, which travelled around S; the exact tangent decides as ref does.
+  Runs r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.5\nN10 G0 X-20.036 Y20.872 T1 D1\nN20 G1 G41 KONT X-2.202 Y9.420 F100\n"
+      "N30 G3 X12.441 Y12.611 I5.726 J8.917\nN40 G40 NORM G1 X32.441 Y32.611\n");
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-1", "in-front"));
+    EXPECT_FALSE(has_decision(*x, "TRC-KONT-1", "behind"));
+  }
+}
+
 // covers: TRC-KONT-1 TRC-KONT-3 TRC-CORNER-4
 TEST(ApproachRetraction, ProgrammingManualExampleWithKontAndG450) {
   // Digest §7 (PGA19 p.269, PGA04 p.8-39) as printed, r = 5 assumed. N40 runs +Y from S = (10,10);

@@ -262,8 +262,10 @@ class Compensation {
   // The sign of |u|^2 - r^2 in the plane for an exact displacement u, if in range.
   std::optional<int> exact_room_sign(const std::array<Int128, 3>& u) const;
 
-  // The sign of cross(t, k * u) for exact integer displacements t and u (k = +-1), if they are in range.
-  std::optional<int> exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u, int k) const;
+  // TRC-KONT-1's side exactly: the sign of cross(t, k * u), t the exact tangent of `block` at its
+  // start or end (a line's displacement, a circle's as TRC-CORNER-1), u an exact displacement
+  // (k = +-1); nullopt where either is not exact or out of range.
+  std::optional<int> exact_side(const BlockCopy& block, bool at_end, const std::array<Int128, 3>& u, int k) const;
 
   // TRC-KONT-1: behind = strictly on the far side of the contour's tangent line from the
   // compensation side; TRC-KONT-2: then not inside the circle of radius r about the vertex.

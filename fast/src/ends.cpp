@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "compensation.hpp"
+#include "exact_tangent.hpp"
 
 namespace cutcom::fast {
 
@@ -38,8 +39,7 @@ void Compensation::approach(const Block& b) {
   if (selection.kont) {
     // TRC-KONT-1: the corner of the approach line (start -> S) with the first block.
     Kont k{e.start, ab(selection.start), e.start - ab(selection.start), e.start_tangent(), std::nullopt, std::nullopt};
-    if (!selection_from_tool && !e.arc && first.exact && selection.exact)
-      k.exact_sign = exact_cross_sign(first.delta, selection.delta, -1);
+    if (!selection_from_tool && selection.exact) k.exact_sign = exact_side(first, false, selection.delta, -1);
     if (!selection_from_tool && selection.exact) k.exact_room = exact_room_sign(selection.delta);
     if (kont_behind(selection, k, k.d2, 10755)) return approach_around(first, e, radius, k);
     if (trace.stopped()) return;
@@ -73,11 +73,12 @@ void Compensation::flush_approach() {
   approach_dummy_count = 0;
 }
 
-std::optional<int> Compensation::exact_cross_sign(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u,
-                                                  int k) const {
-  std::optional<ExactProducts> p = exact_products(t, u);
-  if (!p) return std::nullopt;
-  return k * ((p->cross > 0) - (p->cross < 0));
+std::optional<int> Compensation::exact_side(const BlockCopy& block, bool at_end, const std::array<Int128, 3>& u,
+                                            int k) const {
+  std::optional<IntVec> t = exact_tangent(block, axes, at_end);  // a line's displacement, a circle's tangent
+  Int128 ua = u[static_cast<std::size_t>(axes.abscissa)], ub = u[static_cast<std::size_t>(axes.ordinate)];
+  if (!t || !in_exact_range(ua) || !in_exact_range(ub)) return std::nullopt;
+  return k * sign_of_difference(t->a, ub, t->b, ua);
 }
 
 bool Compensation::kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent,
@@ -163,7 +164,7 @@ void Compensation::retract_edge(const Block& b) {
   if (d.kont) {  // TRC-KONT-1/2, then TRC-EDGE-6
     Vec2 p = ab(d.end);
     Kont k{last.end, p, last.end_tangent(), p - last.end, std::nullopt, std::nullopt};
-    if (!last.arc && last_block->exact && d.exact) k.exact_sign = exact_cross_sign(last_block->delta, d.delta, 1);
+    if (d.exact) k.exact_sign = exact_side(*last_block, true, d.delta, 1);
     if (d.exact) k.exact_room = exact_room_sign(d.delta);
     if (kont_behind(d, k, k.d1, 10756)) return retract_edge_around(d, *last_block, k);
     if (trace.stopped()) return;
@@ -273,7 +274,7 @@ void Compensation::deselect(const Block& b) {
   if (last.kont) {
     Vec2 p = ab(last.end);
     Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt, std::nullopt};
-    if (!open_el.arc && open.exact && last.exact) k.exact_sign = exact_cross_sign(open.delta, last.delta, 1);
+    if (last.exact) k.exact_sign = exact_side(open, true, last.delta, 1);
     if (last.exact) k.exact_room = exact_room_sign(last.delta);
     if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
     if (trace.stopped()) return;
