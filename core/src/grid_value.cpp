@@ -200,10 +200,20 @@ int Interval::sign() const {
 }
 bool Interval::is_point() const { return mpfr_equal_p(&value->left, &value->right) != 0; }
 
+namespace {
+// An MPFR number freed however its scope is left (a value out of range throws from the middle).
+struct ScratchNumber {
+  mpfr_t v;
+  explicit ScratchNumber(mpfr_prec_t precision) { mpfr_init2(v, precision); }
+  ~ScratchNumber() { mpfr_clear(v); }
+  ScratchNumber(const ScratchNumber&) = delete;
+  ScratchNumber& operator=(const ScratchNumber&) = delete;
+};
+}  // namespace
+
 bool detail::round_all(const Interval* values, std::size_t n, Decimal* out, bool last) {
-  mpfr_t lo, hi;
-  mpfr_init2(lo, current_precision + 64);
-  mpfr_init2(hi, current_precision + 64);
+  ScratchNumber lo_number(current_precision + 64), hi_number(current_precision + 64);
+  mpfr_ptr lo = lo_number.v, hi = hi_number.v;
   bool decided = true;
   for (std::size_t k = 0; k < n && decided; ++k) {
     // Units of 10^-9: multiply the end points, rounding outwards.
@@ -228,8 +238,6 @@ bool detail::round_all(const Interval* values, std::size_t n, Decimal* out, bool
       throw std::overflow_error("NC-GRID-1: value out of range");
     out[k] = Decimal::from_units(units);
   }
-  mpfr_clear(lo);
-  mpfr_clear(hi);
   return decided;
 }
 
