@@ -33,11 +33,11 @@ ProgramReader::ProgramReader(std::istream& in, ModalState initial)
 // The stages name their own values out of range (a position, a frame, a corner); this is the net
 // behind them, so that no value beyond what cutcom holds exactly ends a run as an internal error.
 template <typename Stage>
-void ProgramReader::out_of_range_is_an_error(Stage&& stage) {
+void ProgramReader::out_of_range_is_an_error(int line, Stage&& stage) {
   try {
     stage();
   } catch (const std::overflow_error&) {
-    throw InputError(line_, 1, "a value out of range: a position, offset or frame too large to hold exactly");
+    throw InputError(line, 1, "a value out of range: a position, offset or frame too large to hold exactly");
   }
 }
 
@@ -49,7 +49,7 @@ bool ProgramReader::next(Block& out) {
     }
     if (!read_block(out)) {
       if (!pending_) return false;
-      out_of_range_is_an_error([&] { finish_pending(nullptr); });
+      out_of_range_is_an_error(line_, [&] { finish_pending(nullptr); });
       continue;
     }
     if (!pending_ && !needs_contour_stage(out)) {
@@ -57,7 +57,7 @@ bool ProgramReader::next(Block& out) {
       tool_tip_offset(out);
       return true;
     }
-    out_of_range_is_an_error([&] { contour_stage(out); });
+    out_of_range_is_an_error(line_, [&] { contour_stage(out); });
   }
 }
 
@@ -96,11 +96,7 @@ bool ProgramReader::take_block(Block& out, int line) {
   out.notice.clear();
   out.notice_clause = {};
   out.insert = {};
-  try {
-    resolve(out);
-  } catch (const std::overflow_error&) {  // the stages name their own; this is the net behind them
-    throw InputError(line, 1, "a value out of range: a position, offset or frame too large to hold exactly");
-  }
+  out_of_range_is_an_error(line, [&] { resolve(out); });
   if (w.program_end) end_line_ = line_;
   return true;
 }

@@ -216,9 +216,9 @@ class Compensation {
   bool close_open(Vec2& end_point, const BlockPlace& alarm_at, bool at_normal_end = false,
                   const Candidate* candidate = nullptr);
 
-  // TRC-CORNER-1 for two straight blocks, exactly: their displacements are whole numbers of
-  // 1e-9 mm, and while each component stays below 2^62 the cross and dot products fit in 128 bits.
-  // Tangency and reversal are then seen as ref sees them, not as a 1e-17 remainder.
+  // TRC-LOOK-2's parallel lines, exactly: two programmed displacements are whole numbers of
+  // 1e-9 mm, and while each component stays below 2^62 their products fit in 128 bits (corner
+  // kinds use exact_tangent.hpp, which covers circles too).
   struct ExactProducts {
     Int128 cross, dot;
   };

@@ -50,7 +50,7 @@ std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_
   const auto ia = static_cast<std::size_t>(axes.abscissa), io = static_cast<std::size_t>(axes.ordinate);
   IntVec d{c.delta[ia], c.delta[io]};
   if (!c.arc) {  // a line: its displacement (TRC-CORNER-1 between straight blocks: below 2^62)
-    if (!below(d.a, 62) || !below(d.b, 62)) return std::nullopt;
+    if (!in_exact_range(d.a) || !in_exact_range(d.b)) return std::nullopt;
     return d;
   }
   if (!c.has_centre) return std::nullopt;      // CR=: the centre is irrational (ref decides it with roots)

@@ -171,7 +171,7 @@ class ProgramReader final : public BlockSource, private SystemValues {
   void contour_stage(Block& b);
   void finish_pending(Block* next);
   template <typename Stage>
-  void out_of_range_is_an_error(Stage&& stage);
+  void out_of_range_is_an_error(int line, Stage&& stage);
   void push_ready(Block&& b);
   bool pop_ready(Block& out);
   // TOOL-TURN-1: the compensated contour moved to where a turning tool's tip runs; the cutting
