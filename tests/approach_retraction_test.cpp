@@ -46,6 +46,21 @@ TEST(ApproachRetraction, KontOnTheTangentLineOfACircleIsInFrontInBothEngines) {
   }
 }
 
+// covers: TRC-KONT-1 ARC-CR-1
+TEST(ApproachRetraction, KontOnTheTangentLineOfACrCircleIsInFrontInBothEngines) {
+  // N30 is a cw CR= circle whose tangent at S = (84.298, 76.813) runs along (-10.788, -31.465);
+  // the start S - (-10.788, -31.465) lies exactly on that line. The tangent carries the centre's
+  // square root: in doubles the start lay 1.4e-14 mm behind it for fast; with the root, in front
+  // as ref decides (TRC-KONT-1's boundary rule).
+  Runs r = run_both(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.5\nN10 G0 X95.086 Y108.278 T1 D1\nN20 G1 G42 KONT X84.298 Y76.813 F100\n"
+      "N30 G2 X81.8707 Y72.2281 CR=16.6315\nN40 G1 X61.9129 Y45.6177\nN50 G40 NORM G1 X50 Y40\n");
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-KONT-1", "in-front"));
+    EXPECT_FALSE(has_decision(*x, "TRC-KONT-1", "behind"));
+  }
+}
+
 // covers: TRC-KONT-1 TRC-KONT-3 TRC-CORNER-4
 TEST(ApproachRetraction, ProgrammingManualExampleWithKontAndG450) {
   // Digest §7 (PGA19 p.269, PGA04 p.8-39) as printed, r = 5 assumed. N40 runs +Y from S = (10,10);

@@ -319,5 +319,28 @@ TEST(ArcExamples, TangentCornersAtCirclesWithACentreAreExactInBothEngines) {
   EXPECT_EQ(corner_kinds(full.ref), corner_kinds(full.fast));
 }
 
+// covers: TRC-CORNER-1 ARC-CR-1
+TEST(ArcExamples, TangentCornersAtCrCirclesAreExactInBothEngines) {
+  // A line along (-10.788, -31.465), a cw CR= circle tangent to it (a 3-4-5 and an 8-15-17
+  // triangle place its centre and end), a line leaving along its end tangent. The centre carries
+  // a square root; in doubles fast took the corners as outer and inner, with a sliver of
+  // transition circle at the first. Decided with the root (fast/src/root_tangent.hpp): tangent.
+  Runs r =
+      run_both(program("N20 G1 G42 X95.086 Y108.278 F100\nN30 X84.298 Y76.813\n"
+                       "N40 G2 X81.8707 Y72.2281 CR=16.6315\nN50 G1 X61.9129 Y45.6177\nN60 G40 X50 Y40\n",
+                       "0.4"));
+  EXPECT_EQ(corner_kinds(r.fast), (std::vector<std::string>{"tangent", "tangent"}));
+  EXPECT_EQ(corner_kinds(r.ref), corner_kinds(r.fast));
+  // The same circle the long way round (CR=-16.6315): its centre on the other side of the chord,
+  // the line meets it at an angle; both engines see the same kinds.
+  Runs other =
+      run_both(program("N20 G1 G42 X95.086 Y108.278 F100\nN30 X84.298 Y76.813\n"
+                       "N40 G2 X81.8707 Y72.2281 CR=-16.6315\nN50 G1 X61.9129 Y45.6177\nN60 G40 X50 Y40\n",
+                       "0.4"));
+  ASSERT_FALSE(corner_kinds(other.ref).empty());
+  EXPECT_NE(corner_kinds(other.ref)[0], "tangent");
+  EXPECT_EQ(corner_kinds(other.fast), corner_kinds(other.ref));
+}
+
 }  // namespace
 }  // namespace cutcom::test

@@ -14,6 +14,17 @@
 
 namespace cutcom::fast {
 
+namespace {
+// How many roundings a tangent computed in double may turn by, roughly: the magnitude of the
+// block's coordinates over its size (a line's length, a circle's radius); infinite for size 0.
+double scale_over_size(const BlockCopy& c, PlaneAxes a) {
+  Vec2 s = ab_in(c.start, a), e = ab_in(c.end, a);
+  double scale = std::max({std::fabs(s.a), std::fabs(s.b), std::fabs(e.a), std::fabs(e.b), std::fabs(c.cr)});
+  double size = !c.arc ? norm(e - s) : c.has_centre ? norm(s - ab_in(c.centre, a)) : std::fabs(c.cr);
+  return scale / size;
+}
+}  // namespace
+
 void Compensation::compensation_off(const Block& b) {
   if (b.state.side != Side::kOff) {
     if (b.is_arc()) return raise(10753, b.words);  // TRC-SEL-2
@@ -210,9 +221,19 @@ void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& 
   }
   // Lines and circles with a centre: the tangents are integer vectors (exact_tangent.hpp).
   std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
-  if (!t1 || !t2) return;  // a CR= circle, a SAR block, beyond the range: the double decision stands
-  int cross = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
-  int dot = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
+  int cross = 0, dot = 0;
+  if (t1 && t2) {
+    cross = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
+    dot = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
+  } else {
+    // A CR= circle (its tangent carries a root) or a tangent beyond the 256-bit range: in GMP's
+    // integers (root_tangent.hpp), where the double sine is too small to be sure of.
+    if (!first.exact || !second.exact) return;  // a SAR block: the double decision stands
+    if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first, axes) + scale_over_size(second, axes))) return;
+    std::optional<RootTangents::Signs> signs = root_tangents.corner(first, second, axes);
+    if (!signs) return;
+    cross = signs->cross, dot = signs->dot;
+  }
   if (cross == 0) {
     c.kind = dot > 0 ? Corner::Kind::kTangent : Corner::Kind::kReversal;
     c.sine = 0;

@@ -21,6 +21,7 @@
 #include "cutcom/programmed_decisions.hpp"
 #include "edge_strategy.hpp"
 #include "plane_geometry.hpp"
+#include "root_tangent.hpp"
 
 namespace cutcom::fast {
 
@@ -110,6 +111,7 @@ class Compensation {
     Element element;
   };
   mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
+  mutable RootTangents root_tangents;                // decide_kind_exactly's and exact_side's GMP numbers
   int prev_slot = 0;
   bool has_prev = false;
   EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until

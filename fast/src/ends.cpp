@@ -77,8 +77,11 @@ std::optional<int> Compensation::exact_side(const BlockCopy& block, bool at_end,
                                             int k) const {
   std::optional<IntVec> t = exact_tangent(block, axes, at_end);  // a line's displacement, a circle's tangent
   Int128 ua = u[static_cast<std::size_t>(axes.abscissa)], ub = u[static_cast<std::size_t>(axes.ordinate)];
-  if (!t || !in_exact_range(ua) || !in_exact_range(ub)) return std::nullopt;
-  return k * sign_of_difference(t->a, ub, t->b, ua);
+  if (t && in_exact_range(ua) && in_exact_range(ub)) return k * sign_of_difference(t->a, ub, t->b, ua);
+  // A CR= circle's tangent carries a root (once per approach or retraction: GMP's integers).
+  std::optional<int> sign = root_tangents.side(block, at_end, axes, u);
+  if (!sign) return std::nullopt;
+  return k * *sign;
 }
 
 bool Compensation::kont_side(const BlockCopy& at_block, Vec2 vertex, Vec2 point, Vec2 tangent,

@@ -3,7 +3,7 @@
 namespace cutcom::fast {
 
 namespace {
-using U128 = unsigned __int128;
+__extension__ typedef unsigned __int128 U128;
 
 struct U256 {
   U128 high = 0, low = 0;
