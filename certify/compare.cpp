@@ -132,6 +132,24 @@ bool decided_exactly_at_zero(const Decision& d) {
           (d.clause == "TRC-CD-2" && (d.branch == "collapsed" || d.branch == "after-collapse")));
 }
 
+// PROP-DIFF-1: fast decides TRC-CORNER-1 and TRC-KONT-1 exactly wherever the tangents and the
+// start are programmed decimals (lines, I/J/K and CR= circles): an exact tie there is no knife
+// edge. Only at or next to a block about which fast computes points (a SAR block, a side change)
+// may it take the other branch at ref's margin of exactly 0. Blocks unknown: as before.
+bool decided_on_decimals(const Decision& d, const Tolerance& tol) {
+  if (d.margin_exact != "0" || (d.clause != "TRC-CORNER-1" && d.clause != "TRC-KONT-1") || tol.plane_lines.empty())
+    return false;
+  const std::vector<int>& p = tol.plane_lines;
+  auto computed = [&](int line) {
+    return std::binary_search(tol.computed_lines.begin(), tol.computed_lines.end(), line);
+  };
+  auto at = static_cast<std::size_t>(std::lower_bound(p.begin(), p.end(), d.line) - p.begin());
+  if (computed(d.line) || (at > 0 && computed(p[at - 1]))) return false;
+  for (std::size_t k = at; k < p.size() && k <= at + 1; ++k)
+    if (computed(p[k])) return false;
+  return true;
+}
+
 // The sign of a decision's margin: fast's double, or ref's text whose sign is exact ("0" only
 // for an exact tie). Empty for a NaN, which no rule admits.
 std::optional<int> margin_sign(const Decision& d) {
@@ -251,7 +269,8 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   };
   // ref's margin lies inside the clause's band: either branch is legitimate (PROP-DIFF-1).
   auto in_band = [&](const Decision& d) {
-    return d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause) && !decided_exactly_at_zero(d);
+    return d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause) && !decided_exactly_at_zero(d) &&
+           !decided_on_decimals(d, tol);
   };
   std::size_t ir = 0, jf = 0, resumed_at = 0;
   for (;; ++ir, ++jf) {

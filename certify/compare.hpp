@@ -33,6 +33,9 @@ struct Conditioning {
   int window = 3;                 // MD20240: blocks the look-ahead and CDON see ahead
   std::vector<int> plane_lines;   // lines of the blocks that move in the plane, ascending
   std::vector<int> circle_lines;  // of those, the circles and the SAR blocks (whose element may be one)
+  // Blocks about which fast computes points in double: SAR blocks (their elements, and the points
+  // of the blocks next to them) and side changes (TRC-SIDE-1: the approach from the tool).
+  std::vector<int> computed_lines;
 };
 // `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)
 // may intersect two blocks' equidistants.
@@ -54,7 +57,8 @@ struct Tolerance {
   // look-ahead and CDON count them.
   int window = 4;
   std::vector<int> plane_lines;
-  std::vector<int> circle_lines;  // Conditioning::circle_lines, ascending
+  std::vector<int> circle_lines;    // Conditioning::circle_lines, ascending
+  std::vector<int> computed_lines;  // Conditioning::computed_lines, ascending
   static Tolerance for_program(const Conditioning& c);
   double band(std::string_view clause) const;  // the band of a clause's margin
 };

@@ -37,6 +37,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
   std::vector<std::pair<double, double>> recent;
   double prev_a = 0, prev_b = 0;  // end tangent of the previous traversing block
   bool have_prev = false, prev_arc = false;
+  Side side = Side::kOff;  // of the block before
   for (const Block& b : program) {
     PlaneAxes ax = plane_axes(b.state.plane);
     for (const Point3* p : {&b.start, &b.end})
@@ -45,6 +46,9 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
     if (b.moves_in_plane() || b.is_sar_block()) c.plane_lines.push_back(b.words.line);
     if ((b.moves_in_plane() && b.is_arc()) || b.is_sar_block()) c.circle_lines.push_back(b.words.line);
+    if (b.is_sar_block() || (b.state.side != Side::kOff && side != Side::kOff && b.state.side != side))
+      c.computed_lines.push_back(b.words.line);
+    side = b.state.side;
     if (b.is_sar_block() && b.words.disr) {
       // SAR-DISR-1/2: the generated element is L = DISR + r long, or of radius DISR +- r.
       double d = b.words.disr->to_double(), r = std::fabs(b.state.effective_radius().to_double());
@@ -225,6 +229,8 @@ Tolerance Tolerance::for_program(const Conditioning& c) {
   std::sort(t.plane_lines.begin(), t.plane_lines.end());
   t.circle_lines = c.circle_lines;
   std::sort(t.circle_lines.begin(), t.circle_lines.end());
+  t.computed_lines = c.computed_lines;
+  std::sort(t.computed_lines.begin(), t.computed_lines.end());
   return t;
 }
 

@@ -217,6 +217,40 @@ TEST(Comparison, ACollapseAtAnExactZeroRadiusIsNoKnifeEdge) {
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kKnifeEdge);
 }
 
+// fast decides TRC-CORNER-1 and TRC-KONT-1 exactly on programmed decimals (CR= circles
+// included): the other branch at ref's exact tie is a divergence there, a knife edge only at or
+// next to a block about which fast computes points (a SAR block, a side change). Mutant 78.
+// covers: PROP-DIFF-1 TRC-CORNER-1 TRC-KONT-1
+TEST(Comparison, AnExactTieOnProgrammedDecimalsTakenOtherwiseDiverges) {
+  auto at = [](Decision d, int line) {
+    d.line = line;
+    return d;
+  };
+  Tolerance tol = tolerance();
+  tol.plane_lines = {5, 6, 7, 8, 9};
+  RunResult ref, fast;
+  ref.decisions = {at(decision("TRC-KONT-1", "in-front", 0, "0"), 5)};
+  fast.decisions = {at(decision("TRC-KONT-1", "behind", -1.4e-14), 5)};
+  Verdict v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  ref.decisions = {at(decision("TRC-CORNER-1", "tangent", 0, "0"), 7)};
+  fast.decisions = {at(decision("TRC-CORNER-1", "outer", -5e-16), 7)};
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  for (int computed : {6, 7, 8}) {  // the block before, the block itself, the block after
+    tol.computed_lines = {computed};
+    v = compare(ref, fast, tol);
+    EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << computed << ": " << v.explanation;
+  }
+  tol.computed_lines = {9};  // two blocks on: no longer next to it
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  tol.plane_lines.clear();  // blocks unknown: a knife edge, as before
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
+  // A margin a rounding from 0 that is not exactly 0 stays a knife edge.
+  tol.plane_lines = {5, 6, 7, 8, 9}, tol.computed_lines.clear();
+  ref.decisions = {at(decision("TRC-CORNER-1", "inner", 1e-17, "1.0e-17"), 7)};
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
+}
+
 // A CDON entry at margin 0 between two lines is an entry of one point, well conditioned: a parting
 // after it is a divergence (mutant 23: the point entry refused after it was traced). At a corner
 // with a circle the margin is also the carriers' gap: there it is touching carriers.
