@@ -477,6 +477,17 @@ TEST(ProgramWords, TranslationScaleAndMirrorFrames) {
       EXPECT_NE(std::string(e.what()).find("the frame is out of range"), std::string::npos) << e.what();
     }
   }
+  // And one shrunk below the grid (reader_fuzz: ASCALE Y0.49 in a subprogram called 280 times):
+  // a factor of 0 would divide the positions by 0.
+  std::string shrunk = "G0 X1 Y1\n";
+  for (int i = 0; i < 30; ++i) shrunk += "ASCALE Y0.49\nY.9\n";
+  try {
+    read(shrunk);
+    ADD_FAILURE() << "no error for a scale factor shrunk to 0";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Y: the scale factors together come to less than 1e-9"), std::string::npos)
+        << e.what();
+  }
 }
 
 // covers: NC-FRAME-3

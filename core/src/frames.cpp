@@ -94,6 +94,10 @@ void ProgramReader::apply_frame(const BlockWords& w, Plane plane) {
         if (aw.value > Decimal::from_int(1000) || aw.value < Decimal::from_int(-1000))
           fail(fmt::format("{}: scale factors up to 1000 are supported", "XYZ"[a]));
         frame_.factor[i] = frame_.factor[i].times(aw.value);
+        // ASCALE repeated (a loop, a subprogram calling itself) shrinks the product below the
+        // grid's 1e-9: a factor of 0, which no position can be divided by (reader_fuzz).
+        if (frame_.factor[i].sign() == 0)
+          fail(fmt::format("{}: the scale factors together come to less than 1e-9", "XYZ"[a]));
         break;
       case FrameWord::kMirror:
       case FrameWord::kAmirror:  // the value is not evaluated: the axis is mirrored
