@@ -34,7 +34,8 @@ struct Conditioning {
   std::vector<int> plane_lines;   // lines of the blocks that move in the plane, ascending
   std::vector<int> circle_lines;  // of those, the circles and the SAR blocks (whose element may be one)
   // Blocks about which fast computes points in double: SAR blocks (their elements, and the points
-  // of the blocks next to them) and side changes (TRC-SIDE-1: the approach from the tool).
+  // of the blocks next to them) and new selections under compensation (TRC-SIDE-1/2: the
+  // approach from the tool).
   std::vector<int> computed_lines;
 };
 // `window`: MD20240, how far apart the look-ahead (TRC-LOOK-2) and collision detection (TRC-CD-3)

@@ -38,6 +38,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
   double prev_a = 0, prev_b = 0;  // end tangent of the previous traversing block
   bool have_prev = false, prev_arc = false;
   Side side = Side::kOff;  // of the block before
+  std::uint32_t selection = 0;
   for (const Block& b : program) {
     PlaneAxes ax = plane_axes(b.state.plane);
     for (const Point3* p : {&b.start, &b.end})
@@ -46,9 +47,12 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
     c.radius = std::max(c.radius, std::fabs(b.state.effective_radius().to_double()));
     if (b.moves_in_plane() || b.is_sar_block()) c.plane_lines.push_back(b.words.line);
     if ((b.moves_in_plane() && b.is_arc()) || b.is_sar_block()) c.circle_lines.push_back(b.words.line);
-    if (b.is_sar_block() || (b.state.side != Side::kOff && side != Side::kOff && b.state.side != side))
-      c.computed_lines.push_back(b.words.line);
-    side = b.state.side;
+    // A new selection while compensation is on (TRC-SIDE-1, a side change; TRC-SIDE-2, the same
+    // side again) approaches from where the tool is.
+    bool reselected =
+        b.state.side != Side::kOff && side != Side::kOff && (b.state.side != side || b.state.selection != selection);
+    if (b.is_sar_block() || reselected) c.computed_lines.push_back(b.words.line);
+    side = b.state.side, selection = b.state.selection;
     if (b.is_sar_block() && b.words.disr) {
       // SAR-DISR-1/2: the generated element is L = DISR + r long, or of radius DISR +- r.
       double d = b.words.disr->to_double(), r = std::fabs(b.state.effective_radius().to_double());

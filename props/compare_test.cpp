@@ -7,9 +7,11 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 #include "cutcom/boundary_rules.hpp"
+#include "cutcom/reader.hpp"
 
 namespace cutcom::props {
 namespace {
@@ -243,6 +245,15 @@ TEST(Comparison, AnExactTieOnProgrammedDecimalsTakenOtherwiseDiverges) {
   }
   tol.computed_lines = {9};  // two blocks on: no longer next to it
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  // The blocks about which fast computes points, from the program: a SAR block, a side change, the
+  // same side again (campaign 20261249, case 1089: KONT from where the tool stood).
+  std::istringstream in(
+      "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=1\nT1 D1\nG1 G41 X0 Y0 F100\nX10\nG42 Y10\nX20\nG42 Y20\nX30\n"
+      "G40 G248 G340 DISR=2 X40\n");
+  ProgramReader reader(in);
+  std::vector<Block> blocks;
+  for (Block b; reader.next(b);) blocks.push_back(b);
+  EXPECT_EQ(conditioning_of(blocks).computed_lines, (std::vector<int>{6, 8, 10}));
   tol.plane_lines.clear();  // blocks unknown: a knife edge, as before
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
   // A margin a rounding from 0 that is not exactly 0 stays a knife edge.
