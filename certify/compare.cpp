@@ -134,8 +134,9 @@ bool decided_exactly_at_zero(const Decision& d) {
 
 // PROP-DIFF-1: fast decides TRC-CORNER-1 and TRC-KONT-1 exactly wherever the tangents and the
 // start are programmed decimals (lines, I/J/K and CR= circles): an exact tie there is no knife
-// edge. Only at or next to a block about which fast computes points (a SAR block, a side change)
-// may it take the other branch at ref's margin of exactly 0. Blocks unknown: as before.
+// edge. Only at or next to a block about which fast computes points (a SAR block, a new selection
+// under compensation: Conditioning::computed_lines) may it take the other branch at ref's margin
+// of exactly 0. Blocks unknown: as before.
 bool decided_on_decimals(const Decision& d, const Tolerance& tol) {
   if (d.margin_exact != "0" || (d.clause != "TRC-CORNER-1" && d.clause != "TRC-KONT-1") || tol.plane_lines.empty())
     return false;
