@@ -5,16 +5,7 @@
 
 namespace cutcom {
 
-namespace {
-// Sums of program values may grow past the literal limit (many G91 steps); 1000x leaves room
-// while staying far from Int128 overflow.
-constexpr Int128 kArithmeticLimit = Decimal::kMaxUnits * 1000;
-
-Decimal checked(Int128 v) {
-  if (v > kArithmeticLimit || v < -kArithmeticLimit) throw std::overflow_error("value out of range");
-  return Decimal::from_units(v);
-}
-}  // namespace
+void Decimal::out_of_range() { throw std::overflow_error("value out of range"); }
 
 Decimal Decimal::scaled(std::int64_t num, std::int64_t den, bool* exact) const {
   Int128 p = units_ * num;
@@ -65,7 +56,10 @@ Decimal::ParseResult Decimal::parse(std::string_view s) {
     r.error = ParseError::kSyntax;
     return r;
   }
-  for (int k = frac_digits; k < kFractionDigits; ++k) fraction *= 10;
+  static constexpr std::uint64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
+                                             10'000,        1'000,       100,        10,        1};
+  static_assert(kFractionDigits == 9);
+  fraction *= kScale[frac_digits];
   Int128 units = Int128(integer) * kUnitsPerOne + Int128(fraction);
   if (units > kMaxUnits) {
     r.error = ParseError::kOutOfRange;
@@ -129,8 +123,5 @@ std::string Decimal::to_string() const {
   }
   return out;
 }
-
-Decimal operator+(Decimal a, Decimal b) { return checked(a.units() + b.units()); }
-Decimal operator-(Decimal a, Decimal b) { return checked(a.units() - b.units()); }
 
 }  // namespace cutcom

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 
@@ -148,17 +149,30 @@ void Interpreter::seek(std::streamoff to, int line) {
 }
 
 bool Interpreter::maybe_parametric(std::string_view s) {
+  // One table look-up per character (every line of a program passes here).
+  enum : std::uint8_t { kName = 1, kAssign = 2, kComment = 4, kCall = 8 };
+  static constexpr std::array<std::uint8_t, 256> kClass = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (int c = 0; c < 256; ++c)
+      if (is_letter(static_cast<char>(c)) || c == '_') t[static_cast<std::size_t>(c)] = kName;
+    t['='] = t[':'] = kAssign;
+    t[';'] = kComment;
+    t['L'] |= kCall, t['l'] |= kCall;
+    return t;
+  }();
   bool letter = false;
   for (std::size_t k = 0; k < s.size(); ++k) {
-    char c = s[k];
-    if (c == ';') return false;
-    if (c == '=' || c == ':') return true;
-    bool l = is_letter(c) || c == '_';
-    if (l && letter) return true;
+    std::uint8_t c = kClass[static_cast<unsigned char>(s[k])];
+    if (c == 0) {
+      letter = false;
+      continue;
+    }
+    if (c & kComment) return false;
+    if (c & kAssign) return true;
+    if (letter) return true;  // two letters: a name
     // Ln: a subprogram call (NC-PARAM-SUB-1)
-    if ((c == 'L' || c == 'l') && k + 1 < s.size() && is_digit(s[k + 1]) && (k == 0 || !is_name_char(s[k - 1])))
-      return true;
-    letter = l;
+    if ((c & kCall) && k + 1 < s.size() && is_digit(s[k + 1]) && (k == 0 || !is_name_char(s[k - 1]))) return true;
+    letter = true;
   }
   return false;
 }

@@ -18,10 +18,10 @@
 namespace cutcom::lexer {
 
 // NC text is ASCII: the C locale's classes, without a call per character.
-inline bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
-inline bool is_name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
-inline char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+constexpr bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool is_name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
+constexpr char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
 // Modal groups of the G codes kept as actions or state, for "two of one group" (NC-LEX-3).
 enum GGroup : unsigned {
@@ -109,7 +109,7 @@ class WordLexer {
   }
 
   // A decimal literal [+-]digits[.digits]; must end at a word boundary.
-  Decimal number(const std::string& what) {
+  Decimal number(std::string_view what) {
     std::size_t start = i_;
     if (peek() == '+' || peek() == '-') ++i_;
     while (!at_end() && (is_digit(peek()) || peek() == '.')) ++i_;
@@ -144,7 +144,7 @@ class WordLexer {
     return std::string(s_.substr(i_, std::max<std::size_t>(j - i_, 1)));
   }
 
-  std::int64_t integer(const std::string& what) {
+  std::int64_t integer(std::string_view what) {
     std::size_t start = i_;
     Decimal d = number(what);
     auto v = d.to_integer();
@@ -153,7 +153,7 @@ class WordLexer {
   }
 
   // An unsigned whole number written with digits only (indices of system variables).
-  std::int64_t digits(const std::string& what) {
+  std::int64_t digits(std::string_view what) {
     std::size_t start = i_;
     std::int64_t v = 0;
     while (!at_end() && is_digit(peek())) {
@@ -183,14 +183,14 @@ class WordLexer {
     i_ = j + 1;
     return true;
   }
-  void close_paren(const std::string& what) {
+  void close_paren(std::string_view what) {
     skip_space();
     if (peek() != ')') fail(fmt::format("{}: ')' expected", what));
     ++i_;
   }
 
   // A string in double quotes at the cursor, without them; `what` names it in the error.
-  std::string quoted(const std::string& what) {
+  std::string quoted(std::string_view what) {
     ++i_;  // the opening quote
     std::size_t start = i_;
     while (!at_end() && peek() != '"') ++i_;
@@ -201,13 +201,13 @@ class WordLexer {
   }
 
   template <class T>
-  void set_once(Opt<T>& slot, T value, const std::string& what, std::size_t at) {
+  void set_once(Opt<T>& slot, T value, std::string_view what, std::size_t at) {
     if (slot) fail(fmt::format("{} programmed twice in one block", what), at);
     slot = value;
   }
 
   // Value with optional AC()/IC() (axes, centre, DISCL, DISRP).
-  void positional(AxisWord& slot, const std::string& what, std::size_t at, bool allow_ic, bool need_eq) {
+  void positional(AxisWord& slot, std::string_view what, std::size_t at, bool allow_ic, bool need_eq) {
     if (slot.present) fail(fmt::format("{} programmed twice in one block", what), at);
     AxisWord w;
     w.present = true;
@@ -230,7 +230,7 @@ class WordLexer {
     slot = w;
   }
 
-  Decimal plain_value(const std::string& what, bool need_eq) {
+  Decimal plain_value(std::string_view what, bool need_eq) {
     bool eq = equals();
     if (need_eq && !eq) fail(fmt::format("{} needs '=' (write {}=...)", what, what));
     return number(what);
@@ -261,7 +261,7 @@ class WordLexer {
   }
 
   // A value of an action word: a number, or NAME(number) such as DC(90) or ACP(0).
-  void action_value(const std::string& what) {
+  void action_value(std::string_view what) {
     skip_space();
     if (is_letter(peek())) {
       std::size_t at = i_;
@@ -282,7 +282,7 @@ class WordLexer {
   }
 
   // The balanced "(…)" after a call-form word, strings included; returns nothing, checks it closes.
-  void balanced_arguments(const std::string& what, std::size_t at) {
+  void balanced_arguments(std::string_view what, std::size_t at) {
     skip_space();
     if (peek() != '(') fail(fmt::format("{} needs its arguments in '(…)'", what));
     int depth = 0;
@@ -348,16 +348,16 @@ class WordLexer {
   }
   // System variables (NC-LEX-6): tool data $TC_DPn[t,d]=v and $TC_TP2[t]="NAME".
   void system_variable();
-  void index_open(const std::string& what);
+  void index_open(std::string_view what);
   void index_close();
   void tool_edge_data(int p, std::size_t at);
-  std::pair<std::int64_t, std::int64_t> tool_edge_index(const std::string& what);
+  std::pair<std::int64_t, std::int64_t> tool_edge_index(std::string_view what);
   // $TC_TP2[t]="NAME": the tool's name (TOOL-NAME-1).
   void tool_name_data(std::size_t at);
   // $TC_SCPkp[t,d]=v, $TC_ECPkp[t,d]=v: sum and setup offsets (TOOL-SUM-1).
   void sum_offset_data(const std::string& full, std::size_t at);
   // $TC_TP1, $TC_TP3 … $TC_TP11 (duplo number, size, place type, …): no effect on the path.
-  void ignored_tool_parameter(const std::string& what);
+  void ignored_tool_parameter(std::string_view what);
 
   std::string_view s_;
   std::size_t i_ = 0;

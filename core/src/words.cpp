@@ -320,9 +320,18 @@ void WordLexer::keyword(const std::string& n, std::size_t at) {
 
 void WordLexer::word() {
   std::size_t at = i_;
-  std::string n = letters();
-  if (n.size() > 1 || peek() == '_') name_tail(n);
-  if (n.size() > 1) return keyword(n, at);
+  if (is_letter(peek(1)) || peek(1) == '_') {
+    std::string n = letters();
+    name_tail(n);
+    return keyword(n, at);
+  }
+  // One letter, as most words are: its name from a table, not a string built per word.
+  static const std::array<std::string, 26> kLetters = [] {
+    std::array<std::string, 26> a;
+    for (int k = 0; k < 26; ++k) a[static_cast<std::size_t>(k)] = std::string(1, static_cast<char>('A' + k));
+    return a;
+  }();
+  const std::string& n = kLetters[static_cast<std::size_t>(upper(s_[i_++]) - 'A')];
   skip_space();
   switch (n[0]) {
     case 'N': {

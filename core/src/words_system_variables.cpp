@@ -45,7 +45,7 @@ void WordLexer::system_variable() {
        at);
 }
 
-void WordLexer::index_open(const std::string& what) {
+void WordLexer::index_open(std::string_view what) {
   skip_space();
   if (peek() != '[') fail(fmt::format("'[' expected after {}", what));
   ++i_;
@@ -59,7 +59,7 @@ void WordLexer::index_close() {
 }
 
 // [t,d]= after a tool edge's variable: its tool and edge numbers.
-std::pair<std::int64_t, std::int64_t> WordLexer::tool_edge_index(const std::string& what) {
+std::pair<std::int64_t, std::int64_t> WordLexer::tool_edge_index(std::string_view what) {
   index_open(what);
   std::int64_t t = digits("tool number");
   skip_space();
@@ -119,7 +119,7 @@ void WordLexer::tool_name_data(std::size_t at) {
 }
 
 // $TC_TP1, $TC_TP3 … $TC_TP11 (duplo number, size, place type, …): no effect on the path.
-void WordLexer::ignored_tool_parameter(const std::string& what) {
+void WordLexer::ignored_tool_parameter(std::string_view what) {
   index_open(what);
   digits("tool number");
   index_close();
@@ -128,7 +128,7 @@ void WordLexer::ignored_tool_parameter(const std::string& what) {
     quoted(what);
     return;
   }
-  number(what + " value");
+  number(fmt::format("{} value", what));
 }
 
 }  // namespace cutcom::lexer

@@ -62,8 +62,9 @@ class Decimal {
   }
 
   // Checked arithmetic: throws std::overflow_error beyond kMaxUnits * 1000.
-  friend Decimal operator+(Decimal a, Decimal b);
-  friend Decimal operator-(Decimal a, Decimal b);
+  // Inline: the reader adds frames and offsets to every coordinate of every block.
+  friend Decimal operator+(Decimal a, Decimal b) { return checked(a.units_ + b.units_); }
+  friend Decimal operator-(Decimal a, Decimal b) { return checked(a.units_ - b.units_); }
   friend constexpr Decimal operator-(Decimal a) { return from_units(-a.units_); }
   friend constexpr bool operator==(Decimal a, Decimal b) = default;
   friend constexpr std::strong_ordering operator<=>(Decimal a, Decimal b) {
@@ -74,6 +75,14 @@ class Decimal {
 
  private:
   double to_double_rounded() const;  // to_double beyond 2^53 units
+  // Sums of program values may grow past the literal limit (many G91 steps); 1000x leaves room
+  // while staying far from Int128 overflow.
+  static constexpr Int128 kArithmeticLimit = kMaxUnits * 1000;
+  static Decimal checked(Int128 v) {
+    if (v > kArithmeticLimit || v < -kArithmeticLimit) out_of_range();
+    return from_units(v);
+  }
+  [[noreturn]] static void out_of_range();
   Int128 units_ = 0;
 };
 
