@@ -16,12 +16,18 @@ namespace cutcom::fast {
 
 namespace {
 // How many roundings a tangent computed in double may turn by, roughly: the magnitude of the
-// block's coordinates over its size (a line's length, a circle's radius); infinite for size 0.
+// block's coordinates over the length that fixes its direction (a line's length, a CR= circle's
+// radius; a centred circle's radius or, shorter, its chord, across which ARC-CENTRE-1 projects
+// the centre); infinite for length 0.
 double scale_over_size(const BlockCopy& c, PlaneAxes a) {
   Vec2 s = ab_in(c.start, a), e = ab_in(c.end, a);
   double scale = std::max({std::fabs(s.a), std::fabs(s.b), std::fabs(e.a), std::fabs(e.b), std::fabs(c.cr)});
-  double size = !c.arc ? norm(e - s) : c.has_centre ? norm(s - ab_in(c.centre, a)) : std::fabs(c.cr);
-  return scale / size;
+  if (!c.arc) return scale / norm(e - s);
+  if (!c.has_centre) return scale / std::fabs(c.cr);
+  Vec2 k = ab_in(c.centre, a);
+  scale = std::max({scale, std::fabs(k.a), std::fabs(k.b)});
+  double radius = norm(s - k), chord = norm(e - s);
+  return scale / (chord > 0 ? std::min(chord, radius) : radius);
 }
 }  // namespace
 
@@ -219,6 +225,10 @@ void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& 
     c.kind = Corner::Kind::kTangent, c.sine = 0;
     return;
   }
+  // The filter: a double sine further from 0 than rounding can carry it has the exact sign, which
+  // the integers below would only confirm (few ulps times scale over size; 2^-24 leaves 10^8).
+  if (!first.exact || !second.exact) return;  // a SAR block: the double decision stands
+  if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first, axes) + scale_over_size(second, axes))) return;
   // Lines and circles with a centre: the tangents are integer vectors (exact_tangent.hpp).
   std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
   int cross = 0, dot = 0;
@@ -228,8 +238,6 @@ void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& 
   } else {
     // A CR= circle (its tangent carries a root) or a tangent beyond the 256-bit range: in GMP's
     // integers (root_tangent.hpp), where the double sine is too small to be sure of.
-    if (!first.exact || !second.exact) return;  // a SAR block: the double decision stands
-    if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first, axes) + scale_over_size(second, axes))) return;
     std::optional<RootTangents::Signs> signs = root_tangents.corner(first, second, axes);
     if (!signs) return;
     cross = signs->cross, dot = signs->dot;
