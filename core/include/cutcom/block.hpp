@@ -157,15 +157,6 @@ struct BlockWordFields {
   Opt<int> settable_offset;  // G500 = 0, G54…G57 = 1…4, G505…G599 = 5…99 (NC-OFFSET-1)
   Opt<DiameterMode> diameter;
   Opt<FrameWord> frame;
-  // Contour definitions, polar coordinates and RPL: rare words, kept apart so that a block
-  // without them stays small to reset and copy (NC-CONTOUR-*, NC-POLAR-*, NC-FRAME-4).
-  Opt<ContourWords> contour;
-  const ContourWords& cw() const {
-    static const ContourWords kNone{};
-    return contour ? *contour : kNone;
-  }
-  ContourWords& cw_set() { return contour ? *contour : contour.emplace(); }
-
   // NC-WORD-8: a rotary axis (A, B or C) programmed with X, Y or Z, and the column of the first
   // of them; allowed only in a rapid move without compensation (the reader decides).
   std::string_view rotary_with_plane;  // the rotary axis or orientation word moving with X, Y or Z (a literal)
@@ -194,11 +185,21 @@ struct BlockWords : BlockWordFields {
   // keep their buffers (the reader's per-block cost; action entries past a count are stale).
   void reset(int source_line) {
     reset_fields(*this);
+    contour.reset();
     line = source_line;
     tool_name.reset();
     not_simulated.clear();
     aux_count = tool_data_count = tool_names_count = 0;
   }
+
+  // Contour definitions, polar coordinates and RPL: rare words, kept apart so that a block
+  // without them stays small to reset (only its flag; NC-CONTOUR-*, NC-POLAR-*, NC-FRAME-4).
+  Opt<ContourWords> contour;
+  const ContourWords& cw() const {
+    static const ContourWords kNone{};
+    return contour ? *contour : kNone;
+  }
+  ContourWords& cw_set() { return contour ? *contour : contour.emplace(); }
 
   Opt<std::string> tool_name;  // T="NAME" (TOOL-NAME-1)
   // NC-CYCLE-1: a block that moves the tool along a path cutcom does not simulate (a standard
