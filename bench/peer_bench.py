@@ -246,6 +246,10 @@ def main():
     ap.add_argument("--ref-cdof-blocks", default="10000,100000,1000000",
                     help="the same without CDON, the issue's typical contour (about 0.05 ms a block)")
     ap.add_argument("--bench-engines", default="build/bench/bench_engines")
+    ap.add_argument("--block-instructions", default="build/bench/block_instructions")
+    ap.add_argument("--instruction-blocks", type=int, default=20000,
+                    help="program length at which instructions per block are counted under valgrind "
+                         "(0: not counted)")
     ap.add_argument("--write-docs", action="store_true", help="write docs/performance.md and its chart")
     a = ap.parse_args()
     rs274 = shutil.which(a.rs274)
@@ -326,8 +330,9 @@ def main():
     engines = engine_rows(a)
     for name, median, best in engines:
         print(f"{name:40} median {median / 1e6:.2f} M blocks/s, best {best / 1e6:.2f}")
+    instructions = instruction_rows(a, tmp)
     if a.write_docs:
-        write_docs(rows, memory, ref_memory, pocket, engines, a)
+        write_docs(rows, memory, ref_memory, pocket, engines, instructions, a)
     shutil.rmtree(tmp, ignore_errors=True)
     sys.exit(0 if ok else 1)
 
@@ -371,11 +376,50 @@ def engine_rows(a):
     return [(name, statistics.median(v), max(v)) for name, v in runs.items()]
 
 
+def instructions_of(cmd):
+    """Instructions the process executed, counted by valgrind (callgrind's total)."""
+    out = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", *cmd],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"peer_bench: {' '.join(cmd)} failed under valgrind:\n{out.stderr[-2000:]}")
+    m = re.search(r"Collected : (\d+)", out.stderr)
+    if not m:
+        sys.exit(f"peer_bench: no instruction count from valgrind for {' '.join(cmd)}")
+    return int(m.group(1))
+
+
+def instruction_rows(a, tmp):
+    """Instructions per block of the reader alone and of the reader with the fast engine, on the
+    peer contours (bench/block_instructions under valgrind): a figure that a shared machine's load
+    does not move, to measure small changes by. The cost of starting the process is taken out by
+    counting an empty program too."""
+    if a.instruction_blocks <= 0 or not shutil.which("valgrind") or not os.access(a.block_instructions, os.X_OK):
+        return []
+    empty = os.path.join(tmp, "empty.mpf")
+    with open(empty, "w") as f:
+        f.write("M30\n")
+    base = {mode: instructions_of([a.block_instructions, empty, *mode]) for mode in ((), ("--reader",))}
+    rows = []
+    for kind, make in KINDS.items():
+        moves = make(a.instruction_blocks)
+        for cdon in (False, True):
+            path = os.path.join(tmp, f"instructions_{kind.replace(' ', '_')}{'_cdon' if cdon else ''}.mpf")
+            with open(path, "w") as f:
+                f.write(sinumerik_program(moves, cdon))
+            blocks = sum(1 for _ in open(path))
+            reader = (instructions_of([a.block_instructions, path, "--reader"]) - base[("--reader",)]) / blocks
+            total = (instructions_of([a.block_instructions, path]) - base[()]) / blocks
+            rows.append((f"{kind}{', CDON' if cdon else ''}", blocks, reader, total - reader, total))
+            print(f"instructions per block, {rows[-1][0]:22} reader {reader:.0f}, fast {total - reader:.0f}, "
+                  f"together {total:.0f}")
+    return rows
+
+
 def mb(kb):
     return f"{kb / 1024:.1f} MB" if kb else "not measured"
 
 
-def write_docs(rows, memory, ref_memory, pocket, engines, a):
+def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
     here = os.path.dirname(os.path.abspath(__file__))
     docs = os.path.join(here, "..", "docs")
     with open(os.path.join(docs, "performance-peer.svg"), "w") as f:
@@ -434,6 +478,14 @@ def write_docs(rows, memory, ref_memory, pocket, engines, a):
                   f"{a.runs} repetitions; the machine is shared, so the best run is given beside the median.", "",
                   "| benchmark | median blocks/s | best blocks/s |", "|---|---|---|"]
         lines += [f"| {name} | {m / 1e6:.2f} M | {b / 1e6:.2f} M |" for name, m, b in engines]
+    if instructions:
+        lines += ["", "## Instructions per block", "",
+                  "`bench/block_instructions` under valgrind (callgrind's count, the cost of starting the "
+                  "process taken out): the reader alone, then the reader and the fast engine on one thread, "
+                  "without output. Unlike times, these counts do not move with the machine's load, so they "
+                  "measure small changes.", "",
+                  "| contour | blocks | reader | fast engine | together |", "|---|---|---|---|---|"]
+        lines += [f"| {label} | {n} | {r:.0f} | {e:.0f} | {t:.0f} |" for label, n, r, e, t in instructions]
     lines.append("")
     with open(os.path.join(docs, "performance.md"), "w") as f:
         f.write("\n".join(lines))

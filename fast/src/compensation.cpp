@@ -15,18 +15,20 @@
 namespace cutcom::fast {
 
 namespace {
-// How many roundings a tangent computed in double may turn by, roughly: the magnitude of the
+// How many roundings a tangent computed in double may turn by, at most: the magnitude of the
 // block's coordinates over the length that fixes its direction (a line's length, a CR= circle's
 // radius; a centred circle's radius or, shorter, its chord, across which ARC-CENTRE-1 projects
-// the centre); infinite for length 0.
+// the centre); infinite for length 0. A length is taken as its larger component (no root): that
+// only makes the bound larger.
 double scale_over_size(const BlockCopy& c, PlaneAxes a) {
+  auto larger = [](Vec2 v) { return std::max(std::fabs(v.a), std::fabs(v.b)); };
   Vec2 s = ab_in(c.start, a), e = ab_in(c.end, a);
-  double scale = std::max({std::fabs(s.a), std::fabs(s.b), std::fabs(e.a), std::fabs(e.b), std::fabs(c.cr)});
-  if (!c.arc) return scale / norm(e - s);
+  double scale = std::max({larger(s), larger(e), std::fabs(c.cr)});
+  if (!c.arc) return scale / larger(e - s);
   if (!c.has_centre) return scale / std::fabs(c.cr);
   Vec2 k = ab_in(c.centre, a);
-  scale = std::max({scale, std::fabs(k.a), std::fabs(k.b)});
-  double radius = norm(s - k), chord = norm(e - s);
+  scale = std::max(scale, larger(k));
+  double radius = larger(s - k), chord = larger(e - s);
   return scale / (chord > 0 ? std::min(chord, radius) : radius);
 }
 }  // namespace

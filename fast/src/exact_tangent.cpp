@@ -38,6 +38,10 @@ bool below(Int128 v, int bits) {
 }  // namespace
 
 int sign_of_difference(Int128 p, Int128 q, Int128 r, Int128 t) {
+  if (below(p, 62) && below(q, 62) && below(r, 62) && below(t, 62)) {  // each product below 2^124
+    Int128 d = p * q - r * t;
+    return (d > 0) - (d < 0);
+  }
   int s1 = sign(p) * sign(q), s2 = sign(r) * sign(t);  // signs of p·q and r·t
   if (s1 != s2) return s1 > s2 ? 1 : -1;               // (covers either product being 0)
   if (s1 == 0) return 0;
