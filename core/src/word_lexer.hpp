@@ -146,6 +146,16 @@ class WordLexer {
 
   std::int64_t integer(std::string_view what) {
     std::size_t start = i_;
+    // Digits alone (G1, D1, N10; at most 12, below number()'s limit) read directly: the value and
+    // the checks of number() and to_integer() for them, without a decimal between.
+    std::size_t j = i_;
+    std::int64_t digits_value = 0;
+    while (j < s_.size() && j - i_ < 12 && is_digit(s_[j])) digits_value = digits_value * 10 + (s_[j++] - '0');
+    char after = j < s_.size() ? s_[j] : '\0';
+    if (j > i_ && !is_digit(after) && std::string_view(".+-*/_").find(after) == std::string_view::npos) {
+      i_ = j;
+      return digits_value;
+    }
     Decimal d = number(what);
     auto v = d.to_integer();
     if (!v) fail(fmt::format("{} needs a whole number, not '{}'", what, d.to_string()), start);
