@@ -1,8 +1,13 @@
 // TRACE-1: a sink that keeps no decisions (a run without --trace) gets none, and ref leaves out
 // the text of its exact margins; the path, actions and alarms are the same as with every decision
 // and margin written.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
 #include <sstream>
 
+#include "cutcom/fast/engine.hpp"
 #include "support.hpp"
 
 namespace cutcom::test {
@@ -84,6 +89,48 @@ TEST(TraceMargins, RefLeavesOutMarginsNobodyKeepsAndThePathStays) {
   expect_same_without_margins(kProgram, "TRC-CORNER-1", "inner");
   expect_same_without_margins(kBottleneck, "TRC-CD-3", "cut");
   expect_same_without_margins(kBottleneck, "TRC-CD-3", "none");
+}
+
+RunResult run_fast(const std::string& text, const MachineData& md, CollectingSink& sink) {
+  std::istringstream in(text);
+  ProgramReader reader(in, md.initial_state());
+  fast::run(reader, md, sink);
+  return sink.result;
+}
+
+// covers: TRACE-1 TRC-CORNER-3 TRC-CORNER-4
+// fast untraced tells a corner's side of MD20210 / MD20230 by its cosine where it is far from the
+// limit (no atan2): the same path as the traced run, which takes the angle, at contour angles on,
+// a hair off and far from each limit, turning either way, under G450 and G451.
+TEST(TraceMargins, FastUntracedTakesTheCornerLimitsAsTraced) {
+  MachineData md;
+  md.cutcom_corner_limit = *Decimal::parse("100").value;
+  md.cutcom_curve_insert_limit = *Decimal::parse("10").value;
+  int compared = 0;
+  for (double angle : {9.9999999, 10.0, 10.0000001, 9.99, 10.01, 45.0, 99.9999999, 100.0, 100.0000001, 150.0, 179.9})
+    for (int turn : {1, -1})
+      for (const char* mode : {"G450", "G451"}) {
+        double a = turn * angle * std::numbers::pi / 180;
+        std::string text = fmt::format(
+            "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nN10 G17 G90 G0 X-20 Y5 T1 D1\nN20 G1 G41 {} X0 Y0 F500\n"
+            "N30 X20\nN40 X{:.9f} Y{:.9f}\nN50 G40 X{:.9f} Y{:.9f}\nM30\n",
+            mode, 20 + 30 * std::cos(a), 30 * std::sin(a), 20 + 60 * std::cos(a), 60 * std::sin(a) + 20);
+        SCOPED_TRACE(text);
+        CollectingSink all;
+        PathOnly path_only;
+        RunResult r = run_fast(text, md, all), p = run_fast(text, md, path_only);
+        ASSERT_EQ(r.path.size(), p.path.size());
+        for (std::size_t k = 0; k < r.path.size(); ++k) {
+          EXPECT_EQ(r.path[k].type, p.path[k].type) << k;
+          EXPECT_EQ(r.path[k].end.x, p.path[k].end.x) << k;
+          EXPECT_EQ(r.path[k].end.y, p.path[k].end.y) << k;
+        }
+        EXPECT_EQ(r.alarms.size(), p.alarms.size());
+        EXPECT_TRUE(p.decisions.empty());
+        compared += has_decision(r, "TRC-CORNER-3", "switch-to-G450") || has_decision(r, "TRC-CORNER-3", "keep-G451") ||
+                    has_decision(r, "TRC-CORNER-4", "keep-G450") || has_decision(r, "TRC-CORNER-4", "switch-to-G451");
+      }
+  EXPECT_GE(compared, 20);  // most corners are outer ones that meet a limit
 }
 
 }  // namespace

@@ -409,6 +409,10 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
 }
 
 bool Compensation::outer_corner_circle(int line_no, bool g451, const Corner& c) {
+  // Far from the limit the corner's side of it is its cosine's (the tangents are unit vectors to a
+  // few ulps; 1e-9 leaves a wide margin): the angle is then wanted only as the trace's margin.
+  double limit_cos = g451 ? corner_limit_cosine : insert_limit_cosine;
+  if (!trace.keeps_decisions() && std::fabs(c.cosine - limit_cos) > 1e-9) return c.cosine < limit_cos;
   double angle = std::atan2(std::fabs(c.sine), c.cosine) * (180.0 / std::numbers::pi);
   if (g451) {  // TRC-CORNER-3: G451 switches to G450 above MD20210
     double limit = md.cutcom_corner_limit.to_double();

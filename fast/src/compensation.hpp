@@ -39,7 +39,12 @@ struct BlockPlace {
 class Compensation {
  public:
   Compensation(const MachineData& m, PathSink& out, Trace& t, CollisionWindow& window)
-      : md(m), sink(out), trace(t), held(window) {}
+      : md(m),
+        sink(out),
+        trace(t),
+        held(window),
+        corner_limit_cosine(limit_cosine(m.cutcom_corner_limit)),
+        insert_limit_cosine(limit_cosine(m.cutcom_curve_insert_limit)) {}
 
   // A block from the SAR expansion; `o` gives its in-plane points where they are not its decimals.
   void step(const Block& b, const PlaneOverride* o = nullptr);
@@ -57,6 +62,13 @@ class Compensation {
   PathSink& sink;
   Trace& trace;
   CollisionWindow& held;  // stage 3: where output goes (collision_window.hpp)
+  // TRC-CORNER-3/4: the cosines of MD20210 and MD20230, to tell a corner's side of its limit
+  // without atan2 where it is far from it (NaN for a limit outside 0…180°: always atan2).
+  static double limit_cosine(const Decimal& degrees) {
+    double d = degrees.to_double();
+    return d >= 0 && d <= 180 ? std::cos(d * (std::numbers::pi / 180)) : std::numeric_limits<double>::quiet_NaN();
+  }
+  const double corner_limit_cosine, insert_limit_cosine;
   Phase phase = Phase::kOff;
   bool d0_noticed = false;
 
