@@ -15,8 +15,6 @@ using nlohmann::json;
 
 double clean(double v) { return v == 0 ? 0.0 : v; }  // never print -0
 
-json point(const PathPoint& p) { return json::array({clean(p.x), clean(p.y), clean(p.z)}); }
-
 json block_ref(const std::optional<std::int64_t>& b) { return b ? json(*b) : json(nullptr); }
 
 void append(SpillList& list, const json& item) { list.append(item.dump()); }
@@ -27,29 +25,28 @@ JsonWriter::JsonWriter(std::ostream& out, std::string engine, bool with_trace) :
        << ",\n  \"unit\": \"mm\",\n  \"path\": [";
 }
 
-// A path element written straight into the buffer, byte for byte as nlohmann::json's dump()
-// of the same object would write it (keys in its sorted order, numbers by its own shortest
-// round-trip formatter), without building a json object per element: the writer emits
-// millions of them (issue "Performance").
+// A path element written straight into the buffer as nlohmann::json's dump() of the same object
+// would write it (keys in its sorted order), without building a json object per element: the
+// writer emits millions of them (issue "Performance"). Items with numbers are written alike, so
+// that every number of the document is the shortest (nlohmann's are not always).
 namespace {
-void append_number(std::string& out, double v) {
-  if (!std::isfinite(v)) {
-    out += "null";
-    return;
-  }
-  char digits[64];
-  char* end = nlohmann::detail::to_chars(digits, digits + sizeof digits, clean(v));
-  out.append(digits, end);
+// Every number of the document: the shortest that reads back (text::put_shortest), null where it is
+// no number (as nlohmann::json writes NaN and infinities), never -0; at most 24 characters.
+char* put_number(char* p, double v) {
+  if (!std::isfinite(v)) return text::put(p, "null");
+  return text::put_shortest(p, clean(v));
 }
-void append_point(std::string& out, const PathPoint& p) {
-  out += '[';
-  append_number(out, p.x);
-  out += ',';
-  append_number(out, p.y);
-  out += ',';
-  append_number(out, p.z);
-  out += ']';
+char* put_point(char* p, const PathPoint& q) {  // at most 3 * 26 + 4 characters
+  *p++ = '[';
+  p = put_number(p, q.x);
+  *p++ = ',';
+  p = put_number(p, q.y);
+  *p++ = ',';
+  p = put_number(p, q.z);
+  *p++ = ']';
+  return p;
 }
+char* put_integer(char* p, std::int64_t v) { return std::to_chars(p, p + 24, v).ptr; }
 // A JSON string: printable ASCII directly, anything else (escapes, UTF-8 checks) by nlohmann.
 void append_string(std::string& out, std::string_view s) {
   for (char c : s)
@@ -67,46 +64,40 @@ void append_key(std::string& out, std::string_view key) {  // "key": after a com
   out.append(key);
   out += "\":";
 }
-// ,"key": in one append where a key is known to follow another (the writer's hot path).
-template <std::size_t N>
-void append_next_key(std::string& out, const char (&comma_key_colon)[N]) {
-  out.append(comma_key_colon, N - 1);
-}
 }  // namespace
 
 void JsonWriter::element(const PathElement& e) {
   std::string& b = buffer_;
-  b += first_ ? "\n    {" : ",\n    {";
+  // The numbers go through a buffer of their own (no string growth checks per character).
+  char head[256];
+  char* p = text::put(head, first_ ? "\n    {\"block\":" : ",\n    {\"block\":");
   first_ = false;
   const Origin& o = e.origin;
-  b += "\"block\":";
-  if (o.block)
-    text::append_integer(b, *o.block);
-  else
-    b += "null";
+  p = o.block ? put_integer(p, *o.block) : text::put(p, "null");
   bool arc = e.type == ElementType::kArc;
   if (arc) {
-    append_next_key(b, ",\"ccw\":");
-    b += e.ccw ? "true" : "false";
-    append_next_key(b, ",\"center\":");
-    append_point(b, e.center);
+    p = text::put(p, e.ccw ? ",\"ccw\":true,\"center\":" : ",\"ccw\":false,\"center\":");
+    p = put_point(p, e.center);
+    b.append(head, p);
+    p = head;
   }
-  append_next_key(b, ",\"end\":");
-  append_point(b, e.end);
+  p = text::put(p, ",\"end\":");
+  p = put_point(p, e.end);
+  b.append(head, p);
   if (!e.rapid) {
-    append_next_key(b, ",\"feed\":");
+    b += ",\"feed\":";
     if (e.feed != last_feed_ || last_feed_text_.empty()) {  // one feed runs over many elements
       last_feed_ = e.feed;
       last_feed_text_.clear();
       append_string(last_feed_text_, e.feed.to_string());
     }
     b += last_feed_text_;
-    if (e.feed_type == FeedType::kG95) append_key(b, "feed_type"), b += "\"G95\"";
+    if (e.feed_type == FeedType::kG95) b += ",\"feed_type\":\"G95\"";
   }
-  append_next_key(b, ",\"line\":");
-  text::append_integer(b, o.line);
-  append_next_key(b, ",\"origin\":");
-  b += '{';
+  p = text::put(head, ",\"line\":");
+  p = put_integer(p, o.line);
+  p = text::put(p, ",\"origin\":{");
+  b.append(head, p);
   bool inserted = o.insert.kind != InsertKind::kNone;  // NC-CONTOUR-*: an element the reader inserted
   if (inserted && o.insert.kind != InsertKind::kTurn)
     append_key(b, "corner_next_line"), text::append_integer(b, o.insert.next_line);
@@ -118,19 +109,16 @@ void JsonWriter::element(const PathElement& e) {
   if (o.kind == OriginKind::kTransitionCircle) append_key(b, "next_line"), text::append_integer(b, o.next_line);
   if (o.sar != SarMove::kNone) append_key(b, "sar"), append_string(b, sar_move_name(o.sar));
   if (o.source != 0 && sources_) append_key(b, "source"), append_string(b, sources_(o.source));  // NC-PARAM-SUB-3
-  text_.clear();
-  append_description(text_, o);
+  // The text is cutcom's own words and numbers (append_description): printable ASCII, no quote.
   append_key(b, "text");
-  append_string(b, text_);
+  b += '"';
+  append_description(b, o);
+  b += '"';
   if (inserted && o.insert.kind == InsertKind::kTurn) append_key(b, "turn"), text::append_integer(b, o.insert.turn);
-  b += '}';
-  append_next_key(b, ",\"rapid\":");
-  b += e.rapid ? "true" : "false";
-  append_next_key(b, ",\"start\":");
-  append_point(b, e.start);
-  append_next_key(b, ",\"type\":");
-  b += arc ? "\"arc\"" : "\"line\"";
-  b += '}';
+  p = text::put(head, e.rapid ? "},\"rapid\":true,\"start\":" : "},\"rapid\":false,\"start\":");
+  p = put_point(p, e.start);
+  p = text::put(p, arc ? ",\"type\":\"arc\"}" : ",\"type\":\"line\"}");
+  b.append(head, p);
   written();
 }
 
@@ -141,20 +129,40 @@ void JsonWriter::written() {
 }
 
 void JsonWriter::action(const ActionEvent& a) {
-  append(actions_,
-         json{{"line", a.line}, {"block", block_ref(a.block)}, {"function", a.function.name()}, {"at", point(a.at)}});
+  std::string& item = item_;
+  char head[128];
+  char* p = text::put(head, "{\"at\":");
+  p = put_point(p, a.at);
+  p = text::put(p, ",\"block\":");
+  p = a.block ? put_integer(p, *a.block) : text::put(p, "null");
+  item.assign(head, p);
+  append_key(item, "function");
+  append_string(item, a.function.name());
+  append_key(item, "line");
+  text::append_integer(item, a.line);
+  item += '}';
+  actions_.append(item);
 }
 
 void JsonWriter::decision(const Decision& d) {
   if (!with_trace_) return;
-  json j{{"clause", d.clause}, {"line", d.line}, {"branch", d.branch}};
-  if (d.has_margin) {
-    if (!d.margin_exact.empty())
-      j["margin_exact"] = d.margin_exact;
-    else
-      j["margin"] = clean(d.margin);
+  std::string& item = item_;
+  item = "{\"branch\":";
+  append_string(item, d.branch);
+  append_key(item, "clause");
+  append_string(item, d.clause);
+  append_key(item, "line");
+  text::append_integer(item, d.line);
+  if (d.has_margin && !d.margin_exact.empty()) {
+    append_key(item, "margin_exact");
+    append_string(item, d.margin_exact);
+  } else if (d.has_margin) {
+    append_key(item, "margin");
+    char number[32];
+    item.append(number, put_number(number, d.margin));
   }
-  append(decisions_, j);
+  item += '}';
+  decisions_.append(item);
 }
 
 void JsonWriter::alarm(const Alarm& a) {
@@ -170,11 +178,19 @@ void JsonWriter::notice(const Notice& n) {
 }
 
 void JsonWriter::sar_variables(const SarVariables& v) {
-  append(variables_, json{{"line", v.line},
-                          {"block", block_ref(v.block)},
-                          {"$P_APR", point(v.p_apr)},
-                          {"$P_AEP", point(v.p_aep)},
-                          {"$P_APDV", v.p_apdv}});
+  char item[256];
+  char* p = text::put(item, "{\"$P_AEP\":");
+  p = put_point(p, v.p_aep);
+  p = text::put(p, ",\"$P_APDV\":");
+  p = put_integer(p, v.p_apdv);
+  p = text::put(p, ",\"$P_APR\":");
+  p = put_point(p, v.p_apr);
+  p = text::put(p, ",\"block\":");
+  p = v.block ? put_integer(p, *v.block) : text::put(p, "null");
+  p = text::put(p, ",\"line\":");
+  p = put_integer(p, v.line);
+  *p++ = '}';
+  variables_.append(std::string(item, p));
 }
 
 void JsonWriter::error(const std::string& file, int line, int column, const std::string& message) {

@@ -69,6 +69,70 @@ inline char* put(char* p, std::string_view s) {
   return p + s.size();
 }
 
+// put_shortest's short path: where v is the double nearest to a decimal of at most 6 places with
+// 1e-3 <= |v| < 1e9, that decimal ("12.0", "-0.25"); nullptr for any other v. m = |v| * 1e6 rounds to the decimal's
+// integer (m < 2^53, so m / 1e6 is correctly rounded and equals |v| exactly then; a wrong m fails that test), and as
+// decimals of at most 15 digits map to distinct doubles, its digits without trailing zeros are
+// the shortest that read back as v. Written at `p` (room for 20 characters).
+inline char* put_short_decimal(char* p, double v) {
+  double a = std::fabs(v);
+  if (!(a >= 1e-3 && a < 1e9)) return nullptr;
+  auto m = static_cast<std::uint64_t>(a * 1e6 + 0.5);  // a truncation: no rounding-mode call
+  if (static_cast<double>(m) / 1e6 != a) return nullptr;
+  std::uint64_t integer = m / 1000000, fraction = m % 1000000;
+  if (std::signbit(v)) *p++ = '-';
+  p = std::to_chars(p, p + 12, integer).ptr;
+  *p++ = '.';
+  if (fraction == 0) {
+    *p++ = '0';
+    return p;
+  }
+  int places = 6;
+  for (; fraction % 10 == 0; fraction /= 10) --places;
+  char* end = p + places;
+  for (char* q = end; q > p; fraction /= 10) *--q = static_cast<char>('0' + fraction % 10);
+  return end;
+}
+
+// A JSON number (docs/json-format.md): the shortest decimal that reads back as the same double,
+// and of those the nearest, as std::to_chars finds it, laid out as nlohmann::json lays out a
+// double: fixed for 1e-4 <= |v| < 1e15 ("12.0", "0.0012"), else "1.25e-05", "3e+20"; "-0.0" for
+// -0. (nlohmann's own Grisu2 digits are one longer for about one double in 2,000.) NaN and
+// infinities are no JSON numbers: the caller writes null. Written at `p` (room for 32
+// characters); returns the end.
+inline char* put_shortest(char* p, double v) {
+  if (char* end = put_short_decimal(p, v)) return end;
+  if (v == 0) return put(p, std::signbit(v) ? std::string_view("-0.0") : std::string_view("0.0"));
+  // std::to_chars's scientific form ("-d.ddde+XX") at p, rearranged in place.
+  char* end = std::to_chars(p, p + 32, v, std::chars_format::scientific).ptr;
+  if (!std::isfinite(v)) return end;
+  char* first = p + (*p == '-');  // the first digit
+  char* e = end - 4;              // 'e' before a sign and two or three digits
+  if (*e != 'e') --e;
+  int exponent = 0;
+  for (const char* q = e + 2; q < end; ++q) exponent = exponent * 10 + (*q - '0');
+  if (e[1] == '-') exponent = -exponent;
+  int point = exponent + 1;  // the decimal point's place after the first digit
+  if (point <= -4 || point > 15) return end;
+  // The digits ("d" or "d.ddd"), the '.' taken out.
+  int count = e - first > 1 ? static_cast<int>(e - first) - 1 : 1;
+  if (count > 1) std::memmove(first + 1, first + 2, static_cast<std::size_t>(count - 1));
+  if (point <= 0) {  // 0.[000]digits
+    std::memmove(first + 2 - point, first, static_cast<std::size_t>(count));
+    first[0] = '0', first[1] = '.';
+    for (int k = 0; k < -point; ++k) first[2 + k] = '0';
+    return first + 2 - point + count;
+  }
+  if (count <= point) {  // digits[000].0
+    for (int k = count; k < point; ++k) first[k] = '0';
+    first[point] = '.', first[point + 1] = '0';
+    return first + point + 2;
+  }
+  std::memmove(first + point + 1, first + point, static_cast<std::size_t>(count - point));  // dig.its
+  first[point] = '.';
+  return first + count + 1;
+}
+
 // `v` right-aligned in `width` characters at `p` ("{:>width}"); returns the end.
 inline char* put_right_integer(char* p, std::int64_t v, std::size_t width) {
   char digits[24];

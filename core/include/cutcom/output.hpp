@@ -41,8 +41,9 @@ class JsonWriter : public PathSink {
   SourceNames sources_;
   bool with_trace_;
   bool first_ = true;
-  std::string buffer_, text_;  // path elements not yet written; an origin's text (reused)
-  Decimal last_feed_;          // the feed written last, and its JSON text
+  std::string buffer_;  // path elements not yet written
+  std::string item_;    // an item of a list after the path (reused)
+  Decimal last_feed_;   // the feed written last, and its JSON text
   std::string last_feed_text_;
   SpillList actions_, decisions_, alarms_, notices_, variables_;  // serialized JSON array items
   std::string error_;                                             // serialized object, if any
