@@ -37,12 +37,24 @@ enum GGroup : unsigned {
   kGroupDialect = 1u << 9,      // group 47: G290 G291
 };
 
+// The common block (N, G0…G3, X Y Z, I J K, F with plain decimals) in one pass, into `out` as
+// reset: true when the whole line was read so, as WordLexer would read it; false leaves the line
+// to WordLexer (`out` partly written). plain_block.cpp.
+bool read_plain_block(std::string_view text, BlockWords& out);
+
 class WordLexer {
  public:
   WordLexer(std::string_view text, int line, BlockWords& out, const std::vector<std::string>& machine_cycles)
       : s_(text), line_(line), out_(out), machine_cycles_(machine_cycles) {}
 
   void run() {
+    out_.reset(line_);
+    if (read_plain_block(s_, out_)) return;
+    general();
+  }
+  // The line read word by word, every word of the vocabulary (run() leaves only the lines
+  // read_plain_block does not take to it).
+  void general() {
     out_.reset(line_);
     skip_space();
     if (peek() == '%') return;  // NC-WORD-1: file header %_N_…_MPF / %: not a block

@@ -70,6 +70,7 @@ struct AxisWord {
   bool present = false;
   Decimal value;
   ValueMode mode = ValueMode::kModal;
+  friend bool operator==(const AxisWord&, const AxisWord&) = default;
 };
 
 // An action: a word that does not move the geometry axes, executed where the engines place it
@@ -169,6 +170,7 @@ struct BlockWordFields {
   bool synchronized_action = false;    // NC-WORD-9: WHEN/WHENEVER/EVERY/FROM/DO … kept as an action
 
   bool programs_any_axis() const { return axis[0].present || axis[1].present || axis[2].present; }
+  friend bool operator==(const BlockWordFields&, const BlockWordFields&) = default;
 };
 
 // The fields are plain data, so that a block's reset is one copy of an empty block.

@@ -1,0 +1,146 @@
+// The common block's one-pass reading (core/src/plain_block.cpp) is the word lexer's: on every line
+// it takes, the same words, values and word count; every line the lexer rejects, it leaves to it.
+// Lines: generated ones near the edges of what it takes, and every line of the repository's
+// programs and of the fuzz corpus.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../core/src/word_lexer.hpp"
+#include "cutcom/input_error.hpp"
+
+namespace {
+
+using cutcom::BlockWords;
+
+struct Reading {
+  bool rejected = false;
+  BlockWords words;
+};
+
+Reading general(const std::string& line) {
+  Reading r;
+  std::vector<std::string> cycles;
+  try {
+    cutcom::lexer::WordLexer(line, 7, r.words, cycles).general();
+  } catch (const cutcom::InputError&) {
+    r.rejected = true;
+  }
+  return r;
+}
+
+// Returns whether the one pass took the line.
+bool expect_same_reading(const std::string& line) {
+  BlockWords plain;
+  plain.reset(7);
+  bool taken = cutcom::lexer::read_plain_block(line, plain);
+  if (!taken) return false;
+  Reading g = general(line);
+  EXPECT_FALSE(g.rejected) << "taken, but the lexer rejects: " << line;
+  if (g.rejected) return true;
+  EXPECT_TRUE(static_cast<const cutcom::BlockWordFields&>(plain) ==
+              static_cast<const cutcom::BlockWordFields&>(g.words))
+      << line;
+  EXPECT_EQ(g.words.aux_count, 0) << line;
+  EXPECT_EQ(g.words.tool_data_count, 0) << line;
+  EXPECT_EQ(g.words.tool_names_count, 0) << line;
+  EXPECT_FALSE(g.words.contour.has_value()) << line;
+  EXPECT_FALSE(g.words.tool_name.has_value()) << line;
+  EXPECT_TRUE(g.words.not_simulated.empty()) << line;
+  return true;
+}
+
+std::string pick(std::mt19937_64& random, const std::vector<std::string>& from) {
+  return from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(random)];
+}
+
+std::string digits(std::mt19937_64& random, int count) {
+  std::string d;
+  for (int k = 0; k < count; ++k) d += static_cast<char>('0' + random() % 10);
+  return d;
+}
+
+// A value near the edges of the plain decimals: signs, points alone, 0 to 14 integer and 0 to
+// 11 fraction digits, trailing zeros.
+std::string value(std::mt19937_64& random) {
+  std::string v = pick(random, {"", "", "", "-", "+", "--"});
+  v += digits(random, std::uniform_int_distribution<int>(0, 14)(random) % (random() % 3 ? 5 : 15));
+  if (random() % 2) {
+    v += pick(random, {".", ".", ".", "..", "._"});
+    v += digits(random, static_cast<int>(random() % 12));
+    if (random() % 5 == 0) v += "000";
+  }
+  return v;
+}
+
+// covers: NC-LEX-1 NC-LEX-2 NC-LEX-5
+TEST(PlainBlock, GeneratedLinesReadAsTheLexerReadsThem) {
+  std::mt19937_64 random(20261129);
+  const std::vector<std::string> letters = {"N", "G", "X", "Y", "Z", "I",  "J",   "K",   "F", "n", "g",  "x", "y",
+                                            "z", "i", "j", "k", "f", "X",  "Y",   "G",   "M", "H", "S",  "T", "D",
+                                            "A", "R", "L", "P", "E", "FA", "X1=", "I1=", "$", "/", "CR="};
+  const std::vector<std::string> between = {" ", " ", "", "\t", "  ", " ;x", "=", "*", "\r", "(", ":", " = "};
+  long taken = 0, lines = 0;
+  for (int k = 0; k < 200000; ++k) {
+    std::string line = random() % 8 == 0 ? pick(random, {" ", "/", ":1 ", "LABEL: ", ";"}) : "";
+    int words = static_cast<int>(random() % 7);
+    for (int w = 0; w < words; ++w) {
+      std::string letter = pick(random, letters);
+      line += letter;
+      if (letter == "G" || letter == "g")
+        line += random() % 4 ? std::to_string(random() % 5) : pick(random, {"01", "03", "0", "4", "17", "1.0", " 1"});
+      else
+        line += value(random);
+      line += pick(random, between);
+    }
+    line += pick(random, {"", "", "; comment with X1 = ( and $", "\r", " ", "=", "*2", "$A", "_"});
+    ++lines;
+    taken += expect_same_reading(line);
+    if (HasFailure()) return;
+  }
+  // The generator reaches both sides: a good share taken, and many left to the lexer.
+  EXPECT_GT(taken, lines / 20);
+  EXPECT_LT(taken, lines - lines / 20);
+}
+
+// covers: NC-LEX-1 NC-LEX-2 NC-LEX-5
+TEST(PlainBlock, TakesTheCommonBlocks) {
+  for (const char* line : {"N120 G1 X12.5 Y-3 F800", "G01X1.Y2.", "g2 x4 y0 i1 j0 ; a comment", "X-.5", "",
+                           "; only a comment", "G0 Z+5.000000000", "N999999999999 X999999999999.999999999", "F-0"}) {
+    EXPECT_TRUE(expect_same_reading(line)) << line;
+  }
+  // Left to the lexer: other words, a space before the value, a word twice, a tenth decimal
+  // place, a 13th integer digit, a negative feed, an expression, a label.
+  for (const char* line : {"G4 F2", "X 10", "X1 X2", "X1.1234567891", "X1234567890123", "F-5", "X1+2", "G1 X=5",
+                           "LABEL: X1", "X1 M3", "G1.0 X1", "N1.5", "X1.2.3", "X1_", "X.", "X"}) {
+    BlockWords out;
+    out.reset(1);
+    EXPECT_FALSE(cutcom::lexer::read_plain_block(line, out)) << line;
+  }
+}
+
+// covers: NC-LEX-1
+TEST(PlainBlock, EveryLineOfTheRepositorysProgramsReadsAlike) {
+  long lines = 0;
+  for (const char* dir :
+       {CUTCOM_SOURCE_DIR "/tests", CUTCOM_SOURCE_DIR "/examples", CUTCOM_SOURCE_DIR "/fuzz/corpus"}) {
+    if (!std::filesystem::exists(dir)) continue;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+      if (!e.is_regular_file()) continue;
+      std::ifstream in(e.path(), std::ios::binary);
+      std::string line;
+      while (std::getline(in, line)) {
+        expect_same_reading(line);
+        ++lines;
+      }
+      if (HasFailure()) return;
+    }
+  }
+  EXPECT_GT(lines, 1000);
+}
+
+}  // namespace
