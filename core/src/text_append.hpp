@@ -3,6 +3,8 @@
 // The digits are those of std::to_chars, which print correctly rounded values, as fmt's did.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -95,42 +97,47 @@ inline char* put_short_decimal(char* p, double v) {
 }
 
 // A JSON number (docs/json-format.md): the shortest decimal that reads back as the same double,
-// and of those the nearest, as std::to_chars finds it, laid out as nlohmann::json lays out a
-// double: fixed for 1e-4 <= |v| < 1e15 ("12.0", "0.0012"), else "1.25e-05", "3e+20"; "-0.0" for
-// -0. (nlohmann's own Grisu2 digits are one longer for about one double in 2,000.) NaN and
+// and of those the nearest (Dragonbox, through fmt, which prints its doubles by it; the digits
+// are std::to_chars's, tests/text_append_test.cpp), laid out as nlohmann::json lays out a double:
+// fixed for 1e-4 <= |v| < 1e15 ("12.0", "0.0012"), else "1.25e-05", "3e+20"; "-0.0" for -0.
+// (nlohmann's own Grisu2 digits are one longer for about one double in 2,000.) NaN and
 // infinities are no JSON numbers: the caller writes null. Written at `p` (room for 32
 // characters); returns the end.
 inline char* put_shortest(char* p, double v) {
   if (char* end = put_short_decimal(p, v)) return end;
   if (v == 0) return put(p, std::signbit(v) ? std::string_view("-0.0") : std::string_view("0.0"));
-  // std::to_chars's scientific form ("-d.ddde+XX") at p, rearranged in place.
-  char* end = std::to_chars(p, p + 32, v, std::chars_format::scientific).ptr;
-  if (!std::isfinite(v)) return end;
-  char* first = p + (*p == '-');  // the first digit
-  char* e = end - 4;              // 'e' before a sign and two or three digits
-  if (*e != 'e') --e;
-  int exponent = 0;
-  for (const char* q = e + 2; q < end; ++q) exponent = exponent * 10 + (*q - '0');
-  if (e[1] == '-') exponent = -exponent;
-  int point = exponent + 1;  // the decimal point's place after the first digit
-  if (point <= -4 || point > 15) return end;
-  // The digits ("d" or "d.ddd"), the '.' taken out.
-  int count = e - first > 1 ? static_cast<int>(e - first) - 1 : 1;
-  if (count > 1) std::memmove(first + 1, first + 2, static_cast<std::size_t>(count - 1));
+  if (!std::isfinite(v)) return std::to_chars(p, p + 32, v).ptr;
+  auto decimal = fmt::detail::dragonbox::to_decimal(std::fabs(v));  // significand * 10^exponent
+  char digits[24];
+  char* last = std::to_chars(digits, digits + sizeof digits, decimal.significand).ptr;
+  int count = static_cast<int>(last - digits);
+  int point = count + decimal.exponent;  // the decimal point's place after the first digit
+  if (std::signbit(v)) *p++ = '-';
+  if (point <= -4 || point > 15) {  // d.ddde+XX
+    *p++ = digits[0];
+    if (count > 1) *p++ = '.', p = put(p, std::string_view(digits + 1, static_cast<std::size_t>(count - 1)));
+    int exponent = point - 1;
+    *p++ = 'e';
+    *p++ = exponent < 0 ? '-' : '+';
+    if (exponent < 0) exponent = -exponent;
+    if (exponent >= 100) *p++ = static_cast<char>('0' + exponent / 100), exponent %= 100;
+    std::memcpy(p, kPairs + 2 * exponent, 2);
+    return p + 2;
+  }
   if (point <= 0) {  // 0.[000]digits
-    std::memmove(first + 2 - point, first, static_cast<std::size_t>(count));
-    first[0] = '0', first[1] = '.';
-    for (int k = 0; k < -point; ++k) first[2 + k] = '0';
-    return first + 2 - point + count;
+    *p++ = '0', *p++ = '.';
+    for (int k = point; k < 0; ++k) *p++ = '0';
+    return put(p, std::string_view(digits, static_cast<std::size_t>(count)));
   }
   if (count <= point) {  // digits[000].0
-    for (int k = count; k < point; ++k) first[k] = '0';
-    first[point] = '.', first[point + 1] = '0';
-    return first + point + 2;
+    p = put(p, std::string_view(digits, static_cast<std::size_t>(count)));
+    for (int k = count; k < point; ++k) *p++ = '0';
+    *p++ = '.', *p++ = '0';
+    return p;
   }
-  std::memmove(first + point + 1, first + point, static_cast<std::size_t>(count - point));  // dig.its
-  first[point] = '.';
-  return first + count + 1;
+  p = put(p, std::string_view(digits, static_cast<std::size_t>(point)));  // dig.its
+  *p++ = '.';
+  return put(p, std::string_view(digits + point, static_cast<std::size_t>(count - point)));
 }
 
 // `v` right-aligned in `width` characters at `p` ("{:>width}"); returns the end.
