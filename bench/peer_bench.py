@@ -398,7 +398,8 @@ def instruction_rows(a, tmp):
     empty = os.path.join(tmp, "empty.mpf")
     with open(empty, "w") as f:
         f.write("M30\n")
-    base = {mode: instructions_of([a.block_instructions, empty, *mode]) for mode in ((), ("--reader",))}
+    modes = ((), ("--reader",), ("--text",), ("--json",))
+    base = {mode: instructions_of([a.block_instructions, empty, *mode]) for mode in modes}
     rows = []
     for kind, make in KINDS.items():
         moves = make(a.instruction_blocks)
@@ -407,11 +408,13 @@ def instruction_rows(a, tmp):
             with open(path, "w") as f:
                 f.write(sinumerik_program(moves, cdon))
             blocks = sum(1 for _ in open(path))
-            reader = (instructions_of([a.block_instructions, path, "--reader"]) - base[("--reader",)]) / blocks
-            total = (instructions_of([a.block_instructions, path]) - base[()]) / blocks
-            rows.append((f"{kind}{', CDON' if cdon else ''}", blocks, reader, total - reader, total))
+            per_block = {mode: (instructions_of([a.block_instructions, path, *mode]) - base[mode]) / blocks
+                         for mode in modes}
+            reader, total = per_block[("--reader",)], per_block[()]
+            text, js = per_block[("--text",)] - total, per_block[("--json",)] - total
+            rows.append((f"{kind}{', CDON' if cdon else ''}", blocks, reader, total - reader, total, text, js))
             print(f"instructions per block, {rows[-1][0]:22} reader {reader:.0f}, fast {total - reader:.0f}, "
-                  f"together {total:.0f}")
+                  f"together {total:.0f}, text writer {text:.0f}, JSON writer {js:.0f}")
     return rows
 
 
@@ -482,10 +485,13 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
         lines += ["", "## Instructions per block", "",
                   "`bench/block_instructions` under valgrind (callgrind's count, the cost of starting the "
                   "process taken out): the reader alone, then the reader and the fast engine on one thread, "
-                  "without output. Unlike times, these counts do not move with the machine's load, so they "
-                  "measure small changes.", "",
-                  "| contour | blocks | reader | fast engine | together |", "|---|---|---|---|---|"]
-        lines += [f"| {label} | {n} | {r:.0f} | {e:.0f} | {t:.0f} |" for label, n, r, e, t in instructions]
+                  "without output; the writers' share is what writing the text or the JSON document (to a "
+                  "stream that drops it) adds on the same thread. Unlike times, these counts do not move with "
+                  "the machine's load, so they measure small changes.", "",
+                  "| contour | blocks | reader | fast engine | together | text writer | JSON writer |",
+                  "|---|---|---|---|---|---|---|"]
+        lines += [f"| {label} | {n} | {r:.0f} | {e:.0f} | {t:.0f} | {tw:.0f} | {jw:.0f} |"
+                  for label, n, r, e, t, tw, jw in instructions]
     lines.append("")
     with open(os.path.join(docs, "performance.md"), "w") as f:
         f.write("\n".join(lines))
