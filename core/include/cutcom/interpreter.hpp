@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cutcom/input_error.hpp"
+#include "cutcom/line_buffer.hpp"
 
 namespace cutcom {
 
@@ -237,7 +238,8 @@ class Interpreter {
     std::string path;  // a subprogram's file as found
     std::string name;  // the file, for messages ("" for the main program)
     LineCache* cache = nullptr;
-    mutable std::streamoff stream_at = -1;        // where `in` stands (-1: to be sought)
+    mutable std::streamoff stream_at = -1;        // where `lines` stands in `in` (-1: to be sought)
+    LineBuffer lines;                             // `in` read ahead
     std::streamoff offset = 0, start_offset = 0;  // of the next line, of the text's start
     std::streamoff line_start = 0;                // of the line just read
     int line = 0;
