@@ -21,8 +21,8 @@ class LineBuffer {
   bool next(std::istream& in, std::string& text) {
     std::size_t searched = begin_;  // what holds no '\n' is not searched again
     while (true) {
-      const char* data = data_.data();
-      const void* newline = std::memchr(data + searched, '\n', end_ - searched);
+      const char* data = data_.data();  // null before the first read: nothing to search then
+      const void* newline = end_ > searched ? std::memchr(data + searched, '\n', end_ - searched) : nullptr;
       if (newline) {
         auto at = static_cast<std::size_t>(static_cast<const char*>(newline) - data);
         text.assign(data + begin_, at - begin_);
