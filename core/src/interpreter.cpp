@@ -53,8 +53,7 @@ bool Interpreter::getline(std::string& text) {
   if (c.in == last_in_ && last_level_ != stack_.size()) c.stream_at = -1;  // another level read it
   last_in_ = c.in, last_level_ = stack_.size();
   if (c.stream_at != c.offset) {
-    c.lines.reset();
-    c.in->clear();
+    c.lines.reset(), c.in->clear();
     c.in->seekg(c.offset);
     if (!*c.in) throw InputError(c.line, 1, "a jump needs a program that can be read again (a file, not a pipe)");
   }

@@ -2,9 +2,8 @@
 // F with plain decimals ("N120 G1 X12.5 Y-3 F800", "G01X1.Y2.", "g2 x4 y0 i1 j0 ; a comment").
 // It fills the block's words exactly as the word lexer does (NC-LEX-*, NC-WORD-*: the same
 // values, the same word count), or leaves the line to it: anything else on the line, a word
-// twice, a negative feed, a number the lexer would reject or read in its own way (more than 12
-// integer or 9 fraction digits, a sign or a point after it) all go to the lexer, which reads or
-// rejects them with its message. tests/plain_block_test.cpp holds the two readings equal.
+// twice, a negative feed, a number the lexer rejects or reads in its own way (an expression
+// after it) all go to the lexer, which reads or rejects them with its message. tests/plain_block_test.cpp holds the two readings equal.
 #include <cstdint>
 
 #include "word_lexer.hpp"
@@ -14,30 +13,16 @@ namespace cutcom::lexer {
 namespace {
 constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// [+-]digits[.digits] or [+-].digits at p, its end a word's (not a digit, point, '_', sign, '*'
-// or '/'); false to leave it to Decimal::parse and the lexer's checks.
+// A number at p as WordLexer::number takes it (a sign, then digits and points, valued by
+// Decimal::parse), its end a word's (not '_', a sign, '*' or '/'); false leaves it to the lexer.
 bool plain_number(const char*& p, const char* end, Decimal& out) {
-  bool negative = false;
-  if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
-  std::uint64_t integer = 0, fraction = 0;
-  int integer_digits = 0, fraction_digits = 0;
-  for (; p < end && is_digit(*p); ++p, ++integer_digits) {
-    if (integer_digits == 12) return false;  // 10^12 and above: the lexer's range check
-    integer = integer * 10 + static_cast<std::uint64_t>(*p - '0');
-  }
-  if (p < end && *p == '.') {
-    for (++p; p < end && is_digit(*p); ++p, ++fraction_digits) {
-      if (fraction_digits == Decimal::kFractionDigits) return false;  // the lexer's rule on a tenth place
-      fraction = fraction * 10 + static_cast<std::uint64_t>(*p - '0');
-    }
-  }
-  if (integer_digits + fraction_digits == 0) return false;
-  if (p < end && (*p == '.' || *p == '_' || *p == '+' || *p == '-' || *p == '*' || *p == '/')) return false;
-  static constexpr std::uint64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
-                                             10'000,        1'000,       100,        10,        1};
-  static_assert(Decimal::kFractionDigits == 9);
-  Int128 units = Int128(integer) * Decimal::kUnitsPerOne + Int128(fraction * kScale[fraction_digits]);
-  out = Decimal::from_units(negative ? -units : units);
+  const char* from = p;
+  if (p < end && (*p == '+' || *p == '-')) ++p;
+  while (p < end && (is_digit(*p) || *p == '.')) ++p;
+  Decimal::ParseResult r = Decimal::parse(std::string_view(from, static_cast<std::size_t>(p - from)));
+  if (!r.value) return false;
+  if (p < end && (*p == '_' || *p == '+' || *p == '-' || *p == '*' || *p == '/')) return false;
+  out = *r.value;
   return true;
 }
 
