@@ -16,56 +16,14 @@ Decimal Decimal::scaled(std::int64_t num, std::int64_t den, bool* exact) const {
   return checked(q);
 }
 
-// The digits are summed in 64 bits (the reader's hot path): the integer part stops at 10^12 and
-// the fraction has at most nine digits, far inside the range; units go to 128 bits once.
 Decimal::ParseResult Decimal::parse(std::string_view s) {
-  constexpr std::uint64_t kMaxInteger = static_cast<std::uint64_t>(kMaxUnits / kUnitsPerOne);
   ParseResult r;
-  std::size_t i = 0;
-  bool negative = false;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
-  std::uint64_t integer = 0;
-  int int_digits = 0;
-  while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
-    integer = integer * 10 + static_cast<std::uint64_t>(s[i++] - '0');
-    if (integer > kMaxInteger) {
-      r.error = ParseError::kOutOfRange;
-      return r;
-    }
-    ++int_digits;
-  }
-  std::uint64_t fraction = 0;
-  int frac_digits = 0;
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
-      if (frac_digits == kFractionDigits) {
-        // Trailing zeros beyond nine places change nothing; anything else cannot be held exactly.
-        if (s[i] != '0') {
-          r.error = ParseError::kTooManyDecimals;
-          return r;
-        }
-        ++i;
-        continue;
-      }
-      fraction = fraction * 10 + static_cast<std::uint64_t>(s[i++] - '0');
-      ++frac_digits;
-    }
-  }
-  if (i != s.size() || (int_digits == 0 && frac_digits == 0)) {
-    r.error = ParseError::kSyntax;
-    return r;
-  }
-  static constexpr std::uint64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
-                                             10'000,        1'000,       100,        10,        1};
-  static_assert(kFractionDigits == 9);
-  fraction *= kScale[frac_digits];
-  Int128 units = Int128(integer) * kUnitsPerOne + Int128(fraction);
-  if (units > kMaxUnits) {
-    r.error = ParseError::kOutOfRange;
-    return r;
-  }
-  r.value = from_units(negative ? -units : units);
+  const char* p = s.data();
+  const char* end = p + s.size();
+  Decimal v;
+  if (!read(p, end, v, r.error)) return r;
+  if (p != end) return r;  // kSyntax: something after the number
+  r.value = v;
   return r;
 }
 

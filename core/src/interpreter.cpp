@@ -148,9 +148,10 @@ void Interpreter::seek(std::streamoff to, int line) {
   cx().line = line;
 }
 
-bool Interpreter::maybe_parametric(std::string_view s) {
-  // One table look-up per character (every line of a program passes here).
-  enum : std::uint8_t { kName = 1, kAssign = 2, kComment = 4, kCall = 8 };
+bool Interpreter::maybe_parametric(const std::string& s) {
+  // One table look-up per character (every line of a program passes here); the runs of digits,
+  // signs, points and spaces between letters are skipped up to the string's terminating NUL.
+  enum : std::uint8_t { kName = 1, kAssign = 2, kComment = 4, kCall = 8, kNul = 16 };
   static constexpr std::array<std::uint8_t, 256> kClass = [] {
     std::array<std::uint8_t, 256> t{};
     for (int c = 0; c < 256; ++c)
@@ -158,23 +159,27 @@ bool Interpreter::maybe_parametric(std::string_view s) {
     t['='] = t[':'] = kAssign;
     t[';'] = kComment;
     t['L'] |= kCall, t['l'] |= kCall;
+    t[0] = kNul;
     return t;
   }();
-  bool letter = false;
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    std::uint8_t c = kClass[static_cast<unsigned char>(s[k])];
-    if (c == 0) {
-      letter = false;
+  const auto* p = reinterpret_cast<const unsigned char*>(s.c_str());
+  const auto* end = p + s.size();
+  while (true) {
+    while (kClass[*p] == 0) ++p;
+    std::uint8_t c = kClass[*p];
+    if (c & kNul) {
+      if (p == end) return false;
+      ++p;  // a NUL inside the line: nothing, as any other character of class 0
       continue;
     }
-    if (c & kComment) return false;
-    if (c & kAssign) return true;
-    if (letter) return true;  // two letters: a name
+    if (c & (kComment | kAssign)) return (c & kAssign) != 0;
+    if (kClass[p[1]] & kName) return true;  // two letters: a name (p[1] is at most the final NUL)
     // Ln: a subprogram call (NC-PARAM-SUB-1)
-    if ((c & kCall) && k + 1 < s.size() && is_digit(s[k + 1]) && (k == 0 || !is_name_char(s[k - 1]))) return true;
-    letter = true;
+    if ((c & kCall) && is_digit(static_cast<char>(p[1])) &&
+        (p == reinterpret_cast<const unsigned char*>(s.c_str()) || !is_name_char(static_cast<char>(p[-1]))))
+      return true;
+    ++p;
   }
-  return false;
 }
 
 Interpreter::Variable* Interpreter::find_variable(const std::string& name) {

@@ -13,11 +13,11 @@ constexpr std::size_t kFlushSize = 1 << 16;
 char* put_point(char* p, const PathPoint& point) {
   auto c = [](double v) { return v == 0 ? 0.0 : v; };
   *p++ = '(';
-  p = text::put_fixed(p, c(point.x), 4);
+  p = text::put_fixed<4>(p, c(point.x));
   p = text::put(p, ", ");
-  p = text::put_fixed(p, c(point.y), 4);
+  p = text::put_fixed<4>(p, c(point.y));
   p = text::put(p, ", ");
-  p = text::put_fixed(p, c(point.z), 4);
+  p = text::put_fixed<4>(p, c(point.z));
   *p++ = ')';
   return p;
 }

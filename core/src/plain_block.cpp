@@ -3,7 +3,8 @@
 // It fills the block's words exactly as the word lexer does (NC-LEX-*, NC-WORD-*: the same
 // values, the same word count), or leaves the line to it: anything else on the line, a word
 // twice, a negative feed, a number the lexer rejects or reads in its own way (an expression
-// after it) all go to the lexer, which reads or rejects them with its message. tests/plain_block_test.cpp holds the two readings equal.
+// after it) all go to the lexer, which reads or rejects them with its message. tests/plain_block_test.cpp holds the two
+// readings equal.
 #include <cstdint>
 
 #include "word_lexer.hpp"
@@ -13,17 +14,14 @@ namespace cutcom::lexer {
 namespace {
 constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// A number at p as WordLexer::number takes it (a sign, then digits and points, valued by
-// Decimal::parse), its end a word's (not '_', a sign, '*' or '/'); false leaves it to the lexer.
+// A number at p as WordLexer::number takes it (a sign, then digits and points, valued as
+// Decimal::parse values them), its end a word's (not '_', a sign, '*' or '/'); false leaves it to
+// the lexer.
 bool plain_number(const char*& p, const char* end, Decimal& out) {
-  const char* from = p;
-  if (p < end && (*p == '+' || *p == '-')) ++p;
-  while (p < end && (is_digit(*p) || *p == '.')) ++p;
-  Decimal::ParseResult r = Decimal::parse(std::string_view(from, static_cast<std::size_t>(p - from)));
-  if (!r.value) return false;
-  if (p < end && (*p == '_' || *p == '+' || *p == '-' || *p == '*' || *p == '/')) return false;
-  out = *r.value;
-  return true;
+  Decimal::ParseError error;
+  if (!Decimal::read(p, end, out, error)) return false;
+  // A second point belongs to the lexer's span (Decimal::parse rejects it there).
+  return !(p < end && (*p == '.' || *p == '_' || *p == '+' || *p == '-' || *p == '*' || *p == '/'));
 }
 
 // Digits alone (N, G), as WordLexer::integer reads them directly: at most 12, not followed by a

@@ -30,6 +30,14 @@ Decimal ProgramReader::frame_value(int axis, const AxisWord& aw, const Decimal& 
   return absolute ? v : current + v;
 }
 
+bool ProgramReader::values_as_written() const {
+  const Decimal one = Decimal::from_int(1);
+  return (units_ == Units::kG71 || units_ == Units::kG710) && diameter_ == DiameterMode::kDiamof &&
+         frame_.factor[0] == one && frame_.factor[1] == one && frame_.factor[2] == one && frame_.shift[0].is_zero() &&
+         frame_.shift[1].is_zero() && frame_.shift[2].is_zero() && offset_difference_.x.is_zero() &&
+         offset_difference_.y.is_zero() && offset_difference_.z.is_zero();
+}
+
 void ProgramReader::update_programmed(const BlockWords& w, bool absolute_mode) {
   for (int a = 0; a < 3; ++a) {
     const AxisWord& aw = w.axis[static_cast<std::size_t>(a)];

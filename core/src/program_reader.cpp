@@ -199,6 +199,9 @@ Decimal ProgramReader::length(const Decimal& v) const {
 
 Decimal ProgramReader::to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute,
                                bool distance) const {
+  // The common case (no frame, offset, inch or diameter value in force): the value is the position,
+  // as the steps below would compute it (the reader's hot path: every coordinate of every block).
+  if (as_written_) return absolute ? aw.value : current + aw.value;
   std::size_t a = static_cast<std::size_t>(axis);
   Decimal scaled = frame_value(axis, aw, Decimal{}, absolute, distance).times(frame_.factor[a]);
   if (!absolute) return current + scaled;
@@ -502,6 +505,7 @@ void ProgramReader::resolve(Block& b) {
   effective_ = eff;
 
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
+  as_written_ = values_as_written();
   b.start = position_;
   Point3 end = position_;
   bool frame_values = w.frame.has_value() || w.cw().pole.has_value();  // the frame's or pole's values

@@ -29,35 +29,60 @@ inline constexpr char kPairs[] =
 // written at `p` (room for 352 characters); returns the end. Most values take a short path:
 // scaled by 10^places below 2^40 the product is within 2^-13 of the exact one, so unless its
 // fraction lies within 1e-3 of one half, rounding it to an integer gives to_chars's correctly
-// rounded digits; the rest (ties, huge values, NaN) go to to_chars.
-inline char* put_fixed(char* p, double v, int places) {
-  static constexpr double kScale[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
-  static constexpr std::uint64_t kPower[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
-  if (places >= 0 && places <= 6) {
-    double y = std::fabs(v) * kScale[places];
-    if (y < 1099511627776.0) {  // 2^40; false for NaN and infinities
-      double whole = std::floor(y);
-      double fraction = y - whole;  // exact
-      if (std::fabs(fraction - 0.5) > 1e-3) {
-        std::uint64_t n = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
-        std::uint64_t integer = n / kPower[places];
-        std::uint64_t fixed = n % kPower[places];
-        if (std::signbit(v)) *p++ = '-';
-        int length = 1;
-        for (std::uint64_t k = integer; k >= 10; k /= 10) ++length;
-        char* end = p + length + (places > 0 ? places + 1 : 0);
-        char* q = end;
-        int k = 0;
-        for (; k + 2 <= places; k += 2, fixed /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (fixed % 100), 2);
-        if (k < places) *--q = static_cast<char>('0' + fixed % 10);
-        if (places > 0) *--q = '.';
-        for (; integer >= 10; integer /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (integer % 100), 2);
-        if (q > p) *--q = static_cast<char>('0' + integer);
-        return end;
-      }
+// rounded digits; the rest (ties, huge values, NaN) go to to_chars. The places are a template
+// argument so that the divisions by 10^places are by a constant (the text writer's four).
+template <int kPlaces>
+inline char* put_fixed(char* p, double v) {
+  static_assert(kPlaces >= 0 && kPlaces <= 6);
+  constexpr std::uint64_t kPower = [] {
+    std::uint64_t power = 1;
+    for (int k = 0; k < kPlaces; ++k) power *= 10;
+    return power;
+  }();
+  double y = std::fabs(v) * static_cast<double>(kPower);      // 10^places is exact
+  if (y < 1099511627776.0) {                                  // 2^40; false for NaN and infinities
+    std::uint64_t truncated = static_cast<std::uint64_t>(y);  // the floor: 0 <= y < 2^40
+    double fraction = y - static_cast<double>(truncated);     // exact
+    if (std::fabs(fraction - 0.5) > 1e-3) {
+      std::uint64_t n = truncated + (fraction > 0.5 ? 1 : 0);
+      std::uint64_t integer = n / kPower;
+      std::uint64_t fixed = n % kPower;
+      if (std::signbit(v)) *p++ = '-';
+      int length = 1;
+      for (std::uint64_t k = integer; k >= 10; k /= 10) ++length;
+      char* end = p + length + (kPlaces > 0 ? kPlaces + 1 : 0);
+      char* q = end;
+      int k = 0;
+      for (; k + 2 <= kPlaces; k += 2, fixed /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (fixed % 100), 2);
+      if (k < kPlaces) *--q = static_cast<char>('0' + fixed % 10);
+      if (kPlaces > 0) *--q = '.';
+      for (; integer >= 10; integer /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (integer % 100), 2);
+      if (q > p) *--q = static_cast<char>('0' + integer);
+      return end;
     }
   }
-  return std::to_chars(p, p + 352, v, std::chars_format::fixed, places).ptr;
+  return std::to_chars(p, p + 352, v, std::chars_format::fixed, kPlaces).ptr;
+}
+
+inline char* put_fixed(char* p, double v, int places) {
+  switch (places) {
+    case 0:
+      return put_fixed<0>(p, v);
+    case 1:
+      return put_fixed<1>(p, v);
+    case 2:
+      return put_fixed<2>(p, v);
+    case 3:
+      return put_fixed<3>(p, v);
+    case 4:
+      return put_fixed<4>(p, v);
+    case 5:
+      return put_fixed<5>(p, v);
+    case 6:
+      return put_fixed<6>(p, v);
+    default:
+      return std::to_chars(p, p + 352, v, std::chars_format::fixed, places).ptr;
+  }
 }
 
 inline void append_fixed(std::string& out, double v, int places) {

@@ -10,6 +10,7 @@ namespace cutcom::fast {
 
 bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
   en.element = element_of(m);
+  en.radius = 0, en.lead = Entry::Lead::kNone;  // `en` is reused from block to block
   en.before = origin(before, OriginKind::kOffset);
   const Element& next = en.element;
   double sr = s * r;
@@ -110,7 +111,7 @@ bool Compensation::is_candidate(const HeldRecord& rec) {
 bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (r == 0) return false;  // no width: nothing to collide
   int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
-  Entry entry;
+  Entry& entry = entry_scratch;
   int state = 0;                                           // 0: not built, 1: built, -1: none
   double near = -std::numeric_limits<double>::infinity();  // the largest near miss
   bool overlap = false;                                    // collinear pieces overlap (a miss of 0)

@@ -222,6 +222,15 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   return true;
 }
 
+double Compensation::scale_over_size(const BlockCopy& c) const {
+  std::size_t k = &c == &prev_blocks[0] ? 0 : &c == &prev_blocks[1] ? 1 : 2;
+  if (k == 2) return cutcom::fast::scale_over_size(c, axes);
+  SlotElement& m = slot_elements[k];
+  if (m.scale < 0 || m.scale_axes.abscissa != axes.abscissa || m.scale_axes.ordinate != axes.ordinate)
+    m.scale = cutcom::fast::scale_over_size(c, axes), m.scale_axes = axes;
+  return m.scale;
+}
+
 void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
   if (first.tangent_after || second.tangent_before) {  // SAR-POINTS-1/2: tangent by construction
     c.kind = Corner::Kind::kTangent, c.sine = 0;
@@ -230,7 +239,7 @@ void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& 
   // The filter: a double sine further from 0 than rounding can carry it has the exact sign, which
   // the integers below would only confirm (few ulps times scale over size; 2^-24 leaves 10^8).
   if (!first.exact || !second.exact) return;  // a SAR block: the double decision stands
-  if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first, axes) + scale_over_size(second, axes))) return;
+  if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first) + scale_over_size(second))) return;
   // Lines and circles with a centre: the tangents are integer vectors (exact_tangent.hpp).
   std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
   int cross = 0, dot = 0;

@@ -121,6 +121,8 @@ class Compensation {
     bool valid = false;
     PlaneAxes axes{0, 1, 2};
     Element element;
+    double scale = -1;  // scale_over_size's, once asked for (-1: not yet)
+    PlaneAxes scale_axes{0, 1, 2};
   };
   mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
   mutable RootTangents root_tangents;                // decide_kind_exactly's and exact_side's GMP numbers
@@ -136,7 +138,7 @@ class Compensation {
   }
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
     for (std::size_t k = 0; k < 2; ++k)
-      if (&c == &prev_blocks[k]) slot_elements[k].valid = false;
+      if (&c == &prev_blocks[k]) slot_elements[k].valid = false, slot_elements[k].scale = -1;
     c.assign(b);
     c.seq = held.seq();
     if (&b == over_block) over.apply(c);
@@ -239,6 +241,9 @@ class Compensation {
   std::optional<ExactProducts> exact_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u) const;
 
   void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const;
+  // The block's largest coordinate over its size (decide_kind_exactly's filter), kept per slot
+  // as element_of keeps the element: the entry and the corner ask for it of the same blocks.
+  double scale_over_size(const BlockCopy& c) const;
 
   // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; a collapsed one is passed
   // over by the look-ahead.
@@ -371,6 +376,7 @@ class Compensation {
     int count = 0;
   };
   bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en);
+  Entry entry_scratch;  // bottleneck's, kept: constructing one per block cost more than its checks
 
   PathPiece piece_of(const HeldRecord& rec) const;
   PathPiece open_piece() const;

@@ -194,7 +194,7 @@ class Interpreter {
   std::map<std::string, LineCache> line_caches_;  // by file ("" for the main program)
   std::size_t cached_bytes_ = 0;
   // A line that may hold NC language beyond plain words (a cheap test on every line).
-  static bool maybe_parametric(std::string_view text);
+  static bool maybe_parametric(const std::string& text);
   // Runs one line's statements and assignments; `out` is the plain block (empty: none).
   void run_line(const std::string& text, std::string& out);
   bool statement(std::string_view keyword, std::string_view line, std::size_t rest);

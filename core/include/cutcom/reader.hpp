@@ -156,6 +156,10 @@ class ProgramReader final : public BlockSource, private SystemValues {
   Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
   Decimal length(const Decimal& v) const;  // the unit of a programmed length
   Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
+  // to_base is the identity on values: mm, no diameter value, no offset difference, a frame
+  // without scale or shift (its rotation is plane_definition's); taken once per block in resolve.
+  bool values_as_written() const;
+  bool as_written_ = false;
   // The translation of the settable offset in force relative to the first one, kept per change.
   const Point3& offset_difference() const { return offset_difference_; }
   void select_offset(int index);
