@@ -1,5 +1,7 @@
 #include "cutcom/path.hpp"
 
+#include <charconv>
+
 #include "text_append.hpp"
 
 namespace cutcom {
@@ -23,68 +25,61 @@ std::string_view origin_kind_name(OriginKind k) {
 }
 
 namespace {
-void append_block_name(std::string& out, int line, const std::optional<std::int64_t>& n) {
+// The description is written into a char buffer, not appended piece by piece to a string: the
+// writers describe every element of the path (issue "Performance").
+char* put_integer(char* p, std::int64_t v) { return std::to_chars(p, p + 24, v).ptr; }
+
+char* put_block_name(char* p, int line, const std::optional<std::int64_t>& n) {
   if (n) {
-    out += 'N';
-    text::append_integer(out, *n);
-  } else {
-    out += "line ";
-    text::append_integer(out, line);
+    *p++ = 'N';
+    return put_integer(p, *n);
   }
+  return put_integer(text::put(p, "line "), line);
 }
 
 // "N40", or for an inserted element "(rounding of N40/N50)", "(turn 2 of N60)" (NC-CONTOUR-*).
-void append_inserted_name(std::string& out, int line, const std::optional<std::int64_t>& block,
-                          const ContourInsert& insert) {
+char* put_inserted_name(char* p, int line, const std::optional<std::int64_t>& block, const ContourInsert& insert) {
   switch (insert.kind) {
     case InsertKind::kNone:
-      append_block_name(out, line, block);
-      return;
+      return put_block_name(p, line, block);
     case InsertKind::kRounding:
     case InsertKind::kChamfer:
-      out += insert.kind == InsertKind::kRounding ? "(rounding of " : "(chamfer of ";
-      append_block_name(out, line, block);
-      out += '/';
-      append_block_name(out, insert.next_line, insert.next_block);
-      out += ')';
-      return;
+      p = text::put(p, insert.kind == InsertKind::kRounding ? "(rounding of " : "(chamfer of ");
+      p = put_block_name(p, line, block);
+      *p++ = '/';
+      p = put_block_name(p, insert.next_line, insert.next_block);
+      *p++ = ')';
+      return p;
     case InsertKind::kTurn:
-      out += "(turn ";
-      text::append_integer(out, insert.turn);
-      out += " of ";
-      append_block_name(out, line, block);
-      out += ')';
-      return;
+      p = put_integer(text::put(p, "(turn "), insert.turn);
+      p = put_block_name(text::put(p, " of "), line, block);
+      *p++ = ')';
+      return p;
   }
+  return p;
 }
 
-void append_kind_description(std::string& out, const Origin& o) {
+char* put_kind_description(char* p, const Origin& o) {
   switch (o.kind) {
     case OriginKind::kProgrammed:
-      append_inserted_name(out, o.line, o.block, o.insert);
-      out += " without compensation";
-      return;
+      return text::put(put_inserted_name(p, o.line, o.block, o.insert), " without compensation");
     case OriginKind::kApproach:
-      out += "approach ";
+      p = text::put(p, "approach ");
       break;
     case OriginKind::kOffset:
-      out += "offset of ";
+      p = text::put(p, "offset of ");
       break;
     case OriginKind::kTransitionCircle:
-      out += "transition circle at corner ";
-      append_inserted_name(out, o.line, o.block, o.insert);
-      out += '/';
-      append_inserted_name(out, o.next_line, o.next_block, o.next_insert);
-      return;
+      p = put_inserted_name(text::put(p, "transition circle at corner "), o.line, o.block, o.insert);
+      *p++ = '/';
+      return put_inserted_name(p, o.next_line, o.next_block, o.next_insert);
     case OriginKind::kRetraction:
-      out += "retraction ";
+      p = text::put(p, "retraction ");
       break;
     case OriginKind::kInfeed:
-      append_inserted_name(out, o.line, o.block, o.insert);
-      out += " at the corner point";
-      return;
+      return text::put(put_inserted_name(p, o.line, o.block, o.insert), " at the corner point");
   }
-  append_inserted_name(out, o.line, o.block, o.insert);
+  return put_inserted_name(p, o.line, o.block, o.insert);
 }
 }  // namespace
 
@@ -107,12 +102,14 @@ std::string_view sar_move_name(SarMove m) {
 }
 
 void append_description(std::string& out, const Origin& o) {
-  append_kind_description(out, o);
+  // At most two inserted names of three block names of 20 digits each, and the words around them.
+  char buffer[320];
+  char* p = put_kind_description(buffer, o);
   if (o.sar != SarMove::kNone) {
-    out += " (SAR ";
-    out += sar_move_name(o.sar);
-    out += ')';
+    p = text::put(text::put(p, " (SAR "), sar_move_name(o.sar));
+    *p++ = ')';
   }
+  out.append(buffer, p);
 }
 
 std::string describe(const Origin& o) {
