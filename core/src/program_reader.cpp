@@ -483,7 +483,8 @@ void ProgramReader::resolve(Block& b) {
                     w.not_simulated));
 
   // The effective state of the block: a mirroring frame swaps G2/G3 and G41/G42 (NC-FRAME-3).
-  ModalState eff = s;
+  ModalState& eff = b.state;  // built in place: the block's own copy is the one kept
+  eff = s;
   if (tapping_block) eff.motion = Motion::kLinear;  // NC-WORD-12: G63 moves this block in a line
   {
     if (mirrors_plane(s.plane)) {
@@ -501,7 +502,6 @@ void ProgramReader::resolve(Block& b) {
         eff.sar_side = SarSide::kG141;
     }
   }
-  b.state = eff;
   effective_ = eff;
 
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
