@@ -188,6 +188,14 @@ def compare(a, b, tol=2e-4):
 # --- timing ---------------------------------------------------------------------------------
 
 
+def quartiles(values):
+    """First and third quartile (the median of each half's values)."""
+    if len(values) < 4:
+        return (min(values), max(values))
+    q = statistics.quantiles(values, n=4)
+    return (q[0], q[2])
+
+
 def timed(cmd):
     t = time.perf_counter()
     subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
@@ -235,7 +243,7 @@ def svg_chart(rows, path):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--blocks", type=int, default=200000)
-    ap.add_argument("--runs", type=int, default=11)
+    ap.add_argument("--runs", type=int, default=21)
     ap.add_argument("--cutcom", default="build/cli/cutcom")
     ap.add_argument("--rs274", default="rs274")
     ap.add_argument("--memory-blocks", default="10000,200000,2000000",
@@ -295,11 +303,14 @@ def main():
                 # run by run: a pair is timed back to back, so the machine's drift cancels out
                 "ratio": statistics.median(p / t for p, t in zip(t_peer, t_text)) if t_peer else None,
                 "ratio_json": statistics.median(p / t for p, t in zip(t_peer, t_json)) if t_peer else None,
+                # the middle half of the run-by-run ratios: how much the shared machine moved them
+                "ratio_quartiles": quartiles([p / t for p, t in zip(t_peer, t_text)]) if t_peer else None,
                 "peak_kb": peak_kb(text_cmd),
                 "agree": agree,
             }
             rows.append(row)
-            ratio = f"{row['ratio']:.1f}x (JSON {row['ratio_json']:.1f}x)" if row["rs274"] else "-"
+            ratio = (f"{row['ratio']:.1f}x (middle half {row['ratio_quartiles'][0]:.1f}–{row['ratio_quartiles'][1]:.1f}; "
+                     f"JSON {row['ratio_json']:.1f}x)" if row["rs274"] else "-")
             print(f"{label:26} {blocks:>8} blocks  cutcom {row['cutcom']:.3f} s (json {row['json']:.3f} s, "
                   f"{mb(row['peak_kb'])})  rs274 {row['rs274'] or 0:.3f} s  {ratio}  paths agree: {agree}")
     memory = []
@@ -441,7 +452,8 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
         "Written by `python3 bench/peer_bench.py --write-docs` (do not edit by hand). Whole processes,",
         f"median of {a.runs} runs each, interleaved, output to `/dev/null`; machine: {cpu}, "
         f"{os.cpu_count()} cores. The ratios are the median of the run-by-run ratios (rs274 and cutcom",
-        "run back to back), which the machine's drift moves less than a ratio of medians.",
+        "run back to back), which the machine's drift moves less than a ratio of medians; beside the",
+        "text ratio, the middle half of the run-by-run ratios (this machine is shared: its speed moves).",
         "cutcom: `cutcom run FILE --md MD20230=0` (fast engine, text; JSON in its own column).",
         "LinuxCNC: `rs274 -g FILE` (standalone interpreter, cutter compensation `G42.1 D<diameter>`).",
         "The two tool paths are compared move by move (kind, end point and centre to 2e-4 mm, rs274",
@@ -453,7 +465,8 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
         "|---|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
-        ratio = f"{r['ratio']:.1f}x" if r["rs274"] else "-"
+        ratio = (f"{r['ratio']:.1f}x ({r['ratio_quartiles'][0]:.1f}–{r['ratio_quartiles'][1]:.1f})"
+                 if r["rs274"] else "-")
         ratio_json = f"{r['ratio_json']:.1f}x" if r["rs274"] else "-"
         peer = f"{r['rs274']:.3f}" if r["rs274"] else "not installed"
         lines.append(f"| {r['label']} | {r['blocks']} | {r['cutcom']:.3f} | {r['json']:.3f} | {peer} | {ratio} | "
