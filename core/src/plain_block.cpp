@@ -3,8 +3,8 @@
 // It fills the block's words exactly as the word lexer does (NC-LEX-*, NC-WORD-*: the same
 // values, the same word count), or leaves the line to it: anything else on the line, a word
 // twice, a negative feed, a number the lexer rejects or reads in its own way (an expression
-// after it) all go to the lexer, which reads or rejects them with its message. tests/plain_block_test.cpp holds the two
-// readings equal.
+// after it) all go to the lexer, which reads or rejects them with its message.
+// tests/plain_block_test.cpp holds the two readings equal.
 #include <cstdint>
 
 #include "word_lexer.hpp"
