@@ -156,27 +156,22 @@ bool Interpreter::maybe_parametric(const std::string& s) {
     std::array<std::uint8_t, 256> t{};
     for (int c = 0; c < 256; ++c)
       if (is_letter(static_cast<char>(c)) || c == '_') t[static_cast<std::size_t>(c)] = kName;
-    t['='] = t[':'] = kAssign;
-    t[';'] = kComment;
-    t['L'] |= kCall, t['l'] |= kCall;
-    t[0] = kNul;
+    t['='] = t[':'] = kAssign, t[';'] = kComment;
+    t['L'] |= kCall, t['l'] |= kCall, t[0] = kNul;
     return t;
   }();
-  const auto* p = reinterpret_cast<const unsigned char*>(s.c_str());
-  const auto* end = p + s.size();
+  const auto *begin = reinterpret_cast<const unsigned char*>(s.c_str()), *p = begin, *end = begin + s.size();
   while (true) {
     while (kClass[*p] == 0) ++p;
     std::uint8_t c = kClass[*p];
-    if (c & kNul) {
-      if (p == end) return false;
-      ++p;  // a NUL inside the line: nothing, as any other character of class 0
+    if (c & kNul) {  // the end, or a NUL inside the line: nothing, as any other character of class 0
+      if (p++ == end) return false;
       continue;
     }
     if (c & (kComment | kAssign)) return (c & kAssign) != 0;
     if (kClass[p[1]] & kName) return true;  // two letters: a name (p[1] is at most the final NUL)
     // Ln: a subprogram call (NC-PARAM-SUB-1)
-    if ((c & kCall) && is_digit(static_cast<char>(p[1])) &&
-        (p == reinterpret_cast<const unsigned char*>(s.c_str()) || !is_name_char(static_cast<char>(p[-1]))))
+    if ((c & kCall) && is_digit(static_cast<char>(p[1])) && (p == begin || !is_name_char(static_cast<char>(p[-1]))))
       return true;
     ++p;
   }
