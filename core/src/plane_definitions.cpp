@@ -80,6 +80,10 @@ void ProgramReader::set_pole(const BlockWords& w, Plane plane) {
 
 bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   BlockWords& w = b.words;
+  ang_open_ = false;
+  // Without contour words, CIP/CT or a rotation there is nothing to define (the test below, taken
+  // first: every block passes here).
+  if (!w.contour && !circle_definition_ && !frame_.rotated()) return false;
   auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
   const ModalState& s = state_;
   PlaneAxes pa = plane_axes(s.plane);
@@ -92,7 +96,6 @@ bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
   bool ar = w.cw().ar.has_value();
   bool ang = w.cw().ang.has_value();
   bool rotated = frame_.rotated();
-  ang_open_ = false;
   if (rotated && frame_.rotation_axis != pa.applicate && (w.programs_any_axis() || has_centre || polar))
     fail("the frame's rotation tilts the working plane of this block: SINUMERIK NC that cutcom does not simulate");
   if (!polar && !ang && !ar && !cip && !ct && !(rotated && (has_a || has_o || has_centre))) return false;

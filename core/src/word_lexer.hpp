@@ -49,7 +49,10 @@ class WordLexer {
 
   void run() {
     out_.reset(line_);
-    if (read_plain_block(s_, out_)) return;
+    if (read_plain_block(s_, out_)) {
+      out_.plain = true;  // resolve leaves out the steps of the other words
+      return;
+    }
     general();
   }
   // The line read word by word, every word of the vocabulary (run() leaves only the lines

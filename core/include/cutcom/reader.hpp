@@ -150,10 +150,22 @@ class ProgramReader final : public BlockSource, private SystemValues {
   };
   std::vector<SavedState> saved_;  // one per open PROC … SAVE
   void resolve(Block& b);
+  // The words beyond a plain block's (setting_words.cpp).
+  void take_data_words(const BlockWords& w);
+  void take_frame_words(Block& b);
+  bool take_modal_words(Block& b, ModalState& s);  // true: TRANSMIT switched
+  void check_transmit_diameter(const BlockWords& w) const;
+  static const char* transformation_name(Transformation t);
   void thread_block(Block& b, int thread);  // NC-WORD-12
   void change_tool(Block& b, ModalState& s);
   void apply_frame(const BlockWords& w, Plane plane);
-  Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
+  Decimal to_base(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const {
+    // The common case (no frame, offset, inch or diameter value in force): the value is the
+    // position, as to_base_framed would compute it (every coordinate of every block).
+    if (as_written_) return absolute ? aw.value : current + aw.value;
+    return to_base_framed(axis, aw, current, absolute, distance);
+  }
+  Decimal to_base_framed(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance) const;
   Decimal length(const Decimal& v) const;  // the unit of a programmed length
   Decimal frame_value(int axis, const AxisWord& aw, const Decimal& current, bool absolute, bool distance = false) const;
   // to_base is the identity on values: mm, no diameter value, no offset difference, a frame
