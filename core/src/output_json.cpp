@@ -1,5 +1,6 @@
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <string_view>
 
@@ -30,19 +31,9 @@ JsonWriter::JsonWriter(std::ostream& out, std::string engine, bool with_trace) :
 namespace {
 // Every number of the document: the shortest that reads back (text::put_shortest), null where it is
 // no number (as nlohmann::json writes NaN and infinities), never -0; at most 24 characters.
-char* put_number(char* p, double v) {
+char* put_shortest_number(char* p, double v) {
   if (!std::isfinite(v)) return text::put(p, "null");
   return text::put_shortest(p, clean(v));
-}
-char* put_point(char* p, const PathPoint& q) {  // at most 3 * 26 + 4 characters
-  *p++ = '[';
-  p = put_number(p, q.x);
-  *p++ = ',';
-  p = put_number(p, q.y);
-  *p++ = ',';
-  p = put_number(p, q.z);
-  *p++ = ']';
-  return p;
 }
 char* put_integer(char* p, std::int64_t v) { return std::to_chars(p, p + 24, v).ptr; }
 // A JSON string: printable ASCII directly, anything else (escapes, UTF-8 checks) by nlohmann.
@@ -64,11 +55,47 @@ void append_key(std::string& out, std::string_view key) {  // "key": after a com
 }
 }  // namespace
 
+char* JsonWriter::put_number(char* p, double v) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  for (const NumberText& k : recent_)
+    if (k.bits == bits && k.size != 0) {
+      std::memcpy(p, k.text, k.size);
+      return p + k.size;
+    }
+  char* end = put_shortest_number(p, v);
+  NumberText& k = recent_[recent_next_++ % recent_.size()];
+  k.bits = bits, k.size = static_cast<std::uint8_t>(end - p);
+  std::memcpy(k.text, p, k.size);
+  return end;
+}
+
+char* JsonWriter::put_point(char* p, const PathPoint& q) {  // at most 3 * 26 + 4 characters
+  *p++ = '[';
+  p = put_number(p, q.x);
+  *p++ = ',';
+  p = put_number(p, q.y);
+  *p++ = ',';
+  p = put_number(p, q.z);
+  *p++ = ']';
+  return p;
+}
+
+// cutcom's own names and words (kinds, SAR movements, descriptions): printable ASCII without
+// quotes or backslashes, written as JSON strings as they are.
+char* put_name(char* p, std::string_view name) {
+  *p++ = '"';
+  p = text::put(p, name);
+  *p++ = '"';
+  return p;
+}
+
 void JsonWriter::element(const PathElement& e) {
-  std::string& b = buffer_;
-  // The numbers go through a buffer of their own (no string growth checks per character).
-  char head[256];
-  char* p = text::put(head, first_ ? "\n    {\"block\":" : ",\n    {\"block\":");
+  // One buffer for the element, appended once (a path holds millions of elements): at most
+  // 3 points of 82 characters, the description, a feed of at most 40 and the words around them.
+  constexpr std::size_t kRoom = 600 + kDescriptionRoom;
+  char item[kRoom];
+  char* p = text::put(item, first_ ? "\n    {\"block\":" : ",\n    {\"block\":");
   first_ = false;
   const Origin& o = e.origin;
   p = o.block ? put_integer(p, *o.block) : text::put(p, "null");
@@ -76,47 +103,54 @@ void JsonWriter::element(const PathElement& e) {
   if (arc) {
     p = text::put(p, e.ccw ? ",\"ccw\":true,\"center\":" : ",\"ccw\":false,\"center\":");
     p = put_point(p, e.center);
-    b.append(head, p);
-    p = head;
   }
   p = text::put(p, ",\"end\":");
   p = put_point(p, e.end);
-  b.append(head, p);
   if (!e.rapid) {
-    b += ",\"feed\":";
     if (e.feed != last_feed_ || last_feed_text_.empty()) {  // one feed runs over many elements
       last_feed_ = e.feed;
       last_feed_text_.clear();
       append_string(last_feed_text_, e.feed.to_string());
     }
-    b += last_feed_text_;
-    if (e.feed_type == FeedType::kG95) b += ",\"feed_type\":\"G95\"";
+    p = text::put(p, ",\"feed\":");
+    p = text::put(p, std::string_view(last_feed_text_).substr(0, 40));  // a decimal's text: at most 33 characters
+    if (e.feed_type == FeedType::kG95) p = text::put(p, ",\"feed_type\":\"G95\"");
   }
-  p = text::put(head, ",\"line\":");
+  p = text::put(p, ",\"line\":");
   p = put_integer(p, o.line);
   p = text::put(p, ",\"origin\":{");
-  b.append(head, p);
+  // The origin's keys in nlohmann's sorted order, each after a comma but the first.
+  const char* first_key = p;
+  auto key = [&](std::string_view k) {
+    if (p != first_key) *p++ = ',';
+    *p++ = '"';
+    p = text::put(p, k);
+    *p++ = '"', *p++ = ':';
+  };
   bool inserted = o.insert.kind != InsertKind::kNone;  // NC-CONTOUR-*: an element the reader inserted
-  if (inserted && o.insert.kind != InsertKind::kTurn)
-    append_key(b, "corner_next_line"), text::append_integer(b, o.insert.next_line);
-  if (inserted) append_key(b, "inserted"), append_string(b, insert_kind_name(o.insert.kind));
-  append_key(b, "kind");
-  append_string(b, origin_kind_name(o.kind));
-  append_key(b, "line");
-  text::append_integer(b, o.line);
-  if (o.kind == OriginKind::kTransitionCircle) append_key(b, "next_line"), text::append_integer(b, o.next_line);
-  if (o.sar != SarMove::kNone) append_key(b, "sar"), append_string(b, sar_move_name(o.sar));
-  if (o.source != 0 && sources_) append_key(b, "source"), append_string(b, sources_(o.source));  // NC-PARAM-SUB-3
-  // The text is cutcom's own words and numbers (append_description): printable ASCII, no quote.
-  append_key(b, "text");
-  b += '"';
-  append_description(b, o);
-  b += '"';
-  if (inserted && o.insert.kind == InsertKind::kTurn) append_key(b, "turn"), text::append_integer(b, o.insert.turn);
-  p = text::put(head, e.rapid ? "},\"rapid\":true,\"start\":" : "},\"rapid\":false,\"start\":");
+  if (inserted && o.insert.kind != InsertKind::kTurn) key("corner_next_line"), p = put_integer(p, o.insert.next_line);
+  if (inserted) key("inserted"), p = put_name(p, insert_kind_name(o.insert.kind));
+  key("kind");
+  p = put_name(p, origin_kind_name(o.kind));
+  key("line");
+  p = put_integer(p, o.line);
+  if (o.kind == OriginKind::kTransitionCircle) key("next_line"), p = put_integer(p, o.next_line);
+  if (o.sar != SarMove::kNone) key("sar"), p = put_name(p, sar_move_name(o.sar));
+  if (o.source != 0 && sources_) {  // NC-PARAM-SUB-3: a file's name, of any length
+    key("source");
+    buffer_.append(item, p);
+    append_string(buffer_, sources_(o.source));
+    p = item, first_key = nullptr;
+  }
+  key("text");
+  *p++ = '"';
+  p = put_description(p, o);
+  *p++ = '"';
+  if (inserted && o.insert.kind == InsertKind::kTurn) key("turn"), p = put_integer(p, o.insert.turn);
+  p = text::put(p, e.rapid ? "},\"rapid\":true,\"start\":" : "},\"rapid\":false,\"start\":");
   p = put_point(p, e.start);
   p = text::put(p, arc ? ",\"type\":\"arc\"}" : ",\"type\":\"line\"}");
-  b.append(head, p);
+  buffer_.append(item, p);
   written();
 }
 

@@ -1,5 +1,7 @@
 #include <fmt/format.h>
 
+#include <cstring>
+
 #include "cutcom/output.hpp"
 #include "text_append.hpp"
 
@@ -68,7 +70,7 @@ void TextWriter::written() {
 // and appended at once: the writers emit millions of lines (issue "Performance").
 void TextWriter::element(const PathElement& e) {
   ++count_;
-  char line[2400];
+  char line[3000];  // two points of huge numbers (3 x 352 characters each) and the description
   char* p = line;
   p = text::put_right_integer(p, count_, 4);
   *p++ = ' ';
@@ -80,16 +82,20 @@ void TextWriter::element(const PathElement& e) {
   p = text::put_padding(p, field, 6);
   *p++ = ' ';
   field = p;
-  p = put_point(p, e.start);
+  bool at_last_end = last_end_size_ != 0 && std::memcmp(&e.start, &last_end_, sizeof last_end_) == 0;
+  p = at_last_end ? text::put(p, std::string_view(last_end_text_, last_end_size_)) : put_point(p, e.start);
   p = text::put_padding(p, field, 28);
   *p++ = ' ';
   field = p;
   p = put_point(p, e.end);
+  auto end_size = static_cast<std::size_t>(p - field);
+  last_end_size_ = end_size <= sizeof last_end_text_ ? end_size : 0;  // a huge number's text is not kept
+  if (last_end_size_ != 0) std::memcpy(last_end_text_, field, end_size), last_end_ = e.end;
   p = text::put_padding(p, field, 28);
   *p++ = ' ';
+  p = put_description(p, e.origin);
   std::string& b = buffer_;
   b.append(line, p);
-  append_description(b, e.origin);
   if (e.origin.source != 0 && sources_) {
     b += " (in ";
     b += sources_(e.origin.source);

@@ -101,15 +101,20 @@ std::string_view sar_move_name(SarMove m) {
   return "?";
 }
 
-void append_description(std::string& out, const Origin& o) {
-  // At most two inserted names of three block names of 20 digits each, and the words around them.
-  char buffer[320];
-  char* p = put_kind_description(buffer, o);
+// At most two inserted names of three block names of 20 digits each, and the words around them:
+// within kDescriptionRoom.
+char* put_description(char* p, const Origin& o) {
+  p = put_kind_description(p, o);
   if (o.sar != SarMove::kNone) {
     p = text::put(text::put(p, " (SAR "), sar_move_name(o.sar));
     *p++ = ')';
   }
-  out.append(buffer, p);
+  return p;
+}
+
+void append_description(std::string& out, const Origin& o) {
+  char buffer[kDescriptionRoom];
+  out.append(buffer, put_description(buffer, o));
 }
 
 std::string describe(const Origin& o) {

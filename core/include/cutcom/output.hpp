@@ -2,6 +2,7 @@
 // SVG pictures of the programmed contour and the tool-centre path.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -36,6 +37,18 @@ class JsonWriter : public PathSink {
 
  private:
   void written();  // writes the element buffer out once it is large
+  // A number (the shortest text that reads back) and a point; the numbers written last are kept
+  // with their text: numbers are most of the writer's time, and an element starts where the one
+  // before it ended, mostly in the same plane.
+  char* put_number(char* p, double v);
+  char* put_point(char* p, const PathPoint& q);
+  struct NumberText {
+    std::uint64_t bits = 0;
+    std::uint8_t size = 0;  // 0: none kept
+    char text[30];
+  };
+  std::array<NumberText, 8> recent_{};
+  std::size_t recent_next_ = 0;
 
   std::ostream& out_;
   SourceNames sources_;
@@ -77,6 +90,10 @@ class TextWriter : public PathSink {
   bool with_trace_;
   int count_ = 0;
   std::string error_;
+  // The last element's end and its text: the next element mostly starts there.
+  PathPoint last_end_;
+  char last_end_text_[96];
+  std::size_t last_end_size_ = 0;  // 0: none kept
 };
 
 // A programmed contour segment for the picture (in-plane projection drawn as XY of the plane).

@@ -60,6 +60,8 @@ struct ActionEvent {
 std::string_view origin_kind_name(OriginKind k);             // "offset", "transition_circle", ...
 std::string describe(const Origin& o);                       // "transition circle at corner N30/N40"
 void append_description(std::string& out, const Origin& o);  // the same, appended to `out`
+constexpr std::size_t kDescriptionRoom = 320;                // at most the description's characters
+char* put_description(char* p, const Origin& o);             // the same, written at `p`; returns the end
 std::string_view sar_move_name(SarMove m);                   // "lead", "fast_infeed", ... ("" for kNone)
 std::string_view insert_kind_name(InsertKind k);             // "rounding", "chamfer", "turn" ("" for kNone)
 
