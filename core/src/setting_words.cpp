@@ -1,7 +1,8 @@
 // The words of a block beyond the plain ones (N, G0…G3, X Y Z, I J K, F): tool data and units,
 // frames and poles, modal settings, dwell, SAR values, tool changes and cycles. resolve() leaves
 // these steps out for a block read by read_plain_block, which holds none of their words: each
-// step here acts on its words only (what acts on the reader's state alone stays in resolve).
+// take_*_words step acts on its words only. What acts on the reader's state alone stays in
+// resolve, but for check_transmit_diameter, which both call (a PROC … SAVE return changes it).
 #include <fmt/format.h>
 
 #include <algorithm>
