@@ -47,6 +47,11 @@ struct BlockFacts {
   // SAR-POINTS-1/2: a SAR element is tangent to the contour at P4 by construction: after it on
   // approach, before it on retraction.
   bool tangent_after = false, tangent_before = false;
+  // The corner filter's scale over size in the plane `scale_axes` (compensation.cpp), once asked
+  // for (-1: not yet). It goes with the copies (the open element's is its slot's); reset where
+  // the points change.
+  mutable double scale_over_size = -1;
+  mutable PlaneAxes scale_axes{0, 1, 2};
 };
 
 // What fast keeps of a block: converted once, copied into fixed slots (no allocation). A copy
@@ -103,6 +108,7 @@ struct BlockCopy : BlockFacts {
     c.moves = b.moves_in_plane();
     c.exact = b.sar.move == SarMove::kNone;
     c.seq = 0, c.actions_done = false, c.tangent_after = c.tangent_before = false;
+    c.scale_over_size = -1;
   }
 };
 
@@ -163,7 +169,8 @@ struct PlaneOverride {
     if (start) c.start = xyz_in(start_ab, h_in(c.start, a), a);
     if (end) c.end = xyz_in(end_ab, h_in(c.end, a), a);
     if (circle) c.arc = true, c.has_centre = true, c.centre = xyz_in(centre, h_in(c.start, a), a), c.sense = sense;
-    if (start || end || circle) c.exact = false;  // `delta` and `to_centre` are the decimals' no more
+    if (start || end || circle)
+      c.exact = false, c.scale_over_size = -1;  // `delta` and `to_centre` are the decimals' no more
     c.tangent_after = tangent_after, c.tangent_before = tangent_before;
   }
 };

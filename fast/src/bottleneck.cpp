@@ -55,28 +55,25 @@ OnPiece locate(const PathPiece& piece, Vec2 p) {
   o.slack = o.on ? nearer : -nearer;
   return o;
 }
-// An axis-aligned box around a piece; a circle piece's is its whole circle's.
-struct Box {
-  double lo_a, lo_b, hi_a, hi_b;
-};
-Box box_of(const PathPiece& p) {
-  if (p.arc) return {p.centre.a - p.radius, p.centre.b - p.radius, p.centre.a + p.radius, p.centre.b + p.radius};
-  return {std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b)};
+}  // namespace
+
+PieceBox PieceBox::around(const PathPiece* pieces, int count) {
+  PieceBox u = of(pieces[0]);
+  for (int i = 1; i < count; ++i) {
+    PieceBox v = of(pieces[i]);
+    u.lo_a = std::min(u.lo_a, v.lo_a), u.lo_b = std::min(u.lo_b, v.lo_b);
+    u.hi_a = std::max(u.hi_a, v.hi_a), u.hi_b = std::max(u.hi_b, v.hi_b);
+  }
+  return u;
 }
-// Boxes apart by more than 1e-9 of the coordinates' size: no computed common point can be on
-// both pieces (a point's rounding off its carriers is a few ulps of that size).
-bool apart(const Box& u, const Box& v) {
+
+// Apart by more than 1e-9 of the coordinates' size: no computed common point can be on both
+// pieces (a point's rounding off its carriers is a few ulps of that size).
+bool PieceBox::apart(const PieceBox& u, const PieceBox& v) {
   double size = std::max({std::fabs(u.lo_a), std::fabs(u.lo_b), std::fabs(u.hi_a), std::fabs(u.hi_b), std::fabs(v.lo_a),
                           std::fabs(v.lo_b), std::fabs(v.hi_a), std::fabs(v.hi_b)});
   double pad = 1e-9 * (1 + size);
   return u.hi_a + pad < v.lo_a || v.hi_a + pad < u.lo_a || u.hi_b + pad < v.lo_b || v.hi_b + pad < u.lo_b;
-}
-}  // namespace
-
-PathPiece PathPiece::segment(Vec2 from, Vec2 to) {
-  PathPiece p;
-  p.a = from, p.b = to;
-  return p;
 }
 
 PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn) {
@@ -91,7 +88,7 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
   PieceCrossing out;
   if (!held.arc && held.a.a == held.b.a && held.a.b == held.b.b) return out;
   Carrier h = carrier(held);
-  const Box held_box = box_of(held);
+  const PieceBox held_box = PieceBox::of(held);
   bool found = false;
   double best = 0;
   for (int i = from; i < count; ++i) {
@@ -103,7 +100,7 @@ PieceCrossing piece_crossing(const PathPiece& held, const PathPiece* entry, int 
     if (on_one_circle(h, c)) continue;
     // TRACE-1: pieces whose boxes are apart have no common point; only the near miss (a margin) needs
     // their carriers' intersections then (the same path either way: PROP-TRACE-1).
-    if (!margins && apart(held_box, box_of(e))) continue;
+    if (!margins && PieceBox::apart(held_box, PieceBox::of(e))) continue;
     bool has_depth = h.circle || c.circle;
     double depth = 0;  // -carrier_gap, taken once a point lies on both pieces (the only use)
     bool depth_known = false;

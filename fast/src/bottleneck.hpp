@@ -2,6 +2,7 @@
 // crosses a held-back piece (see ref/src/bottleneck.hpp for the rule; no code is shared).
 #pragma once
 
+#include <algorithm>
 #include <limits>
 
 #include "plane_geometry.hpp"
@@ -17,8 +18,25 @@ struct PathPiece {
   int sense = 1;
   double sweep = 0;  // [0, 4]
 
-  static PathPiece segment(Vec2 from, Vec2 to);
+  static PathPiece segment(Vec2 from, Vec2 to) {
+    PathPiece p;
+    p.a = from, p.b = to;
+    return p;
+  }
   static PathPiece circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn = false);
+};
+
+// An axis-aligned box around pieces; a circle piece's is its whole circle's.
+struct PieceBox {
+  double lo_a, lo_b, hi_a, hi_b;
+  static PieceBox of(const PathPiece& p) {
+    if (p.arc) return {p.centre.a - p.radius, p.centre.b - p.radius, p.centre.a + p.radius, p.centre.b + p.radius};
+    return {std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b)};
+  }
+  static PieceBox around(const PathPiece* pieces, int count);  // count >= 1
+  // Boxes apart by more than rounding: no point piece_crossing computes lies on a piece in each;
+  // apart from a box around pieces is apart from each of them (its pad is no smaller).
+  static bool apart(const PieceBox& u, const PieceBox& v);
 };
 
 // The earliest point along `held` on one of the entry's `count` pieces: `entry_piece` its index

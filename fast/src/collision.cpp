@@ -95,6 +95,15 @@ PathPiece Compensation::piece_of(const HeldRecord& rec) const {
   return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
 }
 
+// PieceBox::of(piece_of(rec)) without the sweep, which a box does not need.
+PieceBox Compensation::box_of(const HeldRecord& rec) const {
+  const PathElement& e = rec.element;
+  if (e.type == ElementType::kLine) return PieceBox::of(PathPiece::segment(ab(e.start), ab(e.end)));
+  PathPiece whole;
+  whole.arc = true, whole.centre = ab(e.center), whole.radius = rec.radius;
+  return PieceBox::of(whole);
+}
+
 PathPiece Compensation::open_piece() const {
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
   if (!open_el.arc) return PathPiece::segment(open_start, end);
@@ -117,11 +126,17 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   bool overlap = false;                                    // collinear pieces overlap (a miss of 0)
   // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
   // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
+  const bool margins = trace.keeps_decisions();
+  PieceBox entry_box{};  // around the entry's pieces, once it is built (without margins only)
+  auto build = [&] {
+    state = entry_of(m, before, entry) ? 1 : -1;
+    if (state > 0 && !margins) entry_box = PieceBox::around(entry.pieces, entry.count);
+  };
   auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
-    if (state == 0) state = entry_of(m, before, entry) ? 1 : -1;
+    if (state == 0) build();
     if (state < 0) return false;
     bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
-    c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0, trace.keeps_decisions());
+    c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0, margins);
     near = std::max(near, c.near_miss);
     overlap = overlap || c.overlap;
     return c.entry_piece >= 0;
@@ -130,8 +145,12 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   for (std::size_t i = 0; i < held.size(); ++i) {
     const HeldRecord& rec = held[i];
     if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
-    if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, near), true;
+    if (state == 0) build();
     if (state < 0) return false;
+    // A held piece plainly apart from the whole entry: piece_crossing would pass over each of its
+    // pieces (the same path: PROP-TRACE-1), so the piece is not even built.
+    if (!margins && PieceBox::apart(box_of(rec), entry_box)) continue;
+    if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, near), true;
   }
   if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
     return cut(m, entry, -1, c, near), true;

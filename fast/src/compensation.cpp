@@ -72,7 +72,7 @@ void Compensation::change_side(const Block& b) {
   PathPoint tool = xyz(end, h(copy_of(b).start));
   bool tool_on_contour = r_units == 0;  // radius 0: the tool stands on the programmed point
   select(b);
-  selection.start = tool;  // the approach starts where the tool is
+  selection.start = tool, selection.scale_over_size = -1;  // the approach starts where the tool is
   selection_from_tool = !tool_on_contour;
 }
 
@@ -223,12 +223,9 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
 }
 
 double Compensation::scale_over_size(const BlockCopy& c) const {
-  std::size_t k = &c == &prev_blocks[0] ? 0 : &c == &prev_blocks[1] ? 1 : 2;
-  if (k == 2) return cutcom::fast::scale_over_size(c, axes);
-  SlotElement& m = slot_elements[k];
-  if (m.scale < 0 || m.scale_axes.abscissa != axes.abscissa || m.scale_axes.ordinate != axes.ordinate)
-    m.scale = cutcom::fast::scale_over_size(c, axes), m.scale_axes = axes;
-  return m.scale;
+  if (c.scale_over_size < 0 || c.scale_axes.abscissa != axes.abscissa || c.scale_axes.ordinate != axes.ordinate)
+    c.scale_over_size = cutcom::fast::scale_over_size(c, axes), c.scale_axes = axes;
+  return c.scale_over_size;
 }
 
 void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {

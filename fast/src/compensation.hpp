@@ -121,8 +121,6 @@ class Compensation {
     bool valid = false;
     PlaneAxes axes{0, 1, 2};
     Element element;
-    double scale = -1;  // scale_over_size's, once asked for (-1: not yet)
-    PlaneAxes scale_axes{0, 1, 2};
   };
   mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
   mutable RootTangents root_tangents;                // decide_kind_exactly's and exact_side's GMP numbers
@@ -138,7 +136,7 @@ class Compensation {
   }
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
     for (std::size_t k = 0; k < 2; ++k)
-      if (&c == &prev_blocks[k]) slot_elements[k].valid = false, slot_elements[k].scale = -1;
+      if (&c == &prev_blocks[k]) slot_elements[k].valid = false;
     c.assign(b);
     c.seq = held.seq();
     if (&b == over_block) over.apply(c);
@@ -379,6 +377,7 @@ class Compensation {
   Entry entry_scratch;  // bottleneck's, kept: constructing one per block cost more than its checks
 
   PathPiece piece_of(const HeldRecord& rec) const;
+  PieceBox box_of(const HeldRecord& rec) const;
   PathPiece open_piece() const;
   static bool is_candidate(const HeldRecord& rec);
 

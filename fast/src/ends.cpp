@@ -318,7 +318,7 @@ void Compensation::retraction_pending(const Block& b) {
   phase = Phase::kOff;
   compensation_off(b);
   if (phase == Phase::kApproach) {
-    selection.start = tool;
+    selection.start = tool, selection.scale_over_size = -1;
     selection_from_tool = !tool_on_contour;
   }
 }
