@@ -67,15 +67,6 @@ PieceBox PieceBox::around(const PathPiece* pieces, int count) {
   return u;
 }
 
-// Apart by more than 1e-9 of the coordinates' size: no computed common point can be on both
-// pieces (a point's rounding off its carriers is a few ulps of that size).
-bool PieceBox::apart(const PieceBox& u, const PieceBox& v) {
-  double size = std::max({std::fabs(u.lo_a), std::fabs(u.lo_b), std::fabs(u.hi_a), std::fabs(u.hi_b), std::fabs(v.lo_a),
-                          std::fabs(v.lo_b), std::fabs(v.hi_a), std::fabs(v.hi_b)});
-  double pad = 1e-9 * (1 + size);
-  return u.hi_a + pad < v.lo_a || v.hi_a + pad < u.lo_a || u.hi_b + pad < v.lo_b || v.hi_b + pad < u.lo_b;
-}
-
 PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn) {
   PathPiece p;
   p.arc = true, p.a = from, p.b = to, p.centre = centre, p.radius = radius, p.sense = sense;

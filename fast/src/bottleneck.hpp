@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "plane_geometry.hpp"
@@ -34,9 +35,15 @@ struct PieceBox {
     return {std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b)};
   }
   static PieceBox around(const PathPiece* pieces, int count);  // count >= 1
-  // Boxes apart by more than rounding: no point piece_crossing computes lies on a piece in each;
-  // apart from a box around pieces is apart from each of them (its pad is no smaller).
-  static bool apart(const PieceBox& u, const PieceBox& v);
+  // Apart by more than 1e-9 of the coordinates' size (a point's rounding off its carriers is a
+  // few ulps of that size): no point piece_crossing computes lies on a piece in each. Apart from
+  // a box around pieces is apart from each of them (its pad is no smaller).
+  static bool apart(const PieceBox& u, const PieceBox& v) {
+    double size = std::max({std::fabs(u.lo_a), std::fabs(u.lo_b), std::fabs(u.hi_a), std::fabs(u.hi_b),
+                            std::fabs(v.lo_a), std::fabs(v.lo_b), std::fabs(v.hi_a), std::fabs(v.hi_b)});
+    double pad = 1e-9 * (1 + size);
+    return u.hi_a + pad < v.lo_a || v.hi_a + pad < u.lo_a || u.hi_b + pad < v.lo_b || v.hi_b + pad < u.lo_b;
+  }
 };
 
 // The earliest point along `held` on one of the entry's `count` pieces: `entry_piece` its index

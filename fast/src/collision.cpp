@@ -11,7 +11,7 @@ namespace cutcom::fast {
 bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
   en.element = element_of(m);
   en.radius = 0, en.lead = Entry::Lead::kNone;  // `en` is reused from block to block
-  en.before = origin(before, OriginKind::kOffset);
+  en.before = &before;
   const Element& next = en.element;
   double sr = s * r;
   if (next.arc) {
@@ -219,7 +219,8 @@ void Compensation::continue_entry(const BlockCopy& m, const Entry& en, int entry
   if (!on_lead) return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
   double hv = h(m.start);
   BlockCopy owner = m;
-  Origin named = en.before;  // PATH-ORIGIN-1: the predecessor's line, number, SAR movement, insert
+  Origin named =
+      origin(*en.before, OriginKind::kOffset);  // PATH-ORIGIN-1: the predecessor's line, number, SAR movement, insert
   if (en.lead == Entry::Lead::kCircle) {
     named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
     named.next_insert = m.insert;

@@ -62,14 +62,16 @@ class CollisionWindow {
   // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
   bool direct() const { return !holding_ && empty(); }
 
-  void hold(const HeldRecord& r) {
+  void hold(const HeldRecord& r) { hold_new() = r; }
+  // A new record at the end, to be filled in place (a record is a few hundred bytes).
+  HeldRecord& hold_new() {
     // Released records are dropped only when the reserve is full: one move of the few held then,
     // instead of one per released record.
     if (records_.size() == records_.capacity() && head_ > 0) {
       records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(head_));
       head_ = 0;
     }
-    records_.push_back(r);
+    return records_.emplace_back();
   }
   // Releases the records of traversing blocks before `seq`, in path order.
   void release_before(int seq) {

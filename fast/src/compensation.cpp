@@ -547,13 +547,18 @@ void Compensation::transition_circle(const BlockCopy& b, const Element& next, do
 void Compensation::arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
                        const Origin& from_what) {
   actions(owner, from);
-  PathElement e;
-  e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
-  e.feed = owner.feed, e.feed_type = owner.feed_type, e.origin = from_what;
-  if (direct()) return sink.element(e);
-  HeldRecord rec = record_of(owner);
-  rec.is_element = true, rec.element = e, rec.radius = norm(ab(from) - ab(centre));
-  held.hold(rec);
+  auto fill = [&](PathElement& e) {
+    e.type = ElementType::kArc, e.rapid = owner.rapid, e.start = from, e.end = to, e.center = centre, e.ccw = ccw;
+    e.feed = owner.feed, e.feed_type = owner.feed_type, e.origin = from_what;
+  };
+  if (direct()) {
+    PathElement e;
+    fill(e);
+    return sink.element(e);
+  }
+  HeldRecord& rec = hold_record_of(owner);
+  rec.is_element = true, rec.radius = norm(ab(from) - ab(centre));
+  fill(rec.element);
 }
 
 void Compensation::actions(BlockCopy& b, const PathPoint& at) {
@@ -565,9 +570,7 @@ void Compensation::actions(BlockCopy& b, const PathPoint& at) {
       sink.action(a);
       continue;
     }
-    HeldRecord rec = record_of(b);
-    rec.action = a;
-    held.hold(rec);
+    hold_record_of(b).action = a;
   }
 }
 

@@ -145,8 +145,9 @@ class Compensation {
   // The block being stepped and its override (SAR-SUB-1, SAR-END-3), as the SAR expansion gave it.
   PlaneOverride over;
   const Block* over_block = nullptr;
-  HeldRecord record_of(const BlockCopy& owner) const {
-    HeldRecord k;
+  // A new held record of `owner`'s, filled in place.
+  HeldRecord& hold_record_of(const BlockCopy& owner) {
+    HeldRecord& k = held.hold_new();
     k.seq = owner.seq, k.owner_line = owner.line, k.owner_number = owner.number, k.owner_start = owner.start;
     k.owner_block = owner.block, k.owner_insert = owner.insert;
     k.owner_end = owner.end, k.owner_rapid = owner.rapid, k.owner_feed = owner.feed;
@@ -187,14 +188,19 @@ class Compensation {
   void line(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const Origin& named, bool rapid) {
     actions(owner, from);
     if (from.x == to.x && from.y == to.y && from.z == to.z) return;  // PATH-ELEMENT-1: no zero-length element
-    PathElement e;
-    e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
-    e.feed_type = owner.feed_type;
-    e.origin = named;
-    if (direct()) return sink.element(e);
-    HeldRecord rec = record_of(owner);
-    rec.is_element = true, rec.element = e;
-    held.hold(rec);
+    auto fill = [&](PathElement& e) {
+      e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
+      e.feed_type = owner.feed_type;
+      e.origin = named;
+    };
+    if (direct()) {
+      PathElement e;
+      fill(e);
+      return sink.element(e);
+    }
+    HeldRecord& rec = hold_record_of(owner);
+    rec.is_element = true;
+    fill(rec.element);
   }
 
   void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
@@ -364,7 +370,9 @@ class Compensation {
     double radius = 0;
     Vec2 vertex, normal_start;
     Vec2 own_start;  // where m's own equidistant piece starts
-    Origin before;   // the predecessor, which names the corner and the rest of its equidistant
+    // The predecessor, which names the corner and the rest of its equidistant (its slot in
+    // prev_blocks, which the cut leaves as it is).
+    const BlockCopy* before = nullptr;
     Element before_element;
     double before_radius = 0;
     // pieces[0] leads to m's equidistant: the transition circle, or (G451) the predecessor's
