@@ -198,13 +198,15 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
     double end_error = at_normal_end ? normal : closing_point_error >= 0 ? closing_point_error : snap;
     snap = std::min(snap, std::max(start_error, end_error));
     bool unreadable = std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
-    double reads = signed_rotation(u, v, e.sense);
-    bool just_past = reads > 0 && norm(end_point - open_start) <= snap;
+    // How the points read (the rotation from start to end) matters only where they lie that close.
+    bool near = norm(end_point - open_start) <= snap;
+    double reads = near ? signed_rotation(u, v, e.sense) : 0;
+    bool just_past = near && reads > 0;
     if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end)), end_point = open_start;
     // And a circle that turns less than half a turn, its end a rounding from its start (an
     // equidistant cut between two intersections of touching carriers), whose points cannot be
     // read or read as nearly a whole turn: it is its chord, a line a rounding long.
-    bool just_before = reads <= 0 && norm(end_point - open_start) <= snap;
+    bool just_before = near && reads <= 0;
     if (turn < std::numbers::pi && (just_before || unreadable)) {
       line(open, from, to, OriginKind::kOffset, open.rapid);
       return true;

@@ -7,6 +7,14 @@
 
 namespace cutcom::fast {
 
+namespace {
+double sweep_of(const Element& e) {
+  if (e.full) return 2 * std::numbers::pi;
+  double a = signed_rotation(e.start - e.centre, e.end - e.centre, e.sense);
+  return a > 0 ? a : a + 2 * std::numbers::pi;
+}
+}  // namespace
+
 Element Element::line(Vec2 s, Vec2 e) {
   Element l;
   l.start = s, l.end = e;
@@ -29,6 +37,7 @@ Element Element::circle(Vec2 s, Vec2 e, Vec2 c, int sense) {
   }
   a.centre = c;
   a.radius = norm(s - c);
+  a.turn = sweep_of(a);
   return a;
 }
 
@@ -43,6 +52,7 @@ Element Element::circle_by_radius(Vec2 s, Vec2 e, double cr, int sense, double q
   a.centre = 0.5 * (s + e) + (k * h) * left_normal(d);
   // ARC-CR-1: a chord a rounding longer than 2|CR| is a half circle about its midpoint.
   a.radius = q >= 0 ? std::fabs(cr) : 0.5 * norm(d);
+  a.turn = sweep_of(a);
   return a;
 }
 
@@ -231,11 +241,5 @@ double carrier_gap(const Carrier& u, const Carrier& v) {
 }
 
 double signed_rotation(Vec2 from, Vec2 to, int sense) { return sense * std::atan2(cross(from, to), dot(from, to)); }
-
-double sweep(const Element& e) {
-  if (e.full) return 2 * std::numbers::pi;
-  double a = signed_rotation(e.start - e.centre, e.end - e.centre, e.sense);
-  return a > 0 ? a : a + 2 * std::numbers::pi;
-}
 
 }  // namespace cutcom::fast

@@ -30,6 +30,7 @@ struct Element {
   double radius = 0;  // arcs
   int sense = 1;      // arcs: +1 ccw (G3), -1 cw (G2)
   bool full = false;  // arcs: start = end
+  double turn = 0;    // arcs: the sweep in (0, 2 pi], computed once with the element (an atan2)
 
   static Element line(Vec2 s, Vec2 e);
   static Element circle(Vec2 s, Vec2 e, Vec2 programmed_centre, int sense);
@@ -93,6 +94,6 @@ double carrier_gap(const Carrier& u, const Carrier& v);
 // The signed rotation in (-pi, pi] from `from` to `to` in the sense `sense`, and the sweep in
 // (0, 2 pi] of a circle element.
 double signed_rotation(Vec2 from, Vec2 to, int sense);
-double sweep(const Element& e);
+inline double sweep(const Element& e) { return e.turn; }
 
 }  // namespace cutcom::fast
