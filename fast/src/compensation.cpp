@@ -224,21 +224,12 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   return true;
 }
 
-double Compensation::scale_over_size(const BlockCopy& c) const {
-  if (c.scale_over_size < 0 || c.scale_axes.abscissa != axes.abscissa || c.scale_axes.ordinate != axes.ordinate)
-    c.scale_over_size = cutcom::fast::scale_over_size(c, axes), c.scale_axes = axes;
+double Compensation::scale_over_size_now(const BlockCopy& c) const {
+  c.scale_over_size = cutcom::fast::scale_over_size(c, axes), c.scale_axes = axes;
   return c.scale_over_size;
 }
 
-void Compensation::decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
-  if (first.tangent_after || second.tangent_before) {  // SAR-POINTS-1/2: tangent by construction
-    c.kind = Corner::Kind::kTangent, c.sine = 0;
-    return;
-  }
-  // The filter: a double sine further from 0 than rounding can carry it has the exact sign, which
-  // the integers below would only confirm (few ulps times scale over size; 2^-24 leaves 10^8).
-  if (!first.exact || !second.exact) return;  // a SAR block: the double decision stands
-  if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first) + scale_over_size(second))) return;
+void Compensation::decide_kind_on_integers(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
   // Lines and circles with a centre: the tangents are integer vectors (exact_tangent.hpp).
   std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
   int cross = 0, dot = 0;

@@ -244,10 +244,26 @@ class Compensation {
   };
   std::optional<ExactProducts> exact_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u) const;
 
-  void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const;
-  // The block's largest coordinate over its size (decide_kind_exactly's filter), kept per slot
-  // as element_of keeps the element: the entry and the corner ask for it of the same blocks.
-  double scale_over_size(const BlockCopy& c) const;
+  void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
+    if (first.tangent_after || second.tangent_before) {  // SAR-POINTS-1/2: tangent by construction
+      c.kind = Corner::Kind::kTangent, c.sine = 0;
+      return;
+    }
+    // The filter: a double sine further from 0 than rounding can carry it has the exact sign, which
+    // the integers would only confirm (few ulps times scale over size; 2^-24 leaves 10^8).
+    if (!first.exact || !second.exact) return;  // a SAR block: the double decision stands
+    if (std::fabs(c.sine) > 0x1p-24 * (1 + scale_over_size(first) + scale_over_size(second))) return;
+    decide_kind_on_integers(first, second, c);
+  }
+  void decide_kind_on_integers(const BlockCopy& first, const BlockCopy& second, Corner& c) const;
+  // The block's largest coordinate over its size (decide_kind_exactly's filter), computed once
+  // per copy and plane: the entry and the corner ask for it of the same blocks.
+  double scale_over_size(const BlockCopy& c) const {
+    bool known =
+        c.scale_over_size >= 0 && c.scale_axes.abscissa == axes.abscissa && c.scale_axes.ordinate == axes.ordinate;
+    return known ? c.scale_over_size : scale_over_size_now(c);
+  }
+  double scale_over_size_now(const BlockCopy& c) const;
 
   // TRC-ARC-EQ-1: a circle's equidistant must keep a positive radius; a collapsed one is passed
   // over by the look-ahead.
