@@ -263,7 +263,10 @@ bool Compensation::approach_further_ahead(const Block& b, const BlockCopy& m) {
   if (!found) return false;
   for (std::size_t i = 0; i < held.size(); ++i) {
     if (!held[i].is_element || held[i].element.origin.kind != OriginKind::kApproach) continue;
-    if (!cut_at(static_cast<int>(i), hit, std::numeric_limits<double>::infinity(), BlockPlace::of(m))) return true;
+    // Cut back to (or, rounded, next to) its start, nothing is left of the approach line
+    // (PATH-ELEMENT-1; campaign 20261254, case 196623: the hit was the tool's start point).
+    double along = norm(hit - ab(held[i].element.start));
+    if (!cut_at(static_cast<int>(i), hit, along, BlockPlace::of(m))) return true;
     open_element(m, e, hit, radius);
     return true;
   }
