@@ -91,10 +91,12 @@ struct BlockCopy : BlockFacts {
         b.centre ? PathPoint{b.centre->x.to_double(), b.centre->y.to_double(), b.centre->z.to_double()} : PathPoint{};
     c.cr = b.words.cr ? b.words.cr->to_double() : 0;
     c.cr_units = b.words.cr ? b.words.cr->units() : 0;
-    c.delta = {(b.end.x - b.start.x).units(), (b.end.y - b.start.y).units(), (b.end.z - b.start.z).units()};
+    // Differences of two values within Decimal's limits: far inside Int128, no check needed.
+    auto units_between = [](Decimal from, Decimal to) { return to.units() - from.units(); };
+    c.delta = {units_between(b.start.x, b.end.x), units_between(b.start.y, b.end.y), units_between(b.start.z, b.end.z)};
     if (b.centre)
-      c.to_centre = {(b.centre->x - b.start.x).units(), (b.centre->y - b.start.y).units(),
-                     (b.centre->z - b.start.z).units()};
+      c.to_centre = {units_between(b.start.x, b.centre->x), units_between(b.start.y, b.centre->y),
+                     units_between(b.start.z, b.centre->z)};
     c.feed = b.state.feed;
     std::copy_n(b.words.aux.begin(), b.words.aux_count, c.aux.begin());  // only the block's actions
     c.aux_count = b.words.aux_count;

@@ -48,7 +48,8 @@ class Decimal {
   // correctly (inline: the engines convert every coordinate of every block).
   double to_double() const {
     constexpr Int128 kExact = Int128(1) << 53;
-    if (units_ <= kExact && units_ >= -kExact)
+    __extension__ typedef unsigned __int128 Width;  // one comparison for -kExact <= units_ <= kExact
+    if (static_cast<Width>(units_ + kExact) <= static_cast<Width>(2 * kExact))
       return static_cast<double>(static_cast<std::int64_t>(units_)) / static_cast<double>(kUnitsPerOne);
     return to_double_rounded();
   }
