@@ -1,11 +1,14 @@
-// Helpers of the parametric-program tests: what a program's last block ends at, the line of the
-// error it raises, and two runs' paths compared element by element.
+// Helpers of the parametric-program tests: a folder of subprograms, what a program's last block ends at, the line of
+// the error it raises, and two runs' paths compared element by element.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cutcom/interpreter.hpp"
@@ -13,6 +16,14 @@
 #include "cutcom/sink.hpp"
 
 namespace cutcom::test {
+
+// A folder of subprogram files for one test.
+inline std::string folder_with(const std::string& name, const std::vector<std::pair<std::string, std::string>>& files) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("cutcom-" + name);
+  std::filesystem::create_directories(dir);
+  for (const auto& [file, text] : files) std::ofstream(dir / file) << text;
+  return dir.string();
+}
 
 inline std::string end_x(const std::string& text) {
   std::istringstream in(text);
