@@ -1,7 +1,5 @@
 // Parametric programs (spec nc-parametric.md): expressions evaluated by hand in the comments, and
 // parametric programs that must give exactly the path of the plain program written out by hand.
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "cutcom/interpreter.hpp"
