@@ -123,6 +123,7 @@ class Compensation {
     Element element;
   };
   mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
+  mutable Element unslotted_element;                 // element_of's for a block outside the slots
   mutable RootTangents root_tangents;                // decide_kind_exactly's and exact_side's GMP numbers
   int prev_slot = 0;
   bool has_prev = false;
@@ -207,10 +208,11 @@ class Compensation {
            const Origin& from_what);
 
   // A block's element; that of a block in one of prev_blocks' slots is computed once per block
-  // and plane (the entry under CDON, the corner and the next block's entry all ask for it).
-  Element element_of(const BlockCopy& c) const {
+  // and plane (the entry under CDON, the corner and the next block's entry all ask for it). The
+  // reference is valid until the next call: every caller copies it at once.
+  const Element& element_of(const BlockCopy& c) const {
     std::size_t k = &c == &prev_blocks[0] ? 0 : &c == &prev_blocks[1] ? 1 : 2;
-    if (k == 2) return element_in(c, axes);
+    if (k == 2) return unslotted_element = element_in(c, axes);
     SlotElement& m = slot_elements[k];
     if (!m.valid || m.axes.abscissa != axes.abscissa || m.axes.ordinate != axes.ordinate)
       m.element = element_in(c, axes), m.axes = axes, m.valid = true;
