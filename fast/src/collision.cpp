@@ -219,8 +219,8 @@ void Compensation::continue_entry(const BlockCopy& m, const Entry& en, int entry
   if (!on_lead) return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
   double hv = h(m.start);
   BlockCopy owner = m;
-  Origin named =
-      origin(*en.before, OriginKind::kOffset);  // PATH-ORIGIN-1: the predecessor's line, number, SAR movement, insert
+  // PATH-ORIGIN-1: the predecessor's line, number, SAR movement, insert.
+  Origin named = origin(*en.before, OriginKind::kOffset);
   if (en.lead == Entry::Lead::kCircle) {
     named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
     named.next_insert = m.insert;
