@@ -50,9 +50,10 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
       x = Element::offset(prev.end, prev.unit, sr) - corner_trim(c, s, r) * prev.unit;
     else {
       Carrier u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
-      found = corner_intersection(u, v, prev.end, next.start_tangent(), r, x);
+      found = intersection_memo.intersection(u, v, prev.end, next.start_tangent(), r, x);
       // The carriers may just touch: the margin is their gap (a knife edge at 0).
-      decide("TRC-CD-2", m.line, found ? "g451-meets" : "g451-misses", corner_gap(u, v, r));
+      if (trace.keeps_decisions())  // the gap is only the trace's margin
+        decide("TRC-CD-2", m.line, found ? "g451-meets" : "g451-misses", corner_gap(u, v, r));
     }
     if (found) {
       en.own_start = x;
@@ -73,15 +74,17 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
   }
   Carrier u = carrier_of(prev, prev_radius), v = carrier_of(next, en.radius);
   Vec2 x;
-  if (!corner_intersection(u, v, prev.end, next.start_tangent(), r, x)) {
+  if (!intersection_memo.intersection(u, v, prev.end, next.start_tangent(), r, x)) {
     decide("TRC-CD-2", m.line, "no-entry",
            u.circle || v.circle ? carrier_gap(u, v) : -std::numeric_limits<double>::infinity());
     return false;
   }
   double left = extent_of(next, en.radius, x).left;
   // With circles the entry also hinges on the carriers meeting at all: the nearer threshold.
-  double margin = left >= 0 && (u.circle || v.circle) ? std::min(left, std::fabs(corner_gap(u, v, r))) : left;
-  decide("TRC-CD-2", m.line, left < 0 ? "no-entry" : "entry", margin);
+  if (trace.keeps_decisions()) {  // the gap is only the trace's margin
+    double margin = left >= 0 && (u.circle || v.circle) ? std::min(left, std::fabs(corner_gap(u, v, r))) : left;
+    decide("TRC-CD-2", m.line, left < 0 ? "no-entry" : "entry", margin);
+  }
   if (left < 0) return false;
   en.own_start = x;
   en.pieces[en.count++] = equidistant_from(x, false);

@@ -6,6 +6,7 @@
 // allocated per block.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -63,30 +64,36 @@ class CollisionWindow {
   bool direct() const { return !holding_ && empty(); }
 
   void hold(const HeldRecord& r) { hold_new() = r; }
-  // A new record at the end, to be filled in place (a record is a few hundred bytes).
+  // A new record at the end, to be filled in place (a record is a few hundred bytes). Records
+  // past the end are kept to be filled again: a new one is not constructed per element; what a
+  // filler may leave unset is reset here.
   HeldRecord& hold_new() {
     // Released records are dropped only when the reserve is full: one move of the few held then,
     // instead of one per released record.
-    if (records_.size() == records_.capacity() && head_ > 0) {
-      records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(head_));
-      head_ = 0;
+    if (end_ == records_.capacity() && head_ > 0) {
+      std::move(records_.begin() + static_cast<std::ptrdiff_t>(head_),
+                records_.begin() + static_cast<std::ptrdiff_t>(end_), records_.begin());
+      end_ -= head_, head_ = 0;
     }
-    return records_.emplace_back();
+    if (end_ == records_.size()) records_.emplace_back();
+    HeldRecord& k = records_[end_++];
+    k.is_element = false, k.radius = 0;
+    return k;
   }
   // Releases the records of traversing blocks before `seq`, in path order.
   void release_before(int seq) {
-    for (; head_ < records_.size() && records_[head_].seq < seq; ++head_) {
+    for (; head_ < end_ && records_[head_].seq < seq; ++head_) {
       if (records_[head_].is_element)
         sink_.element(records_[head_].element);
       else
         sink_.action(records_[head_].action);
     }
-    if (head_ == records_.size()) records_.clear(), head_ = 0;
+    if (head_ == end_) head_ = end_ = 0;
   }
   void release_all() { release_before(std::numeric_limits<int>::max()); }
 
-  bool empty() const { return head_ == records_.size(); }
-  std::size_t size() const { return records_.size() - head_; }
+  bool empty() const { return head_ == end_; }
+  std::size_t size() const { return end_ - head_; }
   const HeldRecord& operator[](std::size_t i) const { return records_[head_ + i]; }
 
   // TRC-CD-4: the path is cut on `record`, which now ends at `end` (nothing is left of it when
@@ -94,12 +101,11 @@ class CollisionWindow {
   // cut blocks to run again (a reserved scratch list, valid until the next cut).
   const std::vector<HeldRecord>& cut(std::size_t record, const PathPoint& end, bool vanishes) {
     std::size_t at = head_ + record;
-    auto after = records_.begin() + static_cast<std::ptrdiff_t>(at) + 1;
     records_[at].element.end = end;
-    scratch_.assign(after, records_.end());
-    records_.erase(after, records_.end());
-    if (vanishes) records_.erase(records_.begin() + static_cast<std::ptrdiff_t>(at));
-    if (head_ == records_.size()) records_.clear(), head_ = 0;
+    scratch_.assign(records_.begin() + static_cast<std::ptrdiff_t>(at) + 1,
+                    records_.begin() + static_cast<std::ptrdiff_t>(end_));
+    end_ = vanishes ? at : at + 1;  // the cut record is the last one left, if anything is left of it
+    if (head_ == end_) head_ = end_ = 0;
     return scratch_;
   }
 
@@ -108,6 +114,7 @@ class CollisionWindow {
   const MachineData& md_;
   std::vector<HeldRecord> records_, scratch_;
   std::size_t head_ = 0;  // records_[0, head_) are released
+  std::size_t end_ = 0;   // records_[head_, end_) are held; those after it wait to be filled again
   int traversing_ = 0;
   bool holding_ = false;  // CDON in force for the block being processed
 };

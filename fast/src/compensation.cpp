@@ -144,7 +144,7 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   if (!e.arc) {
     margin = dot(end_point - open_start, e.unit);
   } else {
-    turn = sweep(e) - signed_rotation(e.start - e.centre, open_start - e.centre, e.sense) +
+    turn = sweep(e) - rotation_memo.rotation(e, open_start) +
            signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
     margin = turn * open_radius;
   }
@@ -382,8 +382,9 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
   } else {
     // TRC-ARC-CORNER-1: the intersection of the carriers nearest to the corner.
     Carrier cu = carrier_of(open_el, open_radius), cv = carrier_of(next, next_radius);
-    bool found = corner_intersection(cu, cv, v, next.start_tangent(), r, x);
-    decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", corner_gap(cu, cv, r));
+    bool found = intersection_memo.intersection(cu, cv, v, next.start_tangent(), r, x);
+    if (trace.keeps_decisions())  // the gap is only the trace's margin
+      decide("TRC-ARC-CORNER-1", b.words.line, found ? "intersection" : "none", corner_gap(cu, cv, r));
     if (found) x_error = intersection_error(cu, cv, x);
     if (!found && c.kind == Corner::Kind::kOuter)
       return transition_circle(copy, next, next_radius, v);  // TRC-ARC-CORNER-2
@@ -430,7 +431,7 @@ Compensation::Extent Compensation::extent_of(const Element& e, double radius, Ve
     double along = dot(p - Element::offset(e.start, e.unit, s * r), e.unit);
     return {along, e.length - along};
   }
-  double along = signed_rotation(e.start - e.centre, p - e.centre, e.sense);
+  double along = rotation_memo.rotation(e, p);
   return {along * radius, (sweep(e) - along) * radius};
 }
 

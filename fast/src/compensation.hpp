@@ -16,6 +16,7 @@
 #include "block_copy.hpp"
 #include "bottleneck.hpp"
 #include "collision_window.hpp"
+#include "corner_memo.hpp"
 #include "cutcom/decision_trace.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/programmed_decisions.hpp"
@@ -125,6 +126,9 @@ class Compensation {
   mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
   mutable Element unslotted_element;                 // element_of's for a block outside the slots
   mutable RootTangents root_tangents;                // decide_kind_exactly's and exact_side's GMP numbers
+  // The entry and the corner step take the same intersection and rotation (corner_memo.hpp).
+  IntersectionMemo intersection_memo;
+  mutable RotationMemo rotation_memo;
   int prev_slot = 0;
   bool has_prev = false;
   EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until
@@ -190,7 +194,8 @@ class Compensation {
     actions(owner, from);
     if (from.x == to.x && from.y == to.y && from.z == to.z) return;  // PATH-ELEMENT-1: no zero-length element
     auto fill = [&](PathElement& e) {
-      e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.feed = owner.feed;
+      e.type = ElementType::kLine, e.rapid = rapid, e.start = from, e.end = to, e.center = {}, e.ccw = false;
+      e.feed = owner.feed;
       e.feed_type = owner.feed_type;
       e.origin = named;
     };
