@@ -35,7 +35,7 @@ char* put_shortest_number(char* p, double v) {
   if (!std::isfinite(v)) return text::put(p, "null");
   return text::put_shortest(p, clean(v));
 }
-char* put_integer(char* p, std::int64_t v) { return std::to_chars(p, p + 24, v).ptr; }
+using text::put_integer;
 // A JSON string: printable ASCII directly, anything else (escapes, UTF-8 checks) by nlohmann.
 void append_string(std::string& out, std::string_view s) {
   for (char c : s)
@@ -55,18 +55,11 @@ void append_key(std::string& out, std::string_view key) {  // "key": after a com
 }
 }  // namespace
 
-char* JsonWriter::put_number(char* p, double v) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &v, sizeof bits);
-  for (const NumberText& k : recent_)
-    if (k.bits == bits && k.size != 0) {
-      std::memcpy(p, k.text, k.size);
-      return p + k.size;
-    }
+char* JsonWriter::put_new_number(char* p, double v, NumberText& keep) {
   char* end = put_shortest_number(p, v);
-  NumberText& k = recent_[recent_next_++ % recent_.size()];
-  k.bits = bits, k.size = static_cast<std::uint8_t>(end - p);
-  std::memcpy(k.text, p, k.size);
+  std::memcpy(&keep.bits, &v, sizeof keep.bits);
+  keep.size = static_cast<std::uint8_t>(end - p);
+  std::memcpy(keep.text, p, keep.size);
   return end;
 }
 
@@ -93,7 +86,7 @@ char* put_name(char* p, std::string_view name) {
 void JsonWriter::element(const PathElement& e) {
   // One buffer for the element, appended once (a path holds millions of elements): at most
   // 3 points of 82 characters, the description, a feed of at most 40 and the words around them.
-  constexpr std::size_t kRoom = 600 + kDescriptionRoom;
+  constexpr std::size_t kRoom = 600 + kDescriptionRoom + kNumberCopy;  // put_number copies past the end
   char item[kRoom];
   char* p = text::put(item, first_ ? "\n    {\"block\":" : ",\n    {\"block\":");
   first_ = false;
@@ -105,7 +98,11 @@ void JsonWriter::element(const PathElement& e) {
     p = put_point(p, e.center);
   }
   p = text::put(p, ",\"end\":");
+  char* end_text = p;
   p = put_point(p, e.end);
+  const std::size_t end_size = static_cast<std::size_t>(p - end_text);
+  const int spare = last_end_slot_ ^ 1;
+  std::memcpy(last_end_text_[spare], end_text, sizeof last_end_text_[spare]);  // whole: a few moves
   if (!e.rapid) {
     if (e.feed != last_feed_ || last_feed_text_.empty()) {  // one feed runs over many elements
       last_feed_ = e.feed;
@@ -148,8 +145,11 @@ void JsonWriter::element(const PathElement& e) {
   *p++ = '"';
   if (inserted && o.insert.kind == InsertKind::kTurn) key("turn"), p = put_integer(p, o.insert.turn);
   p = text::put(p, e.rapid ? "},\"rapid\":true,\"start\":" : "},\"rapid\":false,\"start\":");
-  p = put_point(p, e.start);
+  bool at_last_end = last_end_size_ != 0 && std::memcmp(&e.start, &last_end_, sizeof last_end_) == 0;
+  p = at_last_end ? text::put(p, std::string_view(last_end_text_[last_end_slot_], last_end_size_))
+                  : put_point(p, e.start);
   p = text::put(p, arc ? ",\"type\":\"arc\"}" : ",\"type\":\"line\"}");
+  last_end_ = e.end, last_end_size_ = end_size, last_end_slot_ = spare;
   buffer_.append(item, p);
   written();
 }
@@ -162,7 +162,7 @@ void JsonWriter::written() {
 
 void JsonWriter::action(const ActionEvent& a) {
   std::string& item = item_;
-  char head[128];
+  char head[128 + kNumberCopy];  // put_number copies past the end
   char* p = text::put(head, "{\"at\":");
   p = put_point(p, a.at);
   p = text::put(p, ",\"block\":");
@@ -190,7 +190,7 @@ void JsonWriter::decision(const Decision& d) {
     append_string(item, d.margin_exact);
   } else if (d.has_margin) {
     append_key(item, "margin");
-    char number[32];
+    char number[kNumberCopy + 1];  // put_number copies that many
     item.append(number, put_number(number, d.margin));
   }
   item += '}';
@@ -210,7 +210,7 @@ void JsonWriter::notice(const Notice& n) {
 }
 
 void JsonWriter::sar_variables(const SarVariables& v) {
-  char item[256];
+  char item[256 + kNumberCopy];  // put_number copies past the end
   char* p = text::put(item, "{\"$P_AEP\":");
   p = put_point(p, v.p_aep);
   p = text::put(p, ",\"$P_APDV\":");

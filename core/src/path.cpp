@@ -27,7 +27,7 @@ std::string_view origin_kind_name(OriginKind k) {
 namespace {
 // The description is written into a char buffer, not appended piece by piece to a string: the
 // writers describe every element of the path (issue "Performance").
-char* put_integer(char* p, std::int64_t v) { return std::to_chars(p, p + 24, v).ptr; }
+using text::put_integer;
 
 char* put_block_name(char* p, int line, const std::optional<std::int64_t>& n) {
   if (n) {

@@ -14,16 +14,39 @@
 
 namespace cutcom::text {
 
-inline void append_integer(std::string& out, std::int64_t v) {
-  char digits[24];
-  auto r = std::to_chars(digits, digits + sizeof digits, v);
-  out.append(digits, r.ptr);
-}
-
 // "00" "01" … "99": two digits per division (the writers' hottest loop).
 inline constexpr char kPairs[] =
     "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546474849"
     "5051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899";
+
+// An integer's digits at `p` (room for 20 characters); returns the end. The writers put several
+// per element (block numbers, lines, the element's count); most are below 10^8, written by pairs
+// after their length is known, the rest by std::to_chars (the same digits).
+inline char* put_integer(char* p, std::int64_t v) {
+  if (v < 0 || v >= 100000000) return std::to_chars(p, p + 20, v).ptr;
+  auto x = static_cast<std::uint32_t>(v);
+  int length = x < 10         ? 1
+               : x < 100      ? 2
+               : x < 1000     ? 3
+               : x < 10000    ? 4
+               : x < 100000   ? 5
+               : x < 1000000  ? 6
+               : x < 10000000 ? 7
+                              : 8;
+  char* end = p + length;
+  char* q = end;
+  for (; x >= 100; x /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (x % 100), 2);
+  if (x >= 10)
+    std::memcpy(q - 2, kPairs + 2 * x, 2);
+  else
+    q[-1] = static_cast<char>('0' + x);
+  return end;
+}
+
+inline void append_integer(std::string& out, std::int64_t v) {
+  char digits[24];
+  out.append(digits, put_integer(digits, v));
+}
 
 // Fixed notation with `places` decimals ("-12.3400" for places 4), the digits of std::to_chars,
 // written at `p` (room for 352 characters); returns the end. Most values take a short path:
@@ -121,6 +144,25 @@ inline char* put_short_decimal(char* p, double v) {
   return end;
 }
 
+// The 17 digits of v < 10^17, with leading zeros, at `p`: a fixed number of pairs, no loop
+// (a double's shortest significand has at most 17 digits).
+inline void put_17_digits(char* p, std::uint64_t v) {
+  std::uint64_t high = v / 100000000;  // at most 9 digits
+  auto low = static_cast<std::uint32_t>(v % 100000000);
+  auto top = static_cast<std::uint32_t>(high / 100000000);  // 1 digit
+  auto middle = static_cast<std::uint32_t>(high % 100000000);
+  auto put8 = [](char* q, std::uint32_t x) {
+    std::uint32_t a = x / 10000, b = x % 10000;
+    std::memcpy(q, kPairs + 2 * (a / 100), 2);
+    std::memcpy(q + 2, kPairs + 2 * (a % 100), 2);
+    std::memcpy(q + 4, kPairs + 2 * (b / 100), 2);
+    std::memcpy(q + 6, kPairs + 2 * (b % 100), 2);
+  };
+  p[0] = static_cast<char>('0' + top);
+  put8(p + 1, middle);
+  put8(p + 9, low);
+}
+
 // A JSON number (docs/json-format.md): the shortest decimal that reads back as the same double,
 // and of those the nearest (Dragonbox, through fmt, which prints its doubles by it; the digits
 // are std::to_chars's, tests/text_append_test.cpp), laid out as nlohmann::json lays out a double:
@@ -133,9 +175,11 @@ inline char* put_shortest(char* p, double v) {
   if (v == 0) return put(p, std::signbit(v) ? std::string_view("-0.0") : std::string_view("0.0"));
   if (!std::isfinite(v)) return std::to_chars(p, p + 32, v).ptr;
   auto decimal = fmt::detail::dragonbox::to_decimal(std::fabs(v));  // significand * 10^exponent
-  char digits[24];
-  char* last = std::to_chars(digits, digits + sizeof digits, decimal.significand).ptr;
-  int count = static_cast<int>(last - digits);
+  char padded[17];
+  put_17_digits(padded, decimal.significand);
+  const char* digits = padded;
+  while (*digits == '0') ++digits;  // the significand is not 0
+  int count = static_cast<int>(padded + sizeof padded - digits);
   int point = count + decimal.exponent;  // the decimal point's place after the first digit
   if (std::signbit(v)) *p++ = '-';
   if (point <= -4 || point > 15) {  // d.ddde+XX
@@ -168,8 +212,7 @@ inline char* put_shortest(char* p, double v) {
 // `v` right-aligned in `width` characters at `p` ("{:>width}"); returns the end.
 inline char* put_right_integer(char* p, std::int64_t v, std::size_t width) {
   char digits[24];
-  auto r = std::to_chars(digits, digits + sizeof digits, v);
-  auto n = static_cast<std::size_t>(r.ptr - digits);
+  auto n = static_cast<std::size_t>(put_integer(digits, v) - digits);
   for (; n < width; --width) *p++ = ' ';
   return put(p, std::string_view(digits, n));
 }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -37,18 +38,36 @@ class JsonWriter : public PathSink {
 
  private:
   void written();  // writes the element buffer out once it is large
-  // A number (the shortest text that reads back) and a point; the numbers written last are kept
-  // with their text: numbers are most of the writer's time, and an element starts where the one
-  // before it ended, mostly in the same plane.
-  char* put_number(char* p, double v);
-  char* put_point(char* p, const PathPoint& q);
+  // A number (the shortest text that reads back) and a point. Numbers written before are kept
+  // with their text, one place per number chosen by its bits (a table of 256): numbers are most of
+  // the writer's time, and an element starts where the one before it ended, mostly in the same
+  // plane. A kept text is copied whole (kNumberCopy bytes): the buffer written has that room
+  // past any number.
+  static constexpr std::size_t kNumberCopy = 31;
   struct NumberText {
     std::uint64_t bits = 0;
     std::uint8_t size = 0;  // 0: none kept
-    char text[30];
+    char text[kNumberCopy];
   };
-  std::array<NumberText, 8> recent_{};
-  std::size_t recent_next_ = 0;
+  char* put_number(char* p, double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    NumberText& k = recent_[(bits * 0x9E3779B97F4A7C15u) >> 56];
+    if (k.bits == bits && k.size != 0) {
+      std::memcpy(p, k.text, kNumberCopy);
+      return p + k.size;
+    }
+    return put_new_number(p, v, k);
+  }
+  char* put_new_number(char* p, double v, NumberText& keep);
+  char* put_point(char* p, const PathPoint& q);
+  std::array<NumberText, 256> recent_{};
+  // The last element's end as written: the next one mostly starts there. Two texts: the
+  // element being written keeps its end in the other one (its own buffer may be flushed).
+  PathPoint last_end_{};
+  char last_end_text_[2][3 * 26 + 4];
+  std::size_t last_end_size_ = 0;
+  int last_end_slot_ = 0;
 
   std::ostream& out_;
   SourceNames sources_;
