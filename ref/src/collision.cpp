@@ -39,7 +39,7 @@ std::optional<Compensation::Entry> Compensation::entry_of(const Block& m, const 
     FT cross = prev.end_dir.x() * next.start_dir.y() - prev.end_dir.y() * next.start_dir.x();
     FT dot = prev.end_dir * next.start_dir;
     decide("TRC-CD-2", line, kKind[static_cast<int>(kind)],
-           exact_text(FT(comp_->s) * cross / exact_root(dot * dot + cross * cross)));
+           margins_kept() ? exact_text(FT(comp_->s) * cross / exact_root(dot * dot + cross * cross)) : std::string());
   }
   Point prev_end = equidistant_point<Kernel>(prev.b, prev.end_normal(), sr);
   if (kind == CornerKind::kOuter && !outer_corner_is_circle(m, prev, prev_radius, next, en.radius, rc)) {
@@ -71,7 +71,7 @@ std::optional<Compensation::Entry> Compensation::entry_of(const Block& m, const 
   // The entry hinges on two thresholds with circles: that the carriers meet at all (their gap)
   // and that the intersection lies before the end; the margin is the nearer one.
   std::string margin = reach.left_text;
-  if (!beyond && (u.circle || v.circle)) {
+  if (!beyond && margins_kept() && (u.circle || v.circle)) {
     FT gap = carrier_gap<Kernel>(u, v);
     if (std::fabs(rough(gap)) * 1e-9 < std::strtod(reach.left_text.c_str(), nullptr))
       margin = exact_mm(-gap);  // units -> mm
@@ -98,7 +98,8 @@ bool Compensation::outer_corner_is_circle(const Block& m, const ContourElement& 
   g451_point_ = nearest_intersection(u, v, prev.b, next.start_dir);
   if (g451_point_) facts_.add(*g451_point_, u), facts_.add(*g451_point_, v);
   // The carriers may just touch: the margin is their gap (a knife edge at 0).
-  decide("TRC-CD-2", m.words.line, g451_point_ ? "g451-meets" : "g451-misses", exact_mm(carrier_gap<Kernel>(u, v)));
+  decide("TRC-CD-2", m.words.line, g451_point_ ? "g451-meets" : "g451-misses",
+         margins_kept() ? exact_mm(carrier_gap<Kernel>(u, v)) : std::string());
   return !g451_point_;
 }
 

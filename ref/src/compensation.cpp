@@ -366,9 +366,9 @@ bool Compensation::outer_corner_circle(const Block& at_block, const std::optiona
     const CornerClass& c = *rc;
     mpz_class ic = c.a1 * c.b2 - c.b1 * c.a2, id = c.a1 * c.a2 + c.b1 * c.b2;
     mpz_class l2 = (c.a1 * c.a1 + c.b1 * c.b1) * (c.a2 * c.a2 + c.b2 * c.b2);
-    a = compare_contour_angle(ic, id, l2, limit);
+    a = compare_contour_angle(ic, id, l2, limit, margins_kept());
   } else {
-    a = compare_contour_angle_exact(cross, dot, dot * dot + cross * cross, limit);
+    a = compare_contour_angle_exact(cross, dot, dot * dot + cross * cross, limit, margins_kept());
   }
   if (g451) {
     bool circle = a.sign > 0;
@@ -388,14 +388,14 @@ Compensation::Extent Compensation::extent_of(const ContourElement& e, const FT& 
     FT along_d = (p - start) * e.d, left_d = e.d * e.d - along_d;
     x.before_start = CGAL::sign(along_d), x.after_end = CGAL::sign(left_d);
     x.start_nearer = margin_less(along_d, left_d);  // picks a margin only (filtered.hpp)
-    x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
+    if (margins_kept()) x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
   } else {
     CircleFrame f(e.a - e.centre, e.sense);
     CirclePosition start = f.start(), at = f.signed_from(start, p - e.centre);
     CirclePosition end = f.end(e.b - e.centre, e.full_circle);
     x.before_start = f.compare(at, start), x.after_end = f.compare(end, at);
     x.start_nearer = std::fabs(f.radians(start, at)) < std::fabs(f.radians(at, end));  // picks a margin only
-    x.along_text = f.length_text(start, at, radius), x.left_text = f.length_text(at, end, radius);
+    if (margins_kept()) x.along_text = f.length_text(start, at, radius), x.left_text = f.length_text(at, end, radius);
   }
   return x;
 }
@@ -449,7 +449,7 @@ void Compensation::look_ahead(const Block& b) {
       margin = on.start_nearer ? on.along_text : on.left_text;
     // With a circle the carriers' overlap too, when it is less (picked by the filter value, as
     // TRC-CD-3): carriers that just touch are the knife edge of meeting at all.
-    if (valid && (u.circle || v.circle)) {
+    if (valid && margins_kept() && (u.circle || v.circle)) {
       FT depth = -carrier_gap<Kernel>(u, v);
       if (rough(depth) < std::stod(margin)) margin = exact_mm(depth);
     }
@@ -482,10 +482,11 @@ std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u
   std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
   if (xs.empty()) return std::nullopt;
   if (xs.size() == 1) return xs[0];
-  CGAL::Comparison_result c = CGAL::compare_distance_to_point(vertex, xs[1], xs[0]);
-  if (c == CGAL::EQUAL)
-    return CGAL::compare((xs[1] - vertex) * ahead, (xs[0] - vertex) * ahead) == CGAL::LARGER ? xs[1] : xs[0];
-  return c == CGAL::SMALLER ? xs[1] : xs[0];
+  // The nearer one; equally near, the one further along `ahead` (second_farther's algebra, checked
+  // against the points in ref/test/intersection_order_test.cpp).
+  CGAL::Sign c = second_farther(u, v, vertex);
+  if (c == CGAL::ZERO) return second_ahead(u, v, ahead) == CGAL::POSITIVE ? xs[1] : xs[0];
+  return c == CGAL::NEGATIVE ? xs[1] : xs[0];
 }
 
 void Compensation::transition_circle(const Block& next_block, const ContourElement& next, const FT& next_radius,

@@ -155,10 +155,11 @@ int sign_cos_difference_exact(const FT& dot, const FT& l2, const mpq_class& t) {
 }  // namespace
 
 AngleComparison compare_contour_angle_exact(const FT& cross, const FT& dot, const FT& squared_lengths_product,
-                                            const Decimal& threshold_degrees) {
+                                            const Decimal& threshold_degrees, bool with_margin) {
   mpq_class t = threshold_rational(threshold_degrees);
   AngleComparison r;
   r.sign = sign_cos_difference_exact(dot, squared_lengths_product, t);
+  if (!with_margin) return r;
   // Digits only (the sign is decided above): the angle from the nearest doubles.
   Mpfr sine(192), cosine(192);
   mpfr_set_d(sine.v, CGAL::to_double(cross), MPFR_RNDN);
@@ -168,11 +169,13 @@ AngleComparison compare_contour_angle_exact(const FT& cross, const FT& dot, cons
 }
 
 AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& dot,
-                                      const mpz_class& squared_lengths_product, const Decimal& threshold_degrees) {
+                                      const mpz_class& squared_lengths_product, const Decimal& threshold_degrees,
+                                      bool with_margin) {
   mpq_class t = threshold_rational(threshold_degrees);
   AngleComparison r;
   // theta > T  <=>  cos theta < cos T  (both angles in [0, 180] degrees).
   r.sign = sign_cos_difference(dot, squared_lengths_product, t);
+  if (!with_margin) return r;
   Mpfr sine(192), cosine(192);
   mpfr_set_z(sine.v, cross.get_mpz_t(), MPFR_RNDN);
   mpfr_set_z(cosine.v, dot.get_mpz_t(), MPFR_RNDN);

@@ -24,14 +24,16 @@ struct AngleComparison {
 // only for T mod 180 in {0, 30, 45, 60, 90, 120, 135, 150}; those are compared with rationals.
 // For any other T the two values differ, so MPFR evaluation with a proven error bound and
 // increasing precision always reaches a decision.
+// `with_margin` false: the sign only (margin_text empty), where no trace keeps the margin.
 AngleComparison compare_contour_angle(const mpz_class& cross, const mpz_class& dot,
-                                      const mpz_class& squared_lengths_product, const Decimal& threshold_degrees);
+                                      const mpz_class& squared_lengths_product, const Decimal& threshold_degrees,
+                                      bool with_margin = true);
 
 // The same for directions with square roots (CR= circles), given as exact numbers. cos T is
 // bracketed by rationals (MPFR, growing precision) and compared exactly with cos(theta); the
 // special thresholds are compared exactly as above. Equal to 2^-4096 counts as equal: possible
 // only when cos T is itself a nest of square roots (a constructible T such as 36 or 22.5).
 AngleComparison compare_contour_angle_exact(const FT& cross, const FT& dot, const FT& squared_lengths_product,
-                                            const Decimal& threshold_degrees);
+                                            const Decimal& threshold_degrees, bool with_margin = true);
 
 }  // namespace cutcom::ref

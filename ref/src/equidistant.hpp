@@ -122,4 +122,28 @@ std::vector<typename K::Point_2> carrier_intersections(const Carrier<K>& u, cons
   return out;
 }
 
+// Of two distinct intersections (xs[0], xs[1] as carrier_intersections gives them, one carrier at
+// least a circle), the sign of |xs[1] - p|^2 - |xs[0] - p|^2 and of (xs[1] - xs[0]) . w, from the
+// carriers without the square root: the same signs as the points', far cheaper to decide exactly.
+// Line p_l + t d and circle about c: t1 - t0 = 2 root / a > 0 and t1 + t0 = -2b / a, so the first
+// difference is (4 root / a)((p_l - p) . d - b) = (4 root / a)((c - p) . d), the second (t1 - t0) d . w.
+// Two circles: xs = m -+ h perp (h > 0), m - u.point along d, perp . d = 0: the first difference is
+// -4 h (u.point - p) . perp, the second -2 h perp . w.
+template <class K>
+CGAL::Sign second_farther(const Carrier<K>& u, const Carrier<K>& v, const typename K::Point_2& p) {
+  if (u.circle != v.circle) {
+    const Carrier<K>& l = u.circle ? v : u;
+    const Carrier<K>& c = u.circle ? u : v;
+    return CGAL::sign((c.point - p) * l.direction);
+  }
+  typename K::Vector_2 d = v.point - u.point, perp(-d.y(), d.x());
+  return -CGAL::sign((u.point - p) * perp);
+}
+template <class K>
+CGAL::Sign second_ahead(const Carrier<K>& u, const Carrier<K>& v, const typename K::Vector_2& w) {
+  if (u.circle != v.circle) return CGAL::sign((u.circle ? v : u).direction * w);
+  typename K::Vector_2 d = v.point - u.point, perp(-d.y(), d.x());
+  return -CGAL::sign(perp * w);
+}
+
 }  // namespace cutcom::ref

@@ -21,8 +21,7 @@ Point ExactPoint::plane(PlaneAxes axes) const {
 }
 
 PathPoint ExactPath::output(const ExactPoint& p) const {
-  auto mm = [](const FT& units) { return nearest_double(units / FT(1'000'000'000L)); };  // output boundary
-  return {mm(p.x), mm(p.y), mm(p.z)};
+  return {nearest_mm(p.x), nearest_mm(p.y), nearest_mm(p.z)};  // the output boundary
 }
 
 bool ExactPath::same(const ExactPoint& a, const ExactPoint& b) const { return a.x == b.x && a.y == b.y && a.z == b.z; }

@@ -31,7 +31,10 @@ namespace {
 // Empty where a midpoint between two doubles may lie inside, or outside the normal range: the
 // exact comparisons below decide then. One approximation instead of two exact comparisons with
 // midpoints, which took half of ref's time on a plain contour.
-std::optional<double> nearest_from_interval(const FT& value, long prec) {
+// `divisor` (> 0): the double nearest to value / divisor, the interval's ends divided with outward
+// rounding (no new expression node, and the value's own approximation is kept by CORE for the next
+// time: a point is output as one element's end and the next one's start).
+std::optional<double> nearest_from_interval(const FT& value, long prec, unsigned long divisor = 1) {
   CORE::BigFloat a = value.approx(prec, CORE::extLong::getPosInfty()).BigFloatValue();
   if (sign(a.m()) == 0 && a.err() == 0) return 0.0;
   mpz_class m(a.m().get_mp()), err(static_cast<unsigned long>(a.err()));
@@ -47,6 +50,7 @@ std::optional<double> nearest_from_interval(const FT& value, long prec) {
   mpfr_mul_2si(slack, slack, 2 - prec, MPFR_RNDU);
   mpfr_sub(lo, lo, slack, MPFR_RNDD);
   mpfr_add(hi, hi, slack, MPFR_RNDU);
+  if (divisor != 1) mpfr_div_ui(lo, lo, divisor, MPFR_RNDD), mpfr_div_ui(hi, hi, divisor, MPFR_RNDU);
   double dl = mpfr_get_d(lo, MPFR_RNDN), dh = mpfr_get_d(hi, MPFR_RNDN);
   mpfr_clears(lo, hi, slack, static_cast<mpfr_ptr>(nullptr));
   if (dl != dh || !std::isfinite(dl) || std::fabs(dl) < DBL_MIN) return std::nullopt;
@@ -85,6 +89,11 @@ double nearest_double(const FT& value) {
     if (at_high == CGAL::EQUAL && !even(d)) return above;
     return d;
   }
+}
+
+double nearest_mm(const FT& units) {
+  if (auto d = nearest_from_interval(units, 96, 1'000'000'000UL)) return *d;
+  return nearest_double(units / FT(1'000'000'000L));
 }
 
 std::string exact_text(const FT& value) {

@@ -37,6 +37,8 @@ inline Vector unit_left_normal(const Vector& d) {
 // conversion is good to about an ulp, so two expressions of one value could print as two doubles
 // (a full circle's end a rounding away from its start, a turn nobody can read back).
 double nearest_double(const FT& value);
+// The same of units (10^-9 mm) in mm: the double nearest to units / 10^9.
+double nearest_mm(const FT& units);
 
 // A margin for the decision trace: the sign is exact, the digits are a 20-digit rendering.
 std::string exact_text(const FT& value);

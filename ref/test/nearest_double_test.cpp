@@ -75,5 +75,29 @@ TEST(NearestDouble, ZeroAndExactDoublesStay) {
     EXPECT_EQ(nearest_double(FT(d)), d);
 }
 
+// PATH-ELEMENT-2: the output's millimetres, units / 10^9 rounded once, as nearest_double rounds the
+// quotient: on roots, ratios and on midpoints between doubles times 10^9 (the interval cannot
+// decide there; the exact comparisons do).
+TEST(NearestDouble, MillimetresOfUnitsRoundAsTheQuotient) {
+  std::mt19937_64 random(20261129);
+  for (int i = 0; i < 5000; ++i) {
+    long p = static_cast<long>(random() % 2'000'000'000'001) - 1'000'000'000'000;
+    long q = static_cast<long>(random() % 999'999) + 1;
+    FT ratio = FT(p) / FT(q), root = CGAL::sqrt(FT(static_cast<double>(random() % 1'000'000'000'000 + 1)));
+    for (const FT& units : {ratio, root, -root, ratio * root})
+      EXPECT_EQ(nearest_mm(units), nearest_double(units / FT(1'000'000'000L))) << p << "/" << q;
+  }
+  std::uniform_real_distribution<double> any(-1e4, 1e4);
+  for (int i = 0; i < 500; ++i) {
+    double d = any(random), above = std::nextafter(d, HUGE_VAL);
+    FT mid = (exact(d) + exact(above)) / FT(2);
+    std::uint64_t bits;
+    std::memcpy(&bits, &d, sizeof bits);
+    EXPECT_EQ(nearest_mm(mid * FT(1'000'000'000L)), (bits & 1U) == 0 ? d : above) << d;
+  }
+  EXPECT_EQ(nearest_mm(FT(0)), 0.0);
+  EXPECT_EQ(nearest_mm(FT(-1'500'000'000L)), -1.5);
+}
+
 }  // namespace
 }  // namespace cutcom::ref
