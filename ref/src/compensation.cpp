@@ -387,15 +387,19 @@ Compensation::Extent Compensation::extent_of(const ContourElement& e, const FT& 
     // Signs on the lengths times |d| (no square root in the exact zero tests).
     FT along_d = (p - start) * e.d, left_d = e.d * e.d - along_d;
     x.before_start = CGAL::sign(along_d), x.after_end = CGAL::sign(left_d);
-    x.start_nearer = margin_less(along_d, left_d);  // picks a margin only (filtered.hpp)
-    if (margins_kept()) x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
+    if (margins_kept()) {                             // the margins only: no trace, no texts
+      x.start_nearer = margin_less(along_d, left_d);  // picks a margin (filtered.hpp)
+      x.along_text = exact_mm(along_d / e.length), x.left_text = exact_mm(left_d / e.length);
+    }
   } else {
     CircleFrame f(e.a - e.centre, e.sense);
     CirclePosition start = f.start(), at = f.signed_from(start, p - e.centre);
     CirclePosition end = f.end(e.b - e.centre, e.full_circle);
     x.before_start = f.compare(at, start), x.after_end = f.compare(end, at);
-    x.start_nearer = std::fabs(f.radians(start, at)) < std::fabs(f.radians(at, end));  // picks a margin only
-    if (margins_kept()) x.along_text = f.length_text(start, at, radius), x.left_text = f.length_text(at, end, radius);
+    if (margins_kept()) {  // the margins only: no trace, no texts
+      x.start_nearer = std::fabs(f.radians(start, at)) < std::fabs(f.radians(at, end));  // picks a margin
+      x.along_text = f.length_text(start, at, radius), x.left_text = f.length_text(at, end, radius);
+    }
   }
   return x;
 }
