@@ -486,12 +486,13 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       // level with its centre on a second axis, and whose end lies as far from the centre in that
       // plane, leaves two axes within rounding of a tie, which each engine's ulps may break
       // differently (campaign 20261259, case 64525: a SAR helix of radius DISR = its drop).
-      int axis = sweep_axis(r);
+      // (A full circle's points tell no axis: then each element's own.)
+      bool r_full = r.start.x == r.end.x && r.start.y == r.end.y && r.start.z == r.end.z;
+      int axis = r_full ? -1 : sweep_axis(r);
       std::optional<double> rs = sweep_of(r, axis), fs = sweep_of(f, axis);
       if (rs && fs) e = std::max(e, std::fabs(*rs - *fs) * radius_of(r));
       // A full circle (start == end) against an arc whose end points lie a rounding apart on one
       // radius: that arc's turn is undetermined (a sliver or a full circle to whoever reads it).
-      bool r_full = r.start.x == r.end.x && r.start.y == r.end.y && r.start.z == r.end.z;
       bool f_full = f.start.x == f.end.x && f.start.y == f.end.y && f.start.z == f.end.z;
       if ((r_full && !fs) || (f_full && !rs))
         return diverge(

@@ -106,6 +106,11 @@ TEST(Comparison, AFullCircleAgainstAnArcWithTheSameEndPointsDiverges) {
   ref.path = {arc({-0.659, -5.54, 2.383}, {-0.659, -10.226, 0}, {-0.659, -7.883, 2.383}, true)};
   fast.path = {arc({-0.659, -5.54, 2.383}, {-0.659, -10.226 + 1e-15, 0}, {-0.659, -7.883, 2.383}, true)};
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree) << compare(ref, fast, tolerance()).explanation;
+  // A SAR helix level with its centre in Y and Z, as far from it at its end in ZX as in XY
+  // (campaign 20261259, case 64525): both sweeps about ref's axis, whatever fast's ulps favour.
+  ref.path = {arc({-3.002, -2.997, 0.002}, {-3, -2.999, 0}, {-3, -2.997, 0.002}, true)};
+  fast.path = {arc({-3.0020000000000002, -2.997, 0.002}, {-3, -2.999, 0}, {-3, -2.997, 0.002}, true)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree) << compare(ref, fast, tolerance()).explanation;
 }
 
 }  // namespace
