@@ -1,7 +1,5 @@
 #include "cutcom/path.hpp"
 
-#include <charconv>
-
 #include "text_append.hpp"
 
 namespace cutcom {

@@ -16,6 +16,15 @@ namespace {
 
 FT exact(double d) { return FT(d); }  // a double is a dyadic rational: exact in CORE
 
+// The midpoint between d and the next double up, exactly; and of d and that neighbour the one a
+// tie rounds to (the even last digit).
+FT midpoint_above(double d) { return (exact(d) + exact(std::nextafter(d, HUGE_VAL))) / FT(2); }
+double even_of(double d, double above) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &d, sizeof bits);
+  return (bits & 1U) == 0 ? d : above;
+}
+
 double mpfr_nearest_sqrt(unsigned long n, long halvings) {
   mpfr_t x;
   mpfr_init2(x, 53);
@@ -56,10 +65,8 @@ TEST(NearestDouble, MidpointsTieToEvenAndAHairBesideThemDoNot) {
   std::uniform_real_distribution<double> any(-1e4, 1e4);
   for (int i = 0; i < 2000; ++i) {
     double d = any(random), above = std::nextafter(d, HUGE_VAL);
-    FT mid = (exact(d) + exact(above)) / FT(2);
-    std::uint64_t bits;
-    std::memcpy(&bits, &d, sizeof bits);
-    EXPECT_EQ(nearest_double(mid), (bits & 1U) == 0 ? d : above) << d;
+    FT mid = midpoint_above(d);
+    EXPECT_EQ(nearest_double(mid), even_of(d, above)) << d;
     FT hair = FT(1) / FT(1e30);
     EXPECT_EQ(nearest_double(mid - hair * FT(std::fabs(d))), d) << d;
     EXPECT_EQ(nearest_double(mid + hair * FT(std::fabs(d))), above) << d;
@@ -90,10 +97,7 @@ TEST(NearestDouble, MillimetresOfUnitsRoundAsTheQuotient) {
   std::uniform_real_distribution<double> any(-1e4, 1e4);
   for (int i = 0; i < 500; ++i) {
     double d = any(random), above = std::nextafter(d, HUGE_VAL);
-    FT mid = (exact(d) + exact(above)) / FT(2);
-    std::uint64_t bits;
-    std::memcpy(&bits, &d, sizeof bits);
-    EXPECT_EQ(nearest_mm(mid * FT(1'000'000'000L)), (bits & 1U) == 0 ? d : above) << d;
+    EXPECT_EQ(nearest_mm(midpoint_above(d) * FT(1'000'000'000L)), even_of(d, above)) << d;
   }
   EXPECT_EQ(nearest_mm(FT(0)), 0.0);
   EXPECT_EQ(nearest_mm(FT(-1'500'000'000L)), -1.5);
