@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cutcom/units_mpz.hpp"
+
 namespace cutcom {
 namespace {
 
-mpz_class units(const Decimal& d) { return mpz_class(int128_to_string(d.units())); }
+mpz_class units(const Decimal& d) { return to_mpz(d); }
 
 int sign(const mpz_class& z) { return sgn(z); }
 
@@ -24,7 +26,9 @@ ProgrammedDecision with_margin(std::string_view clause, std::string_view branch,
 // A margin whose value needs square roots: `value` evaluates it (in units) at 256 bits; `exact_sign`
 // is its sign decided exactly. The digits are the nearest double's 17, as for every margin.
 template <class F>
-ProgrammedDecision with_root_margin(std::string_view clause, std::string_view branch, int exact_sign, F value) {
+ProgrammedDecision with_root_margin(std::string_view clause, std::string_view branch, int exact_sign, MarginText text,
+                                    F value) {
+  if (text == MarginText::kNone) return {clause, branch, false, "", 0.0};
   if (exact_sign == 0) return {clause, branch, true, "0", 0.0};
   mpfr_t v;
   mpfr_init2(v, 256);
@@ -137,7 +141,7 @@ ProgrammedDecision cr_circle_reach(const Block& b, MarginText text) {
   // (no circle is defined by one point and a radius), whatever the margin.
   bool reachable = sign(chord2) > 0 && chord2 <= reach * reach;
   int margin_sign = sign(reach * reach - chord2);
-  return with_root_margin("ARC-CR-1", reachable ? "circle" : "unreachable", margin_sign, [&](mpfr_t v) {
+  return with_root_margin("ARC-CR-1", reachable ? "circle" : "unreachable", margin_sign, text, [&](mpfr_t v) {
     mpfr_t c;
     mpfr_init2(c, 256);
     set_z(c, chord2);
@@ -164,15 +168,15 @@ std::optional<int> circle_radius_sign(const Block& b, const Decimal& r) {
 }
 
 int circle_radius_sign(const ProgrammedCircle& c, Int128 r_units) {
-  mpz_class r = mpz_class(int128_to_string(r_units));
+  mpz_class r = to_mpz(r_units);
   if (!c.by_centre) {  // rho = |CR|, or half the chord where that is a rounding longer (ARC-CR-1)
-    mpz_class rho = mpz_class(int128_to_string(c.cr < 0 ? -c.cr : c.cr));
-    mpz_class ca = mpz_class(int128_to_string(c.chord[0])), cb = mpz_class(int128_to_string(c.chord[1]));
+    mpz_class rho = to_mpz(c.cr < 0 ? -c.cr : c.cr);
+    mpz_class ca = to_mpz(c.chord[0]), cb = to_mpz(c.chord[1]);
     mpz_class chord2 = ca * ca + cb * cb;
     if (chord2 > 4 * rho * rho) return sign(chord2 - 4 * r * r);
     return sign(rho - r);
   }
-  auto z = [](Int128 v) { return mpz_class(int128_to_string(v)); };
+  auto z = [](Int128 v) { return to_mpz(v); };
   mpz_class ca = z(c.chord[0]), cb = z(c.chord[1]), ta = z(c.to_centre[0]), tb = z(c.to_centre[1]);
   if (ca == 0 && cb == 0) return sign(ta * ta + tb * tb - r * r);  // a full circle: its centre as programmed
   // The corrected centre m + k p (m the chord's midpoint, p its perpendicular) is rational; with
@@ -222,7 +226,7 @@ ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, Margi
   int excess_sign = (sc < 0 || sf < 0) ? -1 : (sc == 0 || sf == 0) ? 0 : 1;
   // Boundary rule: a difference of exactly the tolerance is within.
   bool within = excess_sign <= 0;
-  return with_root_margin("ARC-CENTRE-2", within ? "within" : "beyond", excess_sign, [&](mpfr_t v) {
+  return with_root_margin("ARC-CENTRE-2", within ? "within" : "beyond", excess_sign, text, [&](mpfr_t v) {
     mpfr_t ra, rb, t, k;
     for (auto* x : {&ra, &rb, &t, &k}) mpfr_init2(*x, 256);
     set_z(ra, A), mpfr_sqrt(ra, ra, MPFR_RNDN);

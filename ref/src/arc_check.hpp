@@ -11,13 +11,14 @@ namespace cutcom::ref::detail {
 
 // False: alarm 14040 stopped the program.
 inline bool arc_is_consistent(const Block& b, const MachineData& md, Trace& trace) {
+  MarginText margin = trace.keeps_decisions() ? MarginText::kExact : MarginText::kNone;
   if (!b.centre) {  // ARC-CR-1
-    ProgrammedDecision reach = cr_circle_reach(b, MarginText::kExact);
+    ProgrammedDecision reach = cr_circle_reach(b, margin);
     trace.decide(reach, b.words.line);
     if (reach.branch != "circle") trace.raise(14040, b, "ARC-CR-1");
     return reach.branch == "circle";
   }
-  ProgrammedDecision t = circle_end_point(b, md, MarginText::kExact);  // ARC-CENTRE-2
+  ProgrammedDecision t = circle_end_point(b, md, margin);  // ARC-CENTRE-2
   trace.decide(t, b.words.line);
   if (t.branch != "within") trace.raise(14040, b);
   return t.branch == "within";

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cutcom/units_mpz.hpp"
 #include "exact_root.hpp"
 #include "kernel.hpp"
 
@@ -24,7 +25,7 @@ struct Mpfr {
 FT to_ft_q(const mpq_class& q) { return FT(CORE::BigRat(q.get_mpq_t())); }
 
 mpq_class threshold_rational(const Decimal& t) {
-  mpq_class q(mpz_class(int128_to_string(t.units())), mpz_class(Decimal::kUnitsPerOne));
+  mpq_class q(to_mpz(t), mpz_class(Decimal::kUnitsPerOne));
   q.canonicalize();
   return q;
 }

@@ -1,5 +1,7 @@
 #include "kernel.hpp"
 
+#include "cutcom/units_mpz.hpp"
+
 #include <fmt/format.h>
 #include <mpfr.h>
 
@@ -12,7 +14,7 @@
 
 namespace cutcom::ref {
 
-mpz_class units_of(const Decimal& d) { return mpz_class(int128_to_string(d.units())); }
+mpz_class units_of(const Decimal& d) { return to_mpz(d); }
 
 FT leaf(const Decimal& d) {
   Int128 u = d.units();

@@ -28,8 +28,9 @@ struct ProgrammedDecision {
 
 // Whether a decision's margin is also written exactly (ref's trace) or only as a double (fast's:
 // the circle checks of every arc are then decided in double under a proven error bound, exactly
-// only near their threshold, so that fast allocates nothing per block).
-enum class MarginText { kExact, kDouble };
+// only near their threshold, so that fast allocates nothing per block). kNone: decided exactly
+// with no margin at all, where no trace keeps it (ref's run without --trace).
+enum class MarginText { kExact, kDouble, kNone };
 
 // TRC-RADIUS-2: the side the tool runs on from G41/G42 and the sign of the effective radius
 // (TRC-RADIUS-1); a negative radius swaps the side, its magnitude is the radius compensated.
