@@ -211,30 +211,34 @@ std::optional<std::string> zero_length_element(const RunResult& run, std::string
   return std::nullopt;
 }
 
-std::optional<std::string> untraced_difference(const RunResult& traced, const RunResult& untraced) {
+std::optional<std::string> untraced_difference(const RunResult& traced, const RunResult& untraced,
+                                               std::string_view engine) {
   auto same = [](const PathPoint& a, const PathPoint& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
   if (traced.path.size() != untraced.path.size())
-    return fmt::format("fast without its trace: {} elements, with it {}", untraced.path.size(), traced.path.size());
+    return fmt::format("{} without its trace: {} elements, with it {}", engine, untraced.path.size(),
+                       traced.path.size());
   for (std::size_t i = 0; i < traced.path.size(); ++i) {
     const PathElement &a = traced.path[i], &b = untraced.path[i];
     bool arc = a.type == ElementType::kArc;
     if (a.type != b.type || a.rapid != b.rapid || !same(a.start, b.start) || !same(a.end, b.end) ||
         (arc && (!same(a.center, b.center) || a.ccw != b.ccw)) || a.origin.kind != b.origin.kind ||
         a.origin.line != b.origin.line)
-      return fmt::format("fast without its trace: element {} ({}) differs", i, describe(a.origin));
+      return fmt::format("{} without its trace: element {} ({}) differs", engine, i, describe(a.origin));
   }
   if (traced.actions.size() != untraced.actions.size())
-    return fmt::format("fast without its trace: {} actions, with it {}", untraced.actions.size(),
+    return fmt::format("{} without its trace: {} actions, with it {}", engine, untraced.actions.size(),
                        traced.actions.size());
   for (std::size_t i = 0; i < traced.actions.size(); ++i)
     if (traced.actions[i].line != untraced.actions[i].line || !same(traced.actions[i].at, untraced.actions[i].at))
-      return fmt::format("fast without its trace: action {} at line {} differs", i, traced.actions[i].line);
+      return fmt::format("{} without its trace: action {} at line {} differs", engine, i, traced.actions[i].line);
   if (traced.alarms.size() != untraced.alarms.size())
-    return fmt::format("fast without its trace: {} alarms, with it {}", untraced.alarms.size(), traced.alarms.size());
+    return fmt::format("{} without its trace: {} alarms, with it {}", engine, untraced.alarms.size(),
+                       traced.alarms.size());
   for (std::size_t i = 0; i < traced.alarms.size(); ++i)
     if (traced.alarms[i].number != untraced.alarms[i].number || traced.alarms[i].line != untraced.alarms[i].line)
-      return fmt::format("fast without its trace: alarm {} line {}, with it {} line {}", untraced.alarms[i].number,
-                         untraced.alarms[i].line, traced.alarms[i].number, traced.alarms[i].line);
+      return fmt::format("{} without its trace: alarm {} line {}, with it {} line {}", engine,
+                         untraced.alarms[i].number, untraced.alarms[i].line, traced.alarms[i].number,
+                         traced.alarms[i].line);
   return std::nullopt;
 }
 

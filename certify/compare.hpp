@@ -83,6 +83,7 @@ std::optional<std::string> zero_length_element(const RunResult& run, std::string
 // PROP-TRACE-1: what differs between fast's run that keeps its decisions and the same run that
 // keeps none (`cutcom run` without --trace, which may leave out work only margins need): path,
 // actions and alarms must be identical, bit for bit. Empty when nothing does.
-std::optional<std::string> untraced_difference(const RunResult& traced, const RunResult& untraced);
+std::optional<std::string> untraced_difference(const RunResult& traced, const RunResult& untraced,
+                                               std::string_view engine = "fast");
 
 }  // namespace cutcom::props

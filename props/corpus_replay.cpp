@@ -15,6 +15,7 @@
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/output.hpp"
 #include "cutcom/ref/engine.hpp"
+#include "run_case.hpp"
 
 namespace cutcom::props {
 namespace {
@@ -67,9 +68,17 @@ void replays(const std::filesystem::path& p) {
   Verdict v = compare(r.result, f.result,
                       Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks, &r.result)));
   EXPECT_NE(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  // PROP-TRACE-1: both engines take the same path without their trace.
+  for (const char* engine : {"ref", "fast"}) {
+    UntracedSink u;
+    run(engine, text, md, u);
+    std::optional<std::string> d =
+        untraced_difference(engine == std::string("ref") ? r.result : f.result, u.result, engine);
+    EXPECT_FALSE(d) << *d;
+  }
 }
 
-// covers: PROP-CORPUS-1 PROP-DIFF-1
+// covers: PROP-CORPUS-1 PROP-DIFF-1 PROP-TRACE-1
 TEST(Corpus, EveryCaseReplays) {
   std::vector<std::filesystem::path> cases;
   for (const auto& e : std::filesystem::directory_iterator(CUTCOM_CORPUS_DIR))

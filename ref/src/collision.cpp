@@ -1,6 +1,7 @@
 // ref: collision detection CDON (TRC-CD-*): a block's entry against the held-back output and the
 // cut there. Geometry in bottleneck.cpp; the held-back output in collision_window.hpp.
 #include "compensation.hpp"
+#include "piece_box.hpp"
 
 namespace cutcom::ref::detail {
 
@@ -143,16 +144,33 @@ bool Compensation::bottleneck(const Block& m, const Block& before) {
     facts_.add(*c.point, entry->pieces[static_cast<std::size_t>(c.entry_piece)].carrier());
     return c;
   };
+  // Without margins a held piece plainly apart from the whole entry is passed over: piece_crossing
+  // would find no crossing there (PieceBox; with margins its near misses are the trace's).
+  std::optional<PieceBox> entry_box;
+  auto apart = [&](const PathPiece& held) {
+    if (!entry_box) return false;
+    std::optional<PieceBox> b = PieceBox::of(held);
+    return b && PieceBox::apart(*b, *entry_box);
+  };
   const std::deque<HeldRecord>& records = held_.records();
   for (std::size_t i = 0; i < records.size(); ++i) {
     const HeldRecord& r = records[i];
     if (!r.candidate() || r.seq < lo || r.seq > hi) continue;
-    if (std::optional<PieceCrossing> c = try_piece(piece_of(r), r.seq)) return cut(m, *entry, i, *c, near), true;
-    if (compared && !entry) return false;
+    if (!compared) {
+      entry = entry_of(m, before), compared = true;
+      if (!entry) return false;
+      if (!margins_kept()) entry_box = PieceBox::around(entry->pieces);
+    }
+    PathPiece held = piece_of(r);
+    if (apart(held)) continue;
+    if (std::optional<PieceCrossing> c = try_piece(held, r.seq)) return cut(m, *entry, i, *c, near), true;
   }
-  if (looking_ && seq_of(*open_block_) >= lo && seq_of(*open_block_) <= hi)
-    if (std::optional<PieceCrossing> c = try_piece(open_piece(), seq_of(*open_block_)))
-      return cut(m, *entry, std::nullopt, *c, near), true;
+  if (looking_ && seq_of(*open_block_) >= lo && seq_of(*open_block_) <= hi) {
+    PathPiece held = open_piece();
+    if (!apart(held))
+      if (std::optional<PieceCrossing> c = try_piece(held, seq_of(*open_block_)))
+        return cut(m, *entry, std::nullopt, *c, near), true;
+  }
   // A miss of exactly 0 is an overlap of collinear pieces (a point at 0 lies on both: a cut).
   bool at_overlap = overlap && near && CGAL::sign(*near) == CGAL::ZERO;
   if (entry)

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "kernel.hpp"
 
@@ -29,6 +30,23 @@ inline double rough(const FT& x) {
     if ((f - CORE::filteredFp(v + delta)).isOK()) return v;
   }
   return x.approx(CORE::extLong(53), CORE::extLong(64)).doubleValue();
+}
+
+// Double bounds lo < x < hi, certified by the floating-point filter (the sign of x - d is the
+// filter's where it is sure of it: CORE's own first test of a sign): a few millionths of a unit
+// around the filter's value. Empty where the filter is not sure; the caller then decides exactly.
+struct CertifiedBounds {
+  double lo, hi;
+};
+inline std::optional<CertifiedBounds> certified_bounds(const FT& x) {
+  const CORE::filteredFp& f = x.Rep()->ffVal;
+  double v = f.getValue();
+  if (!std::isfinite(v)) return std::nullopt;
+  double delta = std::fabs(v) * 0x1p-30 + 0x1p-20;
+  CertifiedBounds b{v - delta, v + delta};
+  CORE::filteredFp below = f - CORE::filteredFp(b.lo), above = f - CORE::filteredFp(b.hi);
+  if (!below.isOK() || below.sign() <= 0 || !above.isOK() || above.sign() >= 0) return std::nullopt;
+  return b;
 }
 
 // Whether margin a is less than margin b, to report the least of several exact margins. The
