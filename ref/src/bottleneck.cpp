@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "exact_root.hpp"
+#include "piece_box.hpp"
 
 namespace cutcom::ref {
 
@@ -203,8 +204,15 @@ PieceCrossing piece_crossing(const PathPiece& held, const std::vector<PathPiece>
   if (!held.arc && held.a == held.b) return out;
   Carrier<Kernel> h = held.carrier();
   std::optional<OnPiece> best;
+  // Without margins an entry piece whose certified box lies apart from the held piece's has no
+  // point on it (PieceBox): its near miss is only a margin (PROP-TRACE-1).
+  std::optional<PieceBox> held_box = margins ? std::nullopt : PieceBox::of(held);
   for (std::size_t i = from; i < entry.size(); ++i) {
     const PathPiece& e = entry[i];
+    if (held_box) {
+      std::optional<PieceBox> entry_box = PieceBox::of(e);
+      if (entry_box && PieceBox::apart(*held_box, *entry_box)) continue;
+    }
     if (!e.arc && e.a == e.b) continue;
     Carrier<Kernel> c = e.carrier();
     std::optional<FT> depth;

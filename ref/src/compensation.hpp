@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <deque>
 #include <map>
@@ -117,8 +118,16 @@ class Compensation {
   ExactPoint end_of(const Block& b) const { return end_with(b, override_of(b)); }
   Point plane_end(const Block& b) const { return end_of(b).plane(plane_axes(b.state.plane)); }
 
+  // A kept block's element, built once: the corner, the entry and the open piece then share its
+  // exact numbers, so that a point met again is the same (same_point) and CORE keeps the
+  // approximations and signs it found for them.
   ContourElement element_of(const Block& b) const {
-    return element_with(b, override_of(b), comp_ ? comp_->axes : plane_axes(b.state.plane));
+    PlaneAxes axes = comp_ ? comp_->axes : plane_axes(b.state.plane);
+    for (const BuiltElement& k : built_)
+      if (k.index == b.index && k.axes.abscissa == axes.abscissa && k.axes.ordinate == axes.ordinate) return k.element;
+    BuiltElement& k = built_[next_built_++ % built_.size()];
+    k.index = b.index, k.axes = axes, k.element = element_with(b, override_of(b), axes);
+    return k.element;
   }
 
   void run_uncompensated(const Block& b);
@@ -373,6 +382,13 @@ class Compensation {
   static constexpr int kSpareBlocks = 64;
   void forget_old_blocks();
   std::deque<Block> program_;
+  struct BuiltElement {
+    int index = -1;
+    PlaneAxes axes{0, 1, 2};
+    ContourElement element;
+  };
+  mutable std::array<BuiltElement, 4> built_;  // element_of's last ones
+  mutable std::size_t next_built_ = 0;
   int first_kept_ = 0;  // the index of program_.front()
   int next_index_ = 0;
   std::map<int, PlaneOverride> overrides_;  // by block index
