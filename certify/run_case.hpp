@@ -79,8 +79,14 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
     out.ref = std::move(sink.result);
   }
   // PROP-TRACE-1 for ref: without margins its collision check passes over pieces whose certified
-  // boxes are apart and locates crossings without their slack; both only under CDON.
-  if (text.find("CDON") != std::string::npos) {
+  // boxes are apart and locates crossings without their slack: only where it compared pieces,
+  // which its trace shows as TRC-CD-3 or TRC-CD-5 decisions.
+  auto compared_pieces = [&] {
+    for (const Decision& d : out.ref.decisions)
+      if (d.clause == "TRC-CD-3" || d.clause == "TRC-CD-5") return true;
+    return false;
+  };
+  if (compared_pieces()) {
     std::istringstream in(text);
     ProgramReader reader(in, md.initial_state());
     look_for_subprograms(reader, folder, setup);
