@@ -6,18 +6,12 @@
 
 #include <random>
 
+#include "cutcom/units_mpz.hpp"
+
 namespace cutcom::fast {
 namespace {
 
-mpz_class big(Int128 v) {
-  bool negative = v < 0;
-  unsigned __int128 m = negative ? static_cast<unsigned __int128>(0) - static_cast<unsigned __int128>(v)
-                                 : static_cast<unsigned __int128>(v);
-  mpz_class r = static_cast<unsigned long>(m >> 64);
-  r <<= 64;
-  r += static_cast<unsigned long>(m & ~0ul);
-  return negative ? mpz_class(-r) : r;
-}
+mpz_class big(Int128 v) { return to_mpz(v); }
 
 // covers: TRC-CORNER-1
 TEST(ExactTangent, SignOfADifferenceOfProductsIsExactIn256Bits) {
