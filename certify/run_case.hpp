@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <functional>
 #include <sstream>
 
@@ -48,18 +49,36 @@ inline void look_for_subprograms(ProgramReader& reader, const std::string& folde
   if (setup) setup(reader);
 }
 
-// fast on one program, into `sink`; the line of a "not supported" rejection, or 0.
-inline int run_fast(const std::string& text, const MachineData& md, const std::string& folder, const ReaderSetup& setup,
-                    CollectingSink& sink) {
+// One engine ("ref" or "fast") on one program, into `sink`; the line of a "not supported"
+// rejection, or 0. `checks`: ref's exact checks, where asked for.
+inline int run_engine(std::string_view engine, const std::string& text, const MachineData& md,
+                      const std::string& folder, const ReaderSetup& setup, CollectingSink& sink,
+                      ref::ExactCheckReport* checks = nullptr) {
   std::istringstream in(text);
   ProgramReader reader(in, md.initial_state());
   look_for_subprograms(reader, folder, setup);
   try {
-    fast::run(reader, md, sink);
+    if (engine == "ref")
+      ref::run(reader, md, sink, checks);
+    else
+      fast::run(reader, md, sink);
   } catch (const UnsupportedError& e) {
     return e.line();
   }
   return 0;
+}
+
+// PROP-TRACE-1: the engine run again without its trace, against its traced run.
+inline std::optional<std::string> untraced_run_difference(std::string_view engine, const std::string& text,
+                                                          const MachineData& md, const std::string& folder,
+                                                          const ReaderSetup& setup, const RunResult& traced,
+                                                          int traced_unsupported) {
+  UntracedSink untraced;
+  int unsupported = run_engine(engine, text, md, folder, setup, untraced);
+  if (std::optional<std::string> d = untraced_difference(traced, untraced.result, engine)) return d;
+  if (unsupported == traced_unsupported) return std::nullopt;
+  return fmt::format("{} without its trace: not supported at line {}, with it at line {}", engine, unsupported,
+                     traced_unsupported);
 }
 
 // Both engines on one program text, and the tolerance read off it.
@@ -67,52 +86,25 @@ inline CaseRuns run_program(const std::string& text, const MachineData& md, bool
                             const std::string& folder = {}, const ReaderSetup& setup = {}) {
   CaseRuns out;
   {
-    std::istringstream in(text);
-    ProgramReader reader(in, md.initial_state());
-    look_for_subprograms(reader, folder, setup);
     CollectingSink sink;
-    try {
-      ref::run(reader, md, sink, exact_checks ? &out.exact : nullptr);
-    } catch (const UnsupportedError& e) {
-      out.ref_unsupported = e.line();
-    }
+    out.ref_unsupported = run_engine("ref", text, md, folder, setup, sink, exact_checks ? &out.exact : nullptr);
     out.ref = std::move(sink.result);
   }
   // PROP-TRACE-1 for ref: without margins its collision check passes over pieces whose certified
   // boxes are apart and locates crossings without their slack: only where it compared pieces,
   // which its trace shows as TRC-CD-3 or TRC-CD-5 decisions.
-  auto compared_pieces = [&] {
-    for (const Decision& d : out.ref.decisions)
-      if (d.clause == "TRC-CD-3" || d.clause == "TRC-CD-5") return true;
-    return false;
-  };
-  if (compared_pieces()) {
-    std::istringstream in(text);
-    ProgramReader reader(in, md.initial_state());
-    look_for_subprograms(reader, folder, setup);
-    UntracedSink untraced;
-    int unsupported = 0;
-    try {
-      ref::run(reader, md, untraced);
-    } catch (const UnsupportedError& e) {
-      unsupported = e.line();
-    }
-    out.untraced = untraced_difference(out.ref, untraced.result, "ref");
-    if (!out.untraced && unsupported != out.ref_unsupported)
-      out.untraced = fmt::format("ref without its trace: not supported at line {}, with it at line {}", unsupported,
-                                 out.ref_unsupported);
-  }
+  bool compared_pieces = std::any_of(out.ref.decisions.begin(), out.ref.decisions.end(), [](const Decision& d) {
+    return d.clause == "TRC-CD-3" || d.clause == "TRC-CD-5";
+  });
+  if (compared_pieces)
+    out.untraced = untraced_run_difference("ref", text, md, folder, setup, out.ref, out.ref_unsupported);
   {
     CollectingSink sink;
-    out.fast_unsupported = run_fast(text, md, folder, setup, sink);
+    out.fast_unsupported = run_engine("fast", text, md, folder, setup, sink);
     out.fast = std::move(sink.result);
-    UntracedSink untraced;
-    int untraced_unsupported = run_fast(text, md, folder, setup, untraced);
-    if (!out.untraced) out.untraced = untraced_difference(out.fast, untraced.result);
-    if (!out.untraced && untraced_unsupported != out.fast_unsupported)
-      out.untraced = fmt::format("fast without its trace: not supported at line {}, with it at line {}",
-                                 untraced_unsupported, out.fast_unsupported);
   }
+  if (!out.untraced)
+    out.untraced = untraced_run_difference("fast", text, md, folder, setup, out.fast, out.fast_unsupported);
   std::istringstream in(text);
   ProgramReader reader(in, md.initial_state());
   look_for_subprograms(reader, folder, setup);

@@ -14,8 +14,6 @@
 namespace cutcom {
 namespace {
 
-mpz_class units(const Decimal& d) { return to_mpz(d); }
-
 int sign(const mpz_class& z) { return sgn(z); }
 
 // A margin in mm from a decimal.
@@ -46,8 +44,8 @@ struct PlaneDelta {
   mpz_class a, b;
 };
 PlaneDelta delta(const Point3& from, const Point3& to, PlaneAxes ax) {
-  return {units(coord(to, ax.abscissa)) - units(coord(from, ax.abscissa)),
-          units(coord(to, ax.ordinate)) - units(coord(from, ax.ordinate))};
+  return {to_mpz(coord(to, ax.abscissa)) - to_mpz(coord(from, ax.abscissa)),
+          to_mpz(coord(to, ax.ordinate)) - to_mpz(coord(from, ax.ordinate))};
 }
 
 }  // namespace
@@ -132,7 +130,7 @@ ProgrammedDecision cr_circle_reach(const Block& b, MarginText text) {
   }
   PlaneDelta d = delta(b.start, b.end, ax);
   mpz_class chord2 = d.a * d.a + d.b * d.b;
-  mpz_class cr = units(*b.words.cr);
+  mpz_class cr = to_mpz(*b.words.cr);
   if (cr < 0) cr = -cr;
   // The reach: 2|CR| and two grid units, the most by which rounding both end points onto the
   // grid (NC-GRID-1: a rotated frame) lengthens a chord of exactly 2|CR|.
@@ -176,8 +174,7 @@ int circle_radius_sign(const ProgrammedCircle& c, Int128 r_units) {
     if (chord2 > 4 * rho * rho) return sign(chord2 - 4 * r * r);
     return sign(rho - r);
   }
-  auto z = [](Int128 v) { return to_mpz(v); };
-  mpz_class ca = z(c.chord[0]), cb = z(c.chord[1]), ta = z(c.to_centre[0]), tb = z(c.to_centre[1]);
+  mpz_class ca = to_mpz(c.chord[0]), cb = to_mpz(c.chord[1]), ta = to_mpz(c.to_centre[0]), tb = to_mpz(c.to_centre[1]);
   if (ca == 0 && cb == 0) return sign(ta * ta + tb * tb - r * r);  // a full circle: its centre as programmed
   // The corrected centre m + k p (m the chord's midpoint, p its perpendicular) is rational; with
   // L2 = |e - s|^2 and q = (2 c0 - s - e) . p:  4 L2 rho^2 = L2^2 + q^2.
@@ -202,9 +199,9 @@ ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, Margi
       return {"ARC-CENTRE-2", excess < 0 ? "within" : "beyond", true, "", excess};
   }
   PlaneDelta s = delta(*b.centre, b.start, ax), e = delta(*b.centre, b.end, ax);
-  mpz_class A = s.a * s.a + s.b * s.b, B = e.a * e.a + e.b * e.b;                // start and end radius squared
-  mpz_class c = units(md.circle_error_const);                                    // MD21000, units
-  mpq_class f(units(md.circle_error_factor), mpz_class(Decimal::kUnitsPerOne));  // MD21010, a plain factor
+  mpz_class A = s.a * s.a + s.b * s.b, B = e.a * e.a + e.b * e.b;                 // start and end radius squared
+  mpz_class c = to_mpz(md.circle_error_const);                                    // MD21000, units
+  mpq_class f(to_mpz(md.circle_error_factor), mpz_class(Decimal::kUnitsPerOne));  // MD21010, a plain factor
   // d = |sqrt(B) - sqrt(A)|, t = max(c, f sqrt(A)); excess = d - t = min(d - c, d - f sqrt(A)).
   // sign(d - c) = sign(d^2 - c^2) = sign(X - sqrt(4AB)) with X = A + B - c^2.
   auto sign_d_minus_c = [&]() {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "cutcom/units_mpz.hpp"
 #include "exact_root.hpp"
 #include "kernel.hpp"
 

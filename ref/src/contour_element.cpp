@@ -22,7 +22,7 @@ FT rational_root(const mpq_class& q) {
 }
 
 namespace {
-mpq_class units_q(const Decimal& d) { return mpq_class(units_of(d)); }
+mpq_class units_q(const Decimal& d) { return mpq_class(to_mpz(d)); }
 
 // sigma * perp(p - c) = sigma * (-(p_b - c_b), p_a - c_a): the direction of travel at p.
 RationalVector arc_tangent(const mpq_class& pa, const mpq_class& pb, const mpq_class& ca, const mpq_class& cb,
@@ -38,8 +38,8 @@ ContourElement ContourElement::of_line(const Block& block, PlaneAxes axes) {
   e.number = block.words.number;
   e.start3 = block.start;
   e.end3 = block.end;
-  mpz_class dx = units_of(coord(block.end, axes.abscissa)) - units_of(coord(block.start, axes.abscissa));
-  mpz_class dy = units_of(coord(block.end, axes.ordinate)) - units_of(coord(block.start, axes.ordinate));
+  mpz_class dx = to_mpz(coord(block.end, axes.abscissa)) - to_mpz(coord(block.start, axes.abscissa));
+  mpz_class dy = to_mpz(coord(block.end, axes.ordinate)) - to_mpz(coord(block.start, axes.ordinate));
   e.start_tangent = e.end_tangent = {mpq_class(dx), mpq_class(dy)};
   e.start_dir = e.end_dir = Vector(to_ft(dx), to_ft(dy));
   e.a = plane_point(block.start, axes);

@@ -17,10 +17,10 @@ void Compensation::approach(const Block& first_block) {
     k.vertex = first.a, k.point = from.plane(comp_->axes);
     k.d1 = k.vertex - k.point, k.d2 = first.start_dir;
     if (!selection_from_ && first.rational && !overrides_.count(selection_->index))
-      k.r1 = RationalVector{mpq_class(units_of(coord(selection_->end, comp_->axes.abscissa)) -
-                                      units_of(coord(selection_->start, comp_->axes.abscissa))),
-                            mpq_class(units_of(coord(selection_->end, comp_->axes.ordinate)) -
-                                      units_of(coord(selection_->start, comp_->axes.ordinate)))},
+      k.r1 = RationalVector{mpq_class(to_mpz(coord(selection_->end, comp_->axes.abscissa)) -
+                                      to_mpz(coord(selection_->start, comp_->axes.abscissa))),
+                            mpq_class(to_mpz(coord(selection_->end, comp_->axes.ordinate)) -
+                                      to_mpz(coord(selection_->start, comp_->axes.ordinate)))},
       k.r2 = first.start_tangent;
     if (kont_behind(*selection_, k, k.d2, 10755)) return approach_around(first_block, first, radius, from, h, k);
     if (trace_.stopped()) return;
@@ -258,8 +258,8 @@ Compensation::KontCorner Compensation::retraction_corner(const Block& b, const C
   if (last.rational && !overrides_.count(b.index))
     k.r1 = last.end_tangent,
     k.r2 = RationalVector{
-        mpq_class(units_of(coord(b.end, comp_->axes.abscissa)) - units_of(coord(last.end3, comp_->axes.abscissa))),
-        mpq_class(units_of(coord(b.end, comp_->axes.ordinate)) - units_of(coord(last.end3, comp_->axes.ordinate)))};
+        mpq_class(to_mpz(coord(b.end, comp_->axes.abscissa)) - to_mpz(coord(last.end3, comp_->axes.abscissa))),
+        mpq_class(to_mpz(coord(b.end, comp_->axes.ordinate)) - to_mpz(coord(last.end3, comp_->axes.ordinate)))};
   return k;
 }
 

@@ -1,7 +1,5 @@
 #include "kernel.hpp"
 
-#include "cutcom/units_mpz.hpp"
-
 #include <fmt/format.h>
 #include <mpfr.h>
 
@@ -14,12 +12,10 @@
 
 namespace cutcom::ref {
 
-mpz_class units_of(const Decimal& d) { return to_mpz(d); }
-
 FT leaf(const Decimal& d) {
   Int128 u = d.units();
   if (u >= LONG_MIN && u <= LONG_MAX) return FT(static_cast<long>(u));
-  return FT(CORE::BigInt(units_of(d).get_mpz_t()));
+  return FT(CORE::BigInt(to_mpz(d).get_mpz_t()));
 }
 
 Point plane_point(const Point3& p, PlaneAxes axes) {

@@ -10,6 +10,7 @@
 
 #include "cutcom/block.hpp"
 #include "cutcom/path.hpp"
+#include "cutcom/units_mpz.hpp"  // to_mpz: a decimal's units exactly
 #include "exact_root.hpp"
 
 namespace cutcom::ref {
@@ -19,8 +20,6 @@ using FT = Kernel::FT;
 using Point = Kernel::Point_2;
 using Vector = Kernel::Vector_2;
 
-// Exact integer of a decimal's units (value * 10^9).
-mpz_class units_of(const Decimal& d);
 // An integer Expr leaf holding a decimal's units (fresh per call: no shared, polluted leaves).
 FT leaf(const Decimal& d);
 
