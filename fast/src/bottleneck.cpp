@@ -61,8 +61,7 @@ PieceBox PieceBox::around(const PathPiece* pieces, int count) {
   PieceBox u = of(pieces[0]);
   for (int i = 1; i < count; ++i) {
     PieceBox v = of(pieces[i]);
-    u.lo_a = std::min(u.lo_a, v.lo_a), u.lo_b = std::min(u.lo_b, v.lo_b);
-    u.hi_a = std::max(u.hi_a, v.hi_a), u.hi_b = std::max(u.hi_b, v.hi_b);
+    u = sized(std::min(u.lo_a, v.lo_a), std::min(u.lo_b, v.lo_b), std::max(u.hi_a, v.hi_a), std::max(u.hi_b, v.hi_b));
   }
   return u;
 }

@@ -27,21 +27,23 @@ struct PathPiece {
   static PathPiece circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn = false);
 };
 
-// An axis-aligned box around pieces; a circle piece's is its whole circle's.
+// An axis-aligned box around pieces; a circle piece's is its whole circle's. `size`: the largest
+// magnitude of its bounds, kept with them (apart() asks for it of every pair).
 struct PieceBox {
-  double lo_a, lo_b, hi_a, hi_b;
+  double lo_a = 0, lo_b = 0, hi_a = 0, hi_b = 0, size = 0;
   static PieceBox of(const PathPiece& p) {
-    if (p.arc) return {p.centre.a - p.radius, p.centre.b - p.radius, p.centre.a + p.radius, p.centre.b + p.radius};
-    return {std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b)};
+    if (p.arc) return sized(p.centre.a - p.radius, p.centre.b - p.radius, p.centre.a + p.radius, p.centre.b + p.radius);
+    return sized(std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b));
   }
   static PieceBox around(const PathPiece* pieces, int count);  // count >= 1
+  static PieceBox sized(double lo_a, double lo_b, double hi_a, double hi_b) {
+    return {lo_a, lo_b, hi_a, hi_b, std::max({std::fabs(lo_a), std::fabs(lo_b), std::fabs(hi_a), std::fabs(hi_b)})};
+  }
   // Apart by more than 1e-9 of the coordinates' size (a point's rounding off its carriers is a
   // few ulps of that size): no point piece_crossing computes lies on a piece in each. Apart from
   // a box around pieces is apart from each of them (its pad is no smaller).
   static bool apart(const PieceBox& u, const PieceBox& v) {
-    double size = std::max({std::fabs(u.lo_a), std::fabs(u.lo_b), std::fabs(u.hi_a), std::fabs(u.hi_b),
-                            std::fabs(v.lo_a), std::fabs(v.lo_b), std::fabs(v.hi_a), std::fabs(v.hi_b)});
-    double pad = 1e-9 * (1 + size);
+    double pad = 1e-9 * (1 + std::max(u.size, v.size));
     return u.hi_a + pad < v.lo_a || v.hi_a + pad < u.lo_a || u.hi_b + pad < v.lo_b || v.hi_b + pad < u.lo_b;
   }
 };

@@ -98,13 +98,20 @@ PathPiece Compensation::piece_of(const HeldRecord& rec) const {
   return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
 }
 
-// PieceBox::of(piece_of(rec)) without the sweep, which a box does not need.
-PieceBox Compensation::box_of(const HeldRecord& rec) const {
+// PieceBox::of(piece_of(rec)) without the sweep, which a box does not need; computed once per
+// record and plane.
+const PieceBox& Compensation::box_of(const HeldRecord& rec) const {
+  if (rec.boxed && rec.box_axes.abscissa == axes.abscissa && rec.box_axes.ordinate == axes.ordinate) return rec.box;
   const PathElement& e = rec.element;
-  if (e.type == ElementType::kLine) return PieceBox::of(PathPiece::segment(ab(e.start), ab(e.end)));
-  PathPiece whole;
-  whole.arc = true, whole.centre = ab(e.center), whole.radius = rec.radius;
-  return PieceBox::of(whole);
+  if (e.type == ElementType::kLine) {
+    rec.box = PieceBox::of(PathPiece::segment(ab(e.start), ab(e.end)));
+  } else {
+    PathPiece whole;
+    whole.arc = true, whole.centre = ab(e.center), whole.radius = rec.radius;
+    rec.box = PieceBox::of(whole);
+  }
+  rec.boxed = true, rec.box_axes = axes;
+  return rec.box;
 }
 
 PathPiece Compensation::open_piece() const {

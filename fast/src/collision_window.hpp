@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "bottleneck.hpp"
 #include "cutcom/block.hpp"
 #include "cutcom/machine_data.hpp"
 #include "cutcom/sink.hpp"
@@ -33,6 +34,11 @@ struct HeldRecord {
   Decimal owner_feed;
   FeedType owner_feed_type = FeedType::kG94;
   SarMove owner_sar = SarMove::kNone;
+  // The collision check's box around the element in the plane of `box_axes`, kept once computed
+  // (a held element meets the entries of MD20240 blocks); reset wherever the element changes.
+  mutable PieceBox box;
+  mutable bool boxed = false;
+  mutable PlaneAxes box_axes{0, 1, 2};
 };
 
 class CollisionWindow {
@@ -63,7 +69,10 @@ class CollisionWindow {
   // Under CDOF with nothing held, output goes straight out (it would be released at the block's end).
   bool direct() const { return !holding_ && empty(); }
 
-  void hold(const HeldRecord& r) { hold_new() = r; }
+  void hold(const HeldRecord& r) {
+    HeldRecord& k = hold_new();
+    k = r, k.boxed = false;
+  }
   // A new record at the end, to be filled in place (a record is a few hundred bytes). Records
   // past the end are kept to be filled again: a new one is not constructed per element; what a
   // filler may leave unset is reset here.
@@ -77,7 +86,7 @@ class CollisionWindow {
     }
     if (end_ == records_.size()) records_.emplace_back();
     HeldRecord& k = records_[end_++];
-    k.is_element = false, k.radius = 0;
+    k.is_element = false, k.radius = 0, k.boxed = false;
     return k;
   }
   // Releases the records of traversing blocks before `seq`, in path order.
@@ -101,7 +110,7 @@ class CollisionWindow {
   // cut blocks to run again (a reserved scratch list, valid until the next cut).
   const std::vector<HeldRecord>& cut(std::size_t record, const PathPoint& end, bool vanishes) {
     std::size_t at = head_ + record;
-    records_[at].element.end = end;
+    records_[at].element.end = end, records_[at].boxed = false;
     scratch_.assign(records_.begin() + static_cast<std::ptrdiff_t>(at) + 1,
                     records_.begin() + static_cast<std::ptrdiff_t>(end_));
     end_ = vanishes ? at : at + 1;  // the cut record is the last one left, if anything is left of it

@@ -408,7 +408,7 @@ class Compensation {
   Entry entry_scratch;  // bottleneck's, kept: constructing one per block cost more than its checks
 
   PathPiece piece_of(const HeldRecord& rec) const;
-  PieceBox box_of(const HeldRecord& rec) const;
+  const PieceBox& box_of(const HeldRecord& rec) const;
   PathPiece open_piece() const;
   static bool is_candidate(const HeldRecord& rec);
 
