@@ -143,6 +143,12 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   double turn = 0;  // arcs: the angle the trimmed element turns
   if (!e.arc) {
     margin = dot(end_point - open_start, e.unit);
+  } else if (e.full && open_at_normal_start && at_normal_end) {
+    // A full circle from its normal start to its normal end turns a whole turn exactly, as in ref;
+    // its two rounded rotations could add up to a hair more, which PATH-ELEMENT-2 below would take
+    // for a whole turn and a rest (campaign 20261262, case 192296: a helix stopped as unsupported).
+    turn = sweep(e);
+    margin = turn * open_radius;
   } else {
     turn = sweep(e) - rotation_memo.rotation(e, open_start) +
            signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
