@@ -237,12 +237,8 @@ double Compensation::scale_over_size_now(const BlockCopy& c) const {
 
 void Compensation::decide_kind_on_integers(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
   // Lines and circles with a centre: the tangents are integer vectors (exact_tangent.hpp).
-  std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
   int cross = 0, dot = 0;
-  if (t1 && t2) {
-    cross = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
-    dot = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
-  } else {
+  if (!corner_signs.signs(first, second, axes, cross, dot)) {
     // A CR= circle (its tangent carries a root) or a tangent beyond the 256-bit range: in GMP's
     // integers (root_tangent.hpp), where the double sine is too small to be sure of.
     std::optional<RootTangents::Signs> signs = root_tangents.corner(first, second, axes);

@@ -21,6 +21,7 @@
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/programmed_decisions.hpp"
 #include "edge_strategy.hpp"
+#include "exact_tangent.hpp"
 #include "plane_geometry.hpp"
 #include "root_tangent.hpp"
 
@@ -126,6 +127,7 @@ class Compensation {
   mutable std::array<SlotElement, 2> slot_elements;  // element_of's, per slot; copy_into empties its slot's
   mutable Element unslotted_element;                 // element_of's for a block outside the slots
   mutable RootTangents root_tangents;                // decide_kind_exactly's and exact_side's GMP numbers
+  mutable CornerSignsMemo corner_signs;              // decide_kind_on_integers' integer signs, of the last corner
   // The entry and the corner step take the same intersection and rotation (corner_memo.hpp).
   IntersectionMemo intersection_memo;
   mutable RotationMemo rotation_memo;

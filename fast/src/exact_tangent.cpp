@@ -69,4 +69,19 @@ std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_
   return IntVec{sigma * (along * d.a - across * d.b), sigma * (along * d.b + across * d.a)};
 }
 
+bool CornerSignsMemo::signs(const BlockCopy& first, const BlockCopy& second, PlaneAxes axes, int& cross, int& dot) {
+  if (!first.exact || !second.exact) return false;  // exact_tangent's first test
+  if (first.block != first_ || second.block != second_ || axes.abscissa != abscissa_ || axes.ordinate != ordinate_) {
+    first_ = first.block, second_ = second.block, abscissa_ = axes.abscissa, ordinate_ = axes.ordinate;
+    std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
+    found_ = t1 && t2;
+    if (found_) {
+      cross_ = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
+      dot_ = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
+    }
+  }
+  if (found_) cross = cross_, dot = dot_;
+  return found_;
+}
+
 }  // namespace cutcom::fast

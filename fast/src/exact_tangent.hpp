@@ -25,4 +25,20 @@ int sign_of_difference(Int128 p, Int128 q, Int128 r, Int128 t);
 // block, components of d or c − start from 2^40 units (1,099 mm) on (the products would not fit).
 std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_end);
 
+// The signs of the cross and the dot product of `first`'s exact tangent at its end and `second`'s
+// at its start (TRC-CORNER-1), false where either is not exact. The last pair's answer is kept:
+// under CDON the entry (collision.cpp) and then the corner step take the same corner, and at
+// nearly tangent corners (a CAM program's tiny segments) every corner comes here. An exact copy's
+// tangent is its block's (`delta` and `to_centre` are the block's decimals while `exact`), so the
+// key is the two blocks' identities and the plane: the answer is the function's either way.
+class CornerSignsMemo {
+ public:
+  bool signs(const BlockCopy& first, const BlockCopy& second, PlaneAxes axes, int& cross, int& dot);
+
+ private:
+  int first_ = -1, second_ = -1, abscissa_ = -1, ordinate_ = -1;
+  bool found_ = false;
+  int cross_ = 0, dot_ = 0;
+};
+
 }  // namespace cutcom::fast
