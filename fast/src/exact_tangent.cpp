@@ -71,8 +71,10 @@ std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_
 
 bool CornerSignsMemo::signs(const BlockCopy& first, const BlockCopy& second, PlaneAxes axes, int& cross, int& dot) {
   if (!first.exact || !second.exact) return false;  // exact_tangent's first test
-  if (first.block != first_ || second.block != second_ || axes.abscissa != abscissa_ || axes.ordinate != ordinate_) {
-    first_ = first.block, second_ = second.block, abscissa_ = axes.abscissa, ordinate_ = axes.ordinate;
+  if (first.block != first_ || second.block != second_ || first.seq != first_seq_ || second.seq != second_seq_ ||
+      axes.abscissa != abscissa_ || axes.ordinate != ordinate_) {
+    first_ = first.block, second_ = second.block, first_seq_ = first.seq, second_seq_ = second.seq;
+    abscissa_ = axes.abscissa, ordinate_ = axes.ordinate;
     std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
     found_ = t1 && t2;
     if (found_) {

@@ -30,13 +30,14 @@ std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_
 // under CDON the entry (collision.cpp) and then the corner step take the same corner, and at
 // nearly tangent corners (a CAM program's tiny segments) every corner comes here. An exact copy's
 // tangent is its block's (`delta` and `to_centre` are the block's decimals while `exact`), so the
-// key is the two blocks' identities and the plane: the answer is the function's either way.
+// key is the two blocks' identities (the reader's index, and the traversing ordinal for blocks
+// given to the engine without one) and the plane: the answer is the function's either way.
 class CornerSignsMemo {
  public:
   bool signs(const BlockCopy& first, const BlockCopy& second, PlaneAxes axes, int& cross, int& dot);
 
  private:
-  int first_ = -1, second_ = -1, abscissa_ = -1, ordinate_ = -1;
+  int first_ = -1, second_ = -1, first_seq_ = -1, second_seq_ = -1, abscissa_ = -1, ordinate_ = -1;
   bool found_ = false;
   int cross_ = 0, dot_ = 0;
 };
