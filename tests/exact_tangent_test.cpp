@@ -11,8 +11,6 @@
 namespace cutcom::fast {
 namespace {
 
-mpz_class big(Int128 v) { return to_mpz(v); }
-
 // covers: TRC-CORNER-1
 TEST(ExactTangent, SignOfADifferenceOfProductsIsExactIn256Bits) {
   std::mt19937_64 g(20261128);
@@ -25,7 +23,7 @@ TEST(ExactTangent, SignOfADifferenceOfProductsIsExactIn256Bits) {
     Int128 p = value(bits), q = value(bits), r = value(bits), t = value(bits);
     if (k % 3 == 0) r = q, t = p;           // equal products: the tie
     if (k % 5 == 0) t += g() % 2 ? 1 : -1;  // (with the tie above: a product one factor off it)
-    mpz_class d = big(p) * big(q) - big(r) * big(t);
+    mpz_class d = to_mpz(p) * to_mpz(q) - to_mpz(r) * to_mpz(t);
     ASSERT_EQ(sign_of_difference(p, q, r, t), sgn(d)) << k;
   }
 }

@@ -139,14 +139,16 @@ void Compensation::run_held_back_uncompensated() {
 bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool at_normal_end,
                               const Candidate* candidate) {
   const Element& e = open_el;
+  // A full circle from its normal start to its normal end turns a whole turn exactly and ends where
+  // it starts, as in ref. Its two rounded rotations could add up to a hair more, which
+  // PATH-ELEMENT-2 below would take for a whole turn and a rest (campaign 20261262, case 192296: a
+  // helix stopped as unsupported); an ulp apart its end would read as a sliver or nearly a turn.
+  const bool whole_turn = e.arc && e.full && open_at_normal_start && at_normal_end;
   double margin;
   double turn = 0;  // arcs: the angle the trimmed element turns
   if (!e.arc) {
     margin = dot(end_point - open_start, e.unit);
-  } else if (e.full && open_at_normal_start && at_normal_end) {
-    // A full circle from its normal start to its normal end turns a whole turn exactly, as in ref;
-    // its two rounded rotations could add up to a hair more, which PATH-ELEMENT-2 below would take
-    // for a whole turn and a rest (campaign 20261262, case 192296: a helix stopped as unsupported).
+  } else if (whole_turn) {
     turn = sweep(e);
     margin = turn * open_radius;
   } else {
@@ -184,10 +186,9 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   if (!e.arc) {
     line(open, from, to, OriginKind::kOffset, open.rapid);
   } else {
-    // A whole full circle ends where it starts, exactly (ref's start and end are the same point;
-    // an ulp apart the arc would read as a sliver or as nearly a full turn).
-    // The snapped end is where the next element starts too (no gap of a rounding after the circle).
-    if (e.full && open_at_normal_start && at_normal_end) to = xyz(open_start, h(open.end)), end_point = open_start;
+    // The whole turn's end is its start; the snapped end is where the next element starts too (no
+    // gap of a rounding after the circle).
+    if (whole_turn) to = xyz(open_start, h(open.end)), end_point = open_start;
     // PATH-ELEMENT-2: a circle that turns more than half a turn but whose end, rounded, lies just
     // past its start (within 1e-8 of the radius) would read as a sliver: it ends at its start.
     // Nor may it end where its direction from the centre is the start's within rounding: whether
