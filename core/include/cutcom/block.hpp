@@ -67,8 +67,8 @@ enum class ValueMode : std::uint8_t { kModal, kAbsolute, kIncremental };
 enum class FadMode : std::uint8_t { kModal, kPm, kPr };
 
 struct AxisWord {
+  Decimal value;  // first: the flags share its last 8 bytes' line and no padding before it
   bool present = false;
-  Decimal value;
   ValueMode mode = ValueMode::kModal;
   friend bool operator==(const AxisWord&, const AxisWord&) = default;
 };
