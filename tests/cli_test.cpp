@@ -449,6 +449,40 @@ TEST(Cli, CertifyReplayJudgesProgramsWithTheirMachineData) {
 
 namespace {
 
+// CORE (ref's numbers) writes a warning to "Core_Diagnostics" in the working directory where its
+// floating-point filter sees a negative root argument or a zero divisor, and ends the process
+// (exit 1, no path) where that file cannot be written. Near-tangent offsets give both: a root of
+// an exactly positive number whose double is negative (the corpus program), and a KONT approach
+// from behind nearly along the contour's way back, whose corner trim divides by nearly 0.
+// covers: TRC-KONT-4
+TEST(Cli, RefWritesNoFileInTheWorkingDirectory) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(CUTCOM_BINARY_DIR) / "ref-working-directory";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string kont = write_temp("kont-along-the-way-back.mpf",
+                                "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\n"
+                                "N10 G17 G90 G0 X20 Y-0.000000001 T1 D1\n"
+                                "N20 G1 G41 KONT G451 X10 Y0 F500\nN30 X30 Y0\nN40 Y20\nN50 G40 X40 Y30\nM30\n");
+  const std::string cases[] = {
+      std::string(CUTCOM_SOURCE_DIR) + "/tests/corpus/rounding-with-the-tool-outside-offsets-cross-by-1e-21.mpf",
+      kont + " --md MD20210=180"};
+  for (const std::string& c : cases) {
+    Result r = sh("cd " + dir.string() + " && " + kCli + " run --engine ref " + c);
+    EXPECT_EQ(r.status, 0) << c;
+    EXPECT_NE(r.out.find("path elements"), std::string::npos) << c;
+    EXPECT_FALSE(fs::exists(dir / "Core_Diagnostics")) << c;
+  }
+  // The second one's approach meets the extended equidistant (TRC-KONT-4), both engines alike.
+  Result fast = sh(kCli + " run " + kont + " --md MD20210=180");
+  Result ref = sh(kCli + " run --engine ref " + kont + " --md MD20210=180");
+  EXPECT_NE(ref.out.find("(-39999999990.0000, 2.0000, 0.0000) approach N20"), std::string::npos) << ref.out;
+  EXPECT_EQ(fast.out.substr(fast.out.find('\n')), ref.out.substr(ref.out.find('\n')));
+}
+}  // namespace
+
+namespace {
+
 Result sh_err(const std::string& cmd) { return sh(cmd, true); }
 
 // covers: CLI-1 TOOL-FILE-1 NC-OFFSET-2 NC-CYCLE-1 NC-FRAME-3 TRC-DESEL-3 NC-CONTOUR-1 NC-CONTOUR-2

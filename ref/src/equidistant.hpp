@@ -30,7 +30,8 @@ typename K::FT equidistant_radius(const typename K::FT& radius, int sense, const
 template <class K>
 typename K::FT corner_trim(const typename K::FT& cross, const typename K::FT& dot, const typename K::FT& length1,
                            const typename K::FT& length2, const typename K::FT& side_radius) {
-  return side_radius * cross / (length1 * length2 + dot);
+  // Not 0 short of a reversal, but nearly 0 near one (a KONT approach along the contour's way back).
+  return side_radius * cross / settled_divisor(length1 * length2 + dot);
 }
 
 // The intersection of two straight equidistants: the first one's normal end point moved back by the trim.

@@ -1,16 +1,47 @@
-// The square root of a number known to be >= 0, taken as 0 when it is exactly 0. CORE's
-// floating-point filter may approximate an exact 0 (or a tiny positive) by a negative double and
-// then appends a warning to a file "Core_Diagnostics" in the working directory: harmless for the
-// result, but a stray file in the user's directory. The exact sign test avoids the common case.
+// The square root of a number known to be >= 0, taken as 0 when it is exactly 0, and divisors
+// known not to be 0, kept clear of CORE's diagnostics file.
+//
+// CORE keeps beside every expression a floating-point filter (a double and a bound on its error)
+// and decides signs by it where the bound allows. A root's filter is taken from its argument's
+// when the root is built; where that double came out negative (or 0, and the root is later a
+// divisor) although the exact value is positive, which near-tangent circles give, CORE appends a
+// warning to a file "Core_Diagnostics" in the working directory, and where that file cannot be
+// written it ends the process (exit 1, no output): `cutcom run --engine ref` in a read-only
+// directory did so on two corpus programs. The argument's exact sign is known here, so its filter
+// is settled first (settle_filter). The result stays exact either way.
 #pragma once
 
+#include <CGAL/CORE_Expr.h>
 #include <CGAL/number_utils.h>
+
+#include <limits>
 
 namespace cutcom::ref {
 
-template <class FT>
-FT exact_root(const FT& v) {
-  return CGAL::sign(v) == CGAL::ZERO ? FT(0) : CGAL::sqrt(v);
+// Where `v`'s filter does not show its exact sign `exact` (a double of the other sign, 0 or NaN),
+// the filter is replaced by one of that sign and an unbounded error: CORE never decides by such a
+// filter (its isOK() fails), so every later sign of an expression built on `v` is computed
+// exactly, and no operation finds a negative root argument or a zero divisor in it. Sound whatever
+// the old filter was: it claims nothing.
+inline void settle_filter(const CORE::Expr& v, CGAL::Sign exact) {
+  double approximation = v.Rep()->ffVal.getValue();
+  if (exact == CGAL::POSITIVE ? approximation > 0 : exact == CGAL::NEGATIVE ? approximation < 0 : true) return;
+  v.Rep()->ffVal = CORE::filteredFp(exact == CGAL::POSITIVE ? 1.0 : -1.0, std::numeric_limits<double>::infinity(), 1);
+}
+
+// A divisor known not to be 0, with a filter fit to divide by: one whose double is 0 (a sum of
+// nearly opposite terms) has CORE warn of a possible zero divisor as above. Its exact sign is
+// only computed then.
+inline const CORE::Expr& settled_divisor(const CORE::Expr& d) {
+  if (!(d.Rep()->ffVal.getValue() != 0)) settle_filter(d, CGAL::sign(d));  // 0 or NaN
+  return d;
+}
+
+inline CORE::Expr exact_root(const CORE::Expr& v) {
+  CGAL::Sign sign = CGAL::sign(v);
+  if (sign == CGAL::ZERO) return CORE::Expr(0);
+  settle_filter(v, sign);
+  return CGAL::sqrt(v);
 }
 
 }  // namespace cutcom::ref
