@@ -111,6 +111,13 @@ bool touching_crossing(const Decision& d, const Tolerance& tol) {
   return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
 }
 
+// An overlap of collinear pieces (TRC-CD-3 `overlap`) is a near miss of exactly 0: the same
+// touching as a crossing at 0, found where an entry lies along a held piece instead of across it.
+bool touching_overlap(const Decision& d, const Tolerance& tol) {
+  return d.clause == "TRC-CD-3" && d.branch == "overlap" && d.has_margin &&
+         std::fabs(margin_value(d)) <= tol.band(d.clause);
+}
+
 // A crossing that touches a piece's end (touching_crossing) may be taken on either
 // piece at the joint: the engines then skip different blocks and hold different pieces after it.
 // Likewise after carriers that just touch (an intersection of nearly tangent circles: the point
@@ -359,11 +366,12 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     }
     // fast's own crossing touches (its margin in the band) where ref found none to compare: an
     // entry exactly one point long in ref is nothing, a rounding longer in fast a sliver that may
-    // touch a held piece (corpus cdon-entry-of-zero-length).
-    if (r.clause == f.clause && r.line == f.line && touching_crossing(f, tol)) {
+    // touch a held piece (corpus cdon-entry-of-zero-length) or lie along one and overlap it
+    // (corpus cdon-point-entry-along-a-held-piece).
+    if (r.clause == f.clause && r.line == f.line && (touching_crossing(f, tol) || touching_overlap(f, tol))) {
       v.kind = Verdict::Kind::kKnifeEdge;
       v.clause = std::string(f.clause);
-      v.explanation = where + ", fast's crossing touches";
+      v.explanation = where + (f.branch == "overlap" ? ", fast's entry overlaps" : ", fast's crossing touches");
       return v;
     }
     // After a knife edge only a touching decision since the runs met again explains a parting.

@@ -299,6 +299,14 @@ TEST(Comparison, AnEntryOfOnePointBetweenLinesExplainsNothingAfterIt) {
   EXPECT_NE(v.explanation.find("fast's crossing touches"), std::string::npos) << v.explanation;
   fast.decisions[1] = at(decision("TRC-CD-3", "cut", 0.5), 8);  // a crossing well inside: no knife edge
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  // The sliver along a held piece: collinear pieces overlap, a miss of 0 (campaign 20261267,
+  // case 991544); an overlap is only ever traced at 0, so a margin off it is no touching.
+  fast.decisions[1] = at(decision("TRC-CD-3", "overlap", -0.0), 8);
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_NE(v.explanation.find("fast's entry overlaps"), std::string::npos) << v.explanation;
+  fast.decisions[1] = at(decision("TRC-CD-3", "overlap", -0.5), 8);
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
 }
 
 // What an element belongs to and its feed, the actions and where they run, SAR's variables and
