@@ -90,13 +90,17 @@ bool entry_at_circle(const Decision& d, const Tolerance& tol) {
   auto at = std::lower_bound(tol.plane_lines.begin(), tol.plane_lines.end(), d.line);
   return circle(d.line) || (at != tol.plane_lines.begin() && circle(*std::prev(at)));
 }
+// The decision's own margin lies inside its clause's band: at the knife edge by the margin alone.
+bool margin_in_band(const Decision& d, const Tolerance& tol) {
+  return d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
+}
 bool touching_carriers(const Decision& d, const Tolerance& tol) {
   bool kind = (d.clause == "TRC-CD-2" && (d.branch == "g451-meets" || d.branch == "g451-misses")) ||
               d.clause == "TRC-ARC-CORNER-1" || (d.clause == "TRC-EDGE-5" && d.branch == "hit") ||
               (d.clause == "TRC-EDGE-6" && d.branch == "circle") || d.clause == "TRC-LOOK-2" ||
               d.clause == "TRC-CD-5" || d.clause == "TRC-CD-6" ||
               (d.clause == "TRC-CD-2" && d.branch == "entry" && entry_at_circle(d, tol));
-  return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
+  return kind && margin_in_band(d, tol);
 }
 }  // namespace
 
@@ -108,14 +112,13 @@ namespace {
 // ref).
 bool touching_crossing(const Decision& d, const Tolerance& tol) {
   bool kind = (d.clause == "TRC-CD-3" && d.branch == "cut") || (d.clause == "TRC-CD-5" && d.branch == "earlier-block");
-  return kind && d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause);
+  return kind && margin_in_band(d, tol);
 }
 
 // An overlap of collinear pieces (TRC-CD-3 `overlap`) is a near miss of exactly 0: the same
 // touching as a crossing at 0, found where an entry lies along a held piece instead of across it.
 bool touching_overlap(const Decision& d, const Tolerance& tol) {
-  return d.clause == "TRC-CD-3" && d.branch == "overlap" && d.has_margin &&
-         std::fabs(margin_value(d)) <= tol.band(d.clause);
+  return d.clause == "TRC-CD-3" && d.branch == "overlap" && margin_in_band(d, tol);
 }
 
 // A crossing that touches a piece's end (touching_crossing) may be taken on either
@@ -290,8 +293,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   };
   // ref's margin lies inside the clause's band: either branch is legitimate (PROP-DIFF-1).
   auto in_band = [&](const Decision& d) {
-    return d.has_margin && std::fabs(margin_value(d)) <= tol.band(d.clause) && !decided_exactly_at_zero(d) &&
-           !decided_on_decimals(d, tol);
+    return margin_in_band(d, tol) && !decided_exactly_at_zero(d) && !decided_on_decimals(d, tol);
   };
   std::size_t ir = 0, jf = 0, resumed_at = 0;
   for (;; ++ir, ++jf) {

@@ -61,9 +61,10 @@ PieceBox PieceBox::around(const PathPiece* pieces, int count) {
   PieceBox u = of(pieces[0]);
   for (int i = 1; i < count; ++i) {
     PieceBox v = of(pieces[i]);
-    u = sized(std::min(u.lo_a, v.lo_a), std::min(u.lo_b, v.lo_b), std::max(u.hi_a, v.hi_a), std::max(u.hi_b, v.hi_b));
+    u.lo_a = std::min(u.lo_a, v.lo_a), u.lo_b = std::min(u.lo_b, v.lo_b);
+    u.hi_a = std::max(u.hi_a, v.hi_a), u.hi_b = std::max(u.hi_b, v.hi_b);
   }
-  return u;
+  return count == 1 ? u : sized(u.lo_a, u.lo_b, u.hi_a, u.hi_b);  // the size of the union, once
 }
 
 PathPiece PathPiece::circle(Vec2 from, Vec2 to, Vec2 centre, double radius, int sense, bool full_turn) {

@@ -67,7 +67,7 @@ enum class ValueMode : std::uint8_t { kModal, kAbsolute, kIncremental };
 enum class FadMode : std::uint8_t { kModal, kPm, kPr };
 
 struct AxisWord {
-  Decimal value;  // first: the flags share its last 8 bytes' line and no padding before it
+  Decimal value;  // first, so that the two flags share one 8-byte slot after it (24 bytes, not 32)
   bool present = false;
   ValueMode mode = ValueMode::kModal;
   friend bool operator==(const AxisWord&, const AxisWord&) = default;
