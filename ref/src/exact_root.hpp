@@ -18,22 +18,22 @@
 
 namespace cutcom::ref {
 
-// Where `v`'s filter does not show its exact sign `exact` (a double of the other sign, 0 or NaN),
-// the filter is replaced by one of that sign and an unbounded error: CORE never decides by such a
-// filter (its isOK() fails), so every later sign of an expression built on `v` is computed
-// exactly, and no operation finds a negative root argument or a zero divisor in it. Sound whatever
-// the old filter was: it claims nothing.
+// Where `v`'s filter does not prove its sign (CORE's isOK(): a filter that does proves the exact
+// one), it is replaced by one of the exact sign `exact` and an unbounded error bound: CORE never
+// decides by such a filter either, so every later sign of an expression built on `v` is computed
+// exactly as before, and no operation finds a negative root argument or a zero divisor in it.
+// Sound whatever the old filter was: it claims nothing. No decision is taken on the filter's
+// double here; the bound's infinity is CORE's own type for it.
 inline void settle_filter(const CORE::Expr& v, CGAL::Sign exact) {
-  double approximation = v.Rep()->ffVal.getValue();
-  if (exact == CGAL::POSITIVE ? approximation > 0 : exact == CGAL::NEGATIVE ? approximation < 0 : true) return;
-  v.Rep()->ffVal = CORE::filteredFp(exact == CGAL::POSITIVE ? 1.0 : -1.0, std::numeric_limits<double>::infinity(), 1);
+  if (exact == CGAL::ZERO || v.Rep()->ffVal.isOK()) return;
+  v.Rep()->ffVal = CORE::filteredFp(static_cast<int>(exact), std::numeric_limits<double>::infinity(), 1);
 }
 
-// A divisor known not to be 0, with a filter fit to divide by: one whose double is 0 (a sum of
+// A divisor known not to be 0, with a filter fit to divide by: one whose double may be 0 (a sum of
 // nearly opposite terms) has CORE warn of a possible zero divisor as above. Its exact sign is
-// only computed then.
+// computed only where the filter cannot tell it.
 inline const CORE::Expr& settled_divisor(const CORE::Expr& d) {
-  if (!(d.Rep()->ffVal.getValue() != 0)) settle_filter(d, CGAL::sign(d));  // 0 or NaN
+  if (!d.Rep()->ffVal.isOK()) settle_filter(d, CGAL::sign(d));
   return d;
 }
 
