@@ -221,6 +221,24 @@ std::optional<std::string> zero_length_element(const RunResult& run, std::string
   return std::nullopt;
 }
 
+// PATH-ELEMENT-2 in fast's own numbers: an arc reads as it turns from its written points alone, so
+// fast writes none whose end lies in its start's direction from the centre within rounding and is
+// not its start (sweep_of cannot tell a sliver from a whole turn there). fast decides readability
+// on the numbers it writes; ref rounds exact points once and is judged against fast instead.
+std::optional<std::string> undetermined_turn(const RunResult& run, std::string_view engine) {
+  for (std::size_t i = 0; i < run.path.size(); ++i) {
+    const PathElement& e = run.path[i];
+    int axis = e.type == ElementType::kArc ? sweep_axis(e) : -1;
+    if (axis < 0 || sweep_of(e, axis)) continue;
+    // A helix whose end lies over its start turns a whole turn (its points differ in height only).
+    const double s[3] = {e.start.x, e.start.y, e.start.z}, t[3] = {e.end.x, e.end.y, e.end.z};
+    if (s[kPlane[axis][0]] == t[kPlane[axis][0]] && s[kPlane[axis][1]] == t[kPlane[axis][1]]) continue;
+    return fmt::format("{} element {} ({}) is an arc whose end points leave its turn undetermined (PATH-ELEMENT-2)",
+                       engine, i, describe(e.origin));
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> untraced_difference(const RunResult& traced, const RunResult& untraced,
                                                std::string_view engine) {
   auto same = [](const PathPoint& a, const PathPoint& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
@@ -283,6 +301,7 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
   for (auto [run, engine] : {std::pair{&fast, "fast"}, std::pair{&ref, "ref"}})
     if (std::optional<std::string> broken = broken_boundary_rule(*run, engine)) return diverge(*broken);
   if (std::optional<std::string> zero = zero_length_element(fast, "fast")) return diverge(*zero);
+  if (std::optional<std::string> unread = undetermined_turn(fast, "fast")) return diverge(*unread);
   // PROP-DIFF-2: after a knife edge at line L, decisions about lines up to L and the next
   // `window` blocks are the knife edge's (also those a look-ahead takes later); the first ones
   // after them must be the same decision.

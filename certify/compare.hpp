@@ -79,6 +79,9 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
 std::optional<std::string> broken_boundary_rule(const RunResult& run, std::string_view engine);
 // PATH-ELEMENT-1: an element of length zero in an engine's output, as written (used for fast).
 std::optional<std::string> zero_length_element(const RunResult& run, std::string_view engine);
+// PATH-ELEMENT-2: an arc in an engine's output whose written points leave its turn undetermined (its
+// end in its start's direction from the centre within rounding, not the same point; used for fast).
+std::optional<std::string> undetermined_turn(const RunResult& run, std::string_view engine);
 
 // PROP-TRACE-1: what differs between fast's run that keeps its decisions and the same run that
 // keeps none (`cutcom run` without --trace, which may leave out work only margins need): path,

@@ -91,11 +91,20 @@ TEST(Comparison, AFullCircleAgainstAnArcWithTheSameEndPointsDiverges) {
   fast.path = {arc(s, s, {0, 0, 0}, true)};
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree);
   // fast without its full-circle end snapping: (0, 3) to (0, 2.9999999999999996), one radius,
-  // the end points 4.4e-16 mm apart; whether it turns 0 or 2 pi cannot be read from them.
+  // the end points 4.4e-16 mm apart; whether it turns 0 or 2 pi cannot be read from them (fast's
+  // own output breaks PATH-ELEMENT-2, whatever ref wrote; and against ref's full circle).
   fast.path = {arc(s, {0, 2.9999999999999996, 0}, {0, 0, 0}, true)};
   Verdict v = compare(ref, fast, tolerance());
   EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
-  EXPECT_NE(v.explanation.find("ref turns a full circle, fast writes end points"), std::string::npos) << v.explanation;
+  EXPECT_NE(v.explanation.find("fast element 0 (transition circle at corner line 5/line 0) is an arc whose end points "
+                               "leave its turn undetermined"),
+            std::string::npos)
+      << v.explanation;
+  std::swap(ref, fast);  // ref's own output is not held to it: then against fast's full circle
+  v = compare(ref, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("fast turns a full circle, ref writes end points"), std::string::npos) << v.explanation;
+  std::swap(ref, fast);
   // A start level with the centre on x is no reason to read the circle in the YZ plane: the end
   // keeps the applicate z, so it turns in XY, a whole turn less 2.5e-11 rad (a corner cut).
   ref.path = {arc({0, 0, -1}, {0, 0, -1}, {0, -0.001, -1}, false)};
@@ -204,6 +213,29 @@ TEST(Comparison, AZeroLengthElementOfFastIsADivergence) {
   // ref rounds exact slivers after deciding on them: it is not held to this.
   ref.path = {circle};
   EXPECT_FALSE(compare(ref, fast, tolerance()).explanation.find("ref element") != std::string::npos);
+}
+
+// covers: PATH-ELEMENT-2 PROP-DIFF-1
+TEST(Comparison, AnArcOfFastWhoseTurnItsPointsLeaveUndeterminedIsADivergence) {
+  RunResult ref, fast;
+  // A transition circle whose ends lie two ulps apart on one radius (corpus
+  // transition-circle-at-a-tangent-sar-corner): a sliver or a whole turn to whoever reads it.
+  const double y = 3, y_next = std::nextafter(std::nextafter(y, 4.0), 4.0);
+  fast.path = {arc({1, y, 0}, {1, y_next, 0}, {1, 0, 0}, true)};
+  ASSERT_TRUE(undetermined_turn(fast, "fast"));
+  Verdict v = compare(ref, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("fast element 0 (transition circle"), std::string::npos) << v.explanation;
+  // Readable: the whole turn (the same point), a helix's whole turn (its end over its start), an
+  // arc whose end lies off the start's direction by more than rounding, and the half turn.
+  fast.path[0].end = fast.path[0].start;
+  EXPECT_FALSE(undetermined_turn(fast, "fast"));
+  fast.path[0].end = {1, y, -2};
+  EXPECT_FALSE(undetermined_turn(fast, "fast"));
+  fast.path[0].end = {1 + 1e-9, y, 0};
+  EXPECT_FALSE(undetermined_turn(fast, "fast"));
+  fast.path[0].end = {1, -y, 0};
+  EXPECT_FALSE(undetermined_turn(fast, "fast"));
 }
 
 // A circle of radius exactly r on the inside: both engines decide its collapse in integers, so

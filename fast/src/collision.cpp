@@ -234,7 +234,7 @@ void Compensation::continue_entry(const BlockCopy& m, const Entry& en, int entry
   if (en.lead == Entry::Lead::kCircle) {
     named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
     named.next_insert = m.insert;
-    arc(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
+    corner_circle(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
     return open_element(owner, en.element, en.normal_start, en.radius, true);
   }
   // The rest of the predecessor's extended equidistant, at m's applicate, named after it.

@@ -194,7 +194,7 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
     // Nor may it end where its direction from the centre is the start's within rounding: whether
     // it turns 0 or a whole turn could not be read from its points (PATH-ELEMENT-2).
     Vec2 u = open_start - e.centre, v = end_point - e.centre;
-    double nu = norm(u), nv = norm(v);
+    double nu = norm(u);
     // "Just past" is within the error of the two points: 1e-8 of the radius for intersections of
     // nearly touching carriers, far less for normal points and well-conditioned intersections
     // (campaign 20261209, case 63322: a full circle opened 1.85e-7 mm before its normal start by an
@@ -204,7 +204,7 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
     double start_error = open_at_normal_start ? normal : open_start_error >= 0 ? open_start_error : snap;
     double end_error = at_normal_end ? normal : closing_point_error >= 0 ? closing_point_error : snap;
     snap = std::min(snap, std::max(start_error, end_error));
-    bool unreadable = std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
+    bool unreadable = turn_undetermined(u, v);
     // How the points read (the rotation from start to end) matters only where they lie that close.
     bool near = norm(end_point - open_start) <= snap;
     double reads = near ? signed_rotation(u, v, e.sense) : 0;
@@ -537,8 +537,17 @@ void Compensation::transition_circle(const BlockCopy& b, const Element& next, do
   if (r > 0) {  // TRC-G450-2: no circle for a zero radius
     double hv = h(open.start);
     // Around the outside: clockwise on the left, counter-clockwise on the right.
-    arc(open, xyz(from, hv), xyz(to, hv), xyz(v, hv), s < 0, corner);
+    corner_circle(open, xyz(from, hv), xyz(to, hv), xyz(v, hv), s < 0, corner);
   }
+}
+
+void Compensation::corner_circle(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre,
+                                 bool ccw, const Origin& named) {
+  // PATH-ELEMENT-2: a circle around an outer corner turns less than half a turn; where the
+  // equidistants meet within rounding (a tangent corner in exact terms, e.g. into a SAR circle)
+  // its points cannot tell that turn from a whole one: its chord, a line a rounding long (or none).
+  if (turn_undetermined(ab(from) - ab(centre), ab(to) - ab(centre))) return line(owner, from, to, named, owner.rapid);
+  arc(owner, from, to, centre, ccw, named);
 }
 
 void Compensation::arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,

@@ -213,6 +213,10 @@ class Compensation {
 
   void arc(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
            const Origin& from_what);
+  // A circle around an outer corner (a transition circle, G450, or its like at an entry or a
+  // retraction), written as it reads (PATH-ELEMENT-2).
+  void corner_circle(BlockCopy& owner, const PathPoint& from, const PathPoint& to, const PathPoint& centre, bool ccw,
+                     const Origin& named);
 
   // A block's element; that of a block in one of prev_blocks' slots is computed once per block
   // and plane (the entry under CDON, the corner and the next block's entry all ask for it). The

@@ -145,9 +145,9 @@ void Compensation::approach_around(const BlockCopy& first, const Element& e, dou
     Origin corner = origin(selection, OriginKind::kTransitionCircle);
     corner.next_line = first.line, corner.next_block = first.number, corner.next_insert = first.insert;
     open_element(first, e, q, radius, true);
-    double h1 = h(first.start);                                                      // after the held-back blocks
-    if (r > 0) arc(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
-  } else {                                                                           // TRC-KONT-4
+    double h1 = h(first.start);  // after the held-back blocks
+    if (r > 0) corner_circle(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
+  } else {                                                                                     // TRC-KONT-4
     decide("TRC-KONT-4", selection.line, "intersection");
     line(selection, selection.start, xyz(x, hv), OriginKind::kApproach, selection.rapid);
     run_held_back(x);
@@ -214,7 +214,7 @@ void Compensation::retract_edge_around(BlockCopy& d, const BlockCopy& last_block
   Origin corner = origin(last_block, OriginKind::kTransitionCircle);
   corner.next_line = d.line, corner.next_block = d.number, corner.next_insert = d.insert;
   double hv = h(d.start);
-  arc(d, xyz(x, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);
+  corner_circle(d, xyz(x, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);
   retraction_line(d, rp);
 }
 
@@ -349,7 +349,7 @@ void Compensation::retract_around(BlockCopy& last, const Kont& k) {
     if (!close_open(from, BlockPlace::of(last), true)) return;
     run_held_back(from);
     double hv = h(last.start);
-    if (r > 0) arc(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
+    if (r > 0) corner_circle(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
     return retraction_line(last, rp);
   }
   decide("TRC-KONT-4", last.line, "intersection");

@@ -96,4 +96,11 @@ double carrier_gap(const Carrier& u, const Carrier& v);
 double signed_rotation(Vec2 from, Vec2 to, int sense);
 inline double sweep(const Element& e) { return e.turn; }
 
+// PATH-ELEMENT-2: an arc's end lies in its start's direction from the centre within rounding (u and
+// v from the centre to start and end): its points alone cannot tell a sliver from a whole turn.
+inline bool turn_undetermined(Vec2 u, Vec2 v) {
+  double nu = norm(u), nv = norm(v);
+  return std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
+}
+
 }  // namespace cutcom::fast
