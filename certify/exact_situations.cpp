@@ -144,6 +144,41 @@ void full_circle(ContourCase& c, std::int64_t hair) {
   c.steps = {lead, circle, out};
 }
 
+// PATH-ELEMENT-2 at two corners on one point: a full circle that crosses a straight line at its
+// start, the line going on after it (G451, both corners by intersection). The line's equidistant
+// cuts the circle's at one point P near the start: the corner into the circle trims it there, the
+// corner out of it extends it there (one inner, one outer), so the circle turns exactly a whole
+// turn from P to P, computed by two corners a rounding apart on one radius (a turn its points
+// alone leave undetermined). Directions from Pythagorean triples: every point a whole nanometre.
+// The hair moves the circle's end along x, as in full_circle.
+void full_circle_between_corners(ContourCase& c, std::int64_t hair) {
+  static constexpr std::int64_t kTriples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}};
+  const std::int64_t* t1 = kTriples[*inRange<std::size_t>(0, std::size(kTriples))];
+  const std::int64_t* t2 = kTriples[*inRange<std::size_t>(0, std::size(kTriples))];
+  std::int64_t a = t1[0], b = t1[1];  // the line's direction (a, b) / c1, turned by quarters
+  for (int k = *inRange(0, 4); k > 0; --k) std::tie(a, b) = std::make_pair(-b, a);
+  const std::int64_t c1 = t1[2], c2 = t2[2];
+  // The centre from the start: across the line by p, along it by q (in units of R / c2), either
+  // side and either way: the corner's angle is atan(q / p), 16 to 74 degrees, below MD20210.
+  bool swap = *rc::gen::arbitrary<bool>();
+  std::int64_t p = (swap ? t2[1] : t2[0]) * *element<std::int64_t>(1, -1);
+  std::int64_t q = (swap ? t2[0] : t2[1]) * *element<std::int64_t>(1, -1);
+  // R large enough that the line's equidistant (|p| R / c2 + r from the centre at most) cuts the
+  // circle's (R - r at least): R (1 - |p| / c2) >= 2 r, then a whole multiple of c1 c2.
+  const std::int64_t r = c.radius_um, unit = c1 * c2;
+  std::int64_t least = 2 * r * c2 / (c2 - std::abs(p)) + r;
+  std::int64_t big = (least / unit + 1) * unit * *inRange<std::int64_t>(1, 4);
+  Step lead{}, circle{}, out{};
+  std::int64_t length = (2 * big / c1 + 1) * c1;
+  lead.dx = length / c1 * a, lead.dy = length / c1 * b;
+  circle.arc = true, circle.ccw = *rc::gen::arbitrary<bool>();
+  circle.ci = big / unit * (p * -b + q * a), circle.cj = big / unit * (p * a + q * b);
+  circle.dx = hair, circle.dy = 0;
+  out.dx = lead.dx - hair, out.dy = lead.dy;
+  c.steps = {lead, circle, out};
+  c.g451_select = true;
+}
+
 // TRC-LOOK-2: a look-ahead whose intersection is exactly the candidate's equidistant start (an
 // intersection at the start is valid), or a nanometre before or after it. G41 along +x, a block
 // up by 2v, too short for r = 5v at that inner corner, then the candidate along (3, -4): its
@@ -327,6 +362,7 @@ rc::Gen<ContourCase> exact_situations() {
                                                 {"line-tangent-to-circle-carrier", line_tangent_to_circle_carrier},
                                                 {"zero-equidistant", zero_equidistant},
                                                 {"full-circle", full_circle},
+                                                {"full-circle-between-corners", full_circle_between_corners},
                                                 {"look-ahead-at-candidate-start", look_ahead_at_candidate_start},
                                                 {"approach-window-collapsed-circle", approach_window_collapsed_circle},
                                                 {"sar-start-on-tangent", sar_start_on_tangent},
