@@ -236,6 +236,38 @@ void cd_entry_at_end(ContourCase& c, std::int64_t hair) {
   c.steps = {held, before, up, on};
 }
 
+// TRC-CD-5 at a joint: G41 along +x by a radii (A), a right turn that moves exactly r along x (B:
+// an outer corner, its G450 circle starting at A's equidistant's end), then up by less than the
+// inner corner needs (C, too short), and G40 G462 under CDON: C's equidistant extended (x = A's
+// end + r - r) runs back up through the joint of A's equidistant and the circle, where the search
+// of earlier blocks cuts; a cut there leaves nothing of the circle (campaign 20261277, case
+// 241262). Turned by quarters, mirrored for G42; the hair moves B's end along x.
+void retraction_through_a_joint(ContourCase& c, std::int64_t hair) {
+  // Millimetres, not the micrometres of the frame: the cut's rounding grows with the positions.
+  c.radius_um = *inRange<std::int64_t>(1, 10000) * (kMm / 1000) + *inRange<std::int64_t>(0, 1000);
+  c.first_x = *inRange<std::int64_t>(-50, 51) * kMm + *inRange<std::int64_t>(0, 1000);
+  c.first_y = *inRange<std::int64_t>(-50, 51) * kMm + *inRange<std::int64_t>(0, 1000);
+  const std::int64_t r = c.radius_um;
+  std::int64_t a = *inRange<std::int64_t>(1, 4), b = *inRange<std::int64_t>(1, 5);
+  std::int64_t up = *element<std::int64_t>(r / 4, r / 2, r, 2 * r);
+  std::vector<std::pair<std::int64_t, std::int64_t>> v = {
+      {a * r, 0}, {r + hair, -b * r}, {0, up}, {*inRange<std::int64_t>(-3, 4) * r, -*inRange<std::int64_t>(4, 12) * r}};
+  c.right = *rc::gen::arbitrary<bool>();
+  for (auto& [x, y] : v) {
+    if (c.right) y = -y;  // mirrored: the same corners on the other side
+    for (int k = *inRange(0, 4); k > 0; --k) std::tie(x, y) = std::make_pair(-y, x);
+  }
+  c.steps.assign(3, Step{});
+  std::int64_t ex = c.first_x, ey = c.first_y;
+  for (std::size_t i = 0; i < 3; ++i) c.steps[i].dx = v[i].first, c.steps[i].dy = v[i].second;
+  for (std::size_t i = 0; i < 4; ++i) ex += v[i].first, ey += v[i].second;
+  c.end_x = ex, c.end_y = ey;
+  c.g451_select = false, c.g451_deselect = *rc::gen::arbitrary<bool>();
+  c.kont_deselect = false, c.edge_deselect = 462, c.sar.retraction = false;
+  c.cdon = true;
+  c.md20240 = *inRange(3, 6);
+}
+
 // SAR-SIDE-2: a smooth approach by a circle (G247/G347) with G143, so that the side is that of
 // the start P0 against the tangent at P4: P0 exactly on the tangent line (alarm 10744), or off it
 // by a cross product of 1 nm^2, a distance of 1/|d| nm (d the first block, 2 to 20 mm long:
@@ -367,6 +399,7 @@ rc::Gen<ContourCase> exact_situations() {
                                                 {"approach-window-collapsed-circle", approach_window_collapsed_circle},
                                                 {"sar-start-on-tangent", sar_start_on_tangent},
                                                 {"cd-entry-at-end", cd_entry_at_end},
+                                                {"retraction-through-a-joint", retraction_through_a_joint},
                                                 {"cr-circle-tangent", cr_circle_tangent}};
     // Uniform whatever the case's size (inRange alone favours the first entries at small sizes:
     // the last situation came up 5 times in 20,000 cases, the first 198).
