@@ -220,7 +220,9 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
     }
     // PATH-ELEMENT-2: more than a whole turn (a full circle opened before its start or closed
     // after its end) is the whole turn first, then the rest: an arc reads at most one turn.
-    bool closed = to.x == from.x && to.y == from.y && to.z == from.z;
+    // Closed in the plane: a helix whose end the snap above put over its start is one whole turn
+    // (campaign 20261274, case 870612: a full helix opened by a KONT intersection at r = 0).
+    bool closed = end_point.a == open_start.a && end_point.b == open_start.b;
     if (turn > 2 * std::numbers::pi && !closed) {
       if (h(open.start) != h(open.end))
         throw UnsupportedError(open.line, "a helix that turns more than a whole turn after its corners");
