@@ -99,8 +99,13 @@ inline double sweep(const Element& e) { return e.turn; }
 // PATH-ELEMENT-2: an arc's end lies in its start's direction from the centre within rounding (u and
 // v from the centre to start and end): its points alone cannot tell a sliver from a whole turn.
 inline bool turn_undetermined(Vec2 u, Vec2 v) {
+  if (!(dot(u, v) > 0)) return false;
+  const double c = std::fabs(cross(u, v)), band = 64 * 0x1p-53;
+  // (|u| + |v|) max(|u|, |v|) <= 2 (|u|^2 + |v|^2), with a factor 2 to spare: beyond that bound
+  // the turn reads without the square roots (almost every corner circle).
+  if (c > band * 2 * (dot(u, u) + dot(v, v))) return false;
   double nu = norm(u), nv = norm(v);
-  return std::fabs(cross(u, v)) <= 64 * 0x1p-53 * (nu + nv) * std::max(nu, nv) && dot(u, v) > 0;
+  return c <= band * (nu + nv) * std::max(nu, nv);
 }
 
 }  // namespace cutcom::fast
