@@ -22,6 +22,15 @@ namespace {
 // program grid, decimals = 9) to either side. `hair` is 0 (exactly), +1 or -1 (nm).
 constexpr std::int64_t kMm = 1000000000;  // nm in a millimetre: these cases are written with 9 decimals
 
+// Pythagorean triples (a, b, c): directions (a, b) / c that keep every point on the grid.
+constexpr std::int64_t kTriples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}};
+const std::int64_t* any_triple() { return kTriples[*inRange<std::size_t>(0, std::size(kTriples))]; }
+// (x, y) turned by a random number of quarter turns (exact in integers).
+std::pair<std::int64_t, std::int64_t> quarter_turned(std::int64_t x, std::int64_t y) {
+  for (int k = *inRange(0, 4); k > 0; --k) std::tie(x, y) = std::make_pair(-y, x);
+  return {x, y};
+}
+
 // Every position of the case in nm: start and end on the compensation side, well away.
 void exact_frame(ContourCase& c) {
   c.decimals = 9;
@@ -152,11 +161,8 @@ void full_circle(ContourCase& c, std::int64_t hair) {
 // alone leave undetermined). Directions from Pythagorean triples: every point a whole nanometre.
 // The hair moves the circle's end along x, as in full_circle.
 void full_circle_between_corners(ContourCase& c, std::int64_t hair) {
-  static constexpr std::int64_t kTriples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}};
-  const std::int64_t* t1 = kTriples[*inRange<std::size_t>(0, std::size(kTriples))];
-  const std::int64_t* t2 = kTriples[*inRange<std::size_t>(0, std::size(kTriples))];
-  std::int64_t a = t1[0], b = t1[1];  // the line's direction (a, b) / c1, turned by quarters
-  for (int k = *inRange(0, 4); k > 0; --k) std::tie(a, b) = std::make_pair(-b, a);
+  const std::int64_t *t1 = any_triple(), *t2 = any_triple();
+  auto [a, b] = quarter_turned(t1[0], t1[1]);  // the line's direction (a, b) / c1
   const std::int64_t c1 = t1[2], c2 = t2[2];
   // The centre from the start: across the line by p, along it by q (in units of R / c2), either
   // side and either way: the corner's angle is atan(q / p), 16 to 74 degrees, below MD20210.
@@ -238,8 +244,9 @@ void cd_entry_at_end(ContourCase& c, std::int64_t hair) {
 
 // TRC-CD-5 at a joint: G41 along +x by a radii (A), a right turn that moves exactly r along x (B:
 // an outer corner, its G450 circle starting at A's equidistant's end), then up by less than the
-// inner corner needs (C, too short), and G40 G462 under CDON: C's equidistant extended (x = A's
-// end + r - r) runs back up through the joint of A's equidistant and the circle, where the search
+// inner corner needs (C, too short), and G40 G462 under CDON: C's equidistant extended (on A's
+// end's line across, B's step r less the radius) runs back up through the joint of A's
+// equidistant and the circle, where the search
 // of earlier blocks cuts; a cut there leaves nothing of the circle (campaign 20261277, case
 // 241262). Turned by quarters, mirrored for G42; the hair moves B's end along x.
 void retraction_through_a_joint(ContourCase& c, std::int64_t hair) {
@@ -255,7 +262,7 @@ void retraction_through_a_joint(ContourCase& c, std::int64_t hair) {
   c.right = *rc::gen::arbitrary<bool>();
   for (auto& [x, y] : v) {
     if (c.right) y = -y;  // mirrored: the same corners on the other side
-    for (int k = *inRange(0, 4); k > 0; --k) std::tie(x, y) = std::make_pair(-y, x);
+    std::tie(x, y) = quarter_turned(x, y);
   }
   c.steps.assign(3, Step{});
   std::int64_t ex = c.first_x, ey = c.first_y;
@@ -334,14 +341,8 @@ TangentCircle tangent_cr_circle(std::int64_t ua, std::int64_t ub, std::int64_t c
 // on its tangent line. The hair moves the first circle's end (the corners after it turn by a
 // trace) or the start across the line.
 void cr_circle_tangent(ContourCase& c, std::int64_t hair) {
-  static constexpr std::int64_t kTriples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}};
-  auto direction = [](const std::int64_t* t) {  // (a, b) / c turned by a random number of quarters
-    std::int64_t a = t[0], b = t[1];
-    for (int k = *inRange(0, 4); k > 0; --k) std::tie(a, b) = std::make_pair(-b, a);
-    return std::make_pair(a, b);
-  };
-  auto triple = [] { return kTriples[*inRange<std::size_t>(0, std::size(kTriples))]; };
-  const std::int64_t *t1 = triple(), *t2 = triple(), *t3 = triple();
+  auto direction = [](const std::int64_t* t) { return quarter_turned(t[0], t[1]); };  // (a, b) / c
+  const std::int64_t *t1 = any_triple(), *t2 = any_triple(), *t3 = any_triple();
   const std::int64_t c1 = t1[2], c2 = t2[2], c3 = t3[2], g = *inRange<std::int64_t>(1, 16) * kMm / 100;
   auto [ua, ub] = direction(t1);  // the line into the circle, times c1
   auto [wa, wb] = direction(t2);  // the first circle's end less its centre, times c2
