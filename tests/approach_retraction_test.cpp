@@ -321,5 +321,57 @@ TEST(ApproachRetraction, TooShortFirstBlockFoundByTheLookAhead) {
   }
 }
 
+// covers: TRC-EDGE-2 TRC-EDGE-5 TRC-ARC-ELEMENT-1
+TEST(ApproachRetraction, RetractionHitEarlyOnAnArcOfMoreThanHalfATurnEndsItThere) {
+  // N30 turns 270 degrees ccw about (0,0); G42 puts its equidistant outside, radius 13, from
+  // (13,0) to (0,-13). N40 turns right into -Y: x = -3 meets that circle below its end, so it is
+  // too short. G460's line from its normal end (-3,-10.5) to (13,34.5) meets the circle at (5,12)
+  // (5-12-13), 67.4 degrees along the piece: N30 ends there. Measured from its normal end
+  // (-202.6 degrees, read as +157.4) the end lay a whole turn later: a whole turn, then the rest.
+  Runs r = run_both(tool("3") +
+                    "N10 G0 X20 Y0 T1 D1\nN20 G1 G42 X10 Y0 F100\nN30 G3 X0 Y-10 I-10 J0\nN40 G1 X0 Y-10.5\n"
+                    "N50 G40 G460 X13 Y34.5\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {20, 0, 0}), line(K::kApproach, {20, 0, 0}, {13, 0, 0}),
+                  Expect{K::kOffset, {13, 0, 0}, {5, 12, 0}, {0, 0, 0}, true, true},
+                  line(K::kRetraction, {5, 12, 0}, {13, 34.5, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    EXPECT_TRUE(has_decision(*x, "TRC-EDGE-5", "hit"));
+    EXPECT_TRUE(has_decision(*x, "TRC-ARC-ELEMENT-1", "fits"));
+  }
+}
+
+// covers: TRC-EDGE-2 TRC-EDGE-5 TRC-ARC-ELEMENT-1
+TEST(ApproachRetraction, ApproachHitLateOnAnArcOfMoreThanHalfATurnStartsItThere) {
+  // The mirror: N30 (-Y to +Y at x = 0, equidistant x = -3) runs backwards into N40's circle, so
+  // G460's line from (13,34.5) to N30's normal start (-3,-10.5) meets N40's equidistant (radius 13,
+  // cw from (0,-13) to (13,0), 270 degrees) at (5,12), 202.6 degrees along it: the rest turns
+  // 67.4 degrees. Measured from the normal start (-157.4) the start lay a whole turn earlier.
+  Runs r = run_both(tool("3") +
+                    "N10 G0 X13 Y34.5 T1 D1\nN20 G1 G41 G460 X0 Y-10.5 F100\nN30 G1 X0 Y-10\n"
+                    "N40 G2 X10 Y0 I0 J10\nN50 G1 X10 Y-10\nN60 G40 X20 Y-10\n");
+  expect_both(r, {line(K::kProgrammed, {0, 0, 0}, {13, 34.5, 0}), line(K::kApproach, {13, 34.5, 0}, {5, 12, 0}),
+                  Expect{K::kOffset, {5, 12, 0}, {13, 0, 0}, {0, 0, 0}, true, false},
+                  line(K::kOffset, {13, 0, 0}, {13, -10, 0}), line(K::kRetraction, {13, -10, 0}, {20, -10, 0})});
+  for (const RunResult* x : {&r.ref, &r.fast}) EXPECT_TRUE(has_decision(*x, "TRC-EDGE-5", "hit"));
+}
+
+// covers: TRC-EDGE-3 TRC-EDGE-5 TRC-ARC-ELEMENT-1
+TEST(ApproachRetraction, RetractionHitOnAFullCircleIsTheFirstPointAlongIt) {
+  // N30 is a full circle, equidistant radius 7 about (0,0) from (7,0). N40 turns inwards and is
+  // too short; G461's circle of radius 3 about (9.5,0.5) meets the equidistant at about 14.5 and
+  // -8.5 degrees: the first along the circle, 14.5 degrees from its start, ends it (TRC-EDGE-5),
+  // no whole turn before it.
+  Runs r = run_both(tool("3") +
+                    "N10 G0 X20 Y0 T1 D1\nN20 G1 G41 X10 Y0 F100\nN30 G3 X10 Y0 I-10 J0\nN40 G1 X9.5 Y0.5\n"
+                    "N50 G1 G40 G461 X0 Y0\n");
+  for (const RunResult* x : {&r.ref, &r.fast}) {
+    ASSERT_EQ(x->path.size(), 4u);
+    const PathElement& a = x->path[2];
+    EXPECT_EQ(a.type, ElementType::kArc);
+    EXPECT_NEAR(std::atan2(a.end.y, a.end.x),
+                std::atan2(0.5, 9.5) + std::acos((49 + 90.5 - 9) / (2 * 7 * std::sqrt(90.5))), 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace cutcom::test

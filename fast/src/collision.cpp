@@ -213,7 +213,7 @@ bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at
     if (open_owner != owner(crossed) && open_owner != last_run) skip_at(open, x);
   } else {
     looking = false;
-    if (!close_open(x, at)) return false;
+    if (!close_open(x, at, Placed::kOnPiece)) return false;
   }
   for (BlockCopy& k : skipped) skip_at(k, x);
   skipped.clear();
@@ -226,7 +226,10 @@ bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at
 
 void Compensation::continue_entry(const BlockCopy& m, const Entry& en, int entry_piece, Vec2 x) {
   bool on_lead = en.lead != Entry::Lead::kNone && entry_piece == 0 && !(x.a == en.own_start.a && x.b == en.own_start.b);
-  if (!on_lead) return open_element(m, en.element, x, en.radius, x.a == en.normal_start.a && x.b == en.normal_start.b);
+  if (!on_lead) {  // on m's own piece, from its start
+    bool normal = en.own_start.a == en.normal_start.a && en.own_start.b == en.normal_start.b;
+    return open_element(m, en.element, x, en.radius, Placed::kOnPiece, normal ? nullptr : &en.own_start);
+  }
   double hv = h(m.start);
   BlockCopy owner = m;
   // PATH-ORIGIN-1: the predecessor's line, number, SAR movement, insert.
@@ -235,7 +238,7 @@ void Compensation::continue_entry(const BlockCopy& m, const Entry& en, int entry
     named.kind = OriginKind::kTransitionCircle, named.next_line = m.line, named.next_block = m.number;
     named.next_insert = m.insert;
     corner_circle(owner, xyz(x, hv), xyz(en.normal_start, hv), xyz(en.vertex, hv), s < 0, named);
-    return open_element(owner, en.element, en.normal_start, en.radius, true);
+    return open_element(owner, en.element, en.normal_start, en.radius, Placed::kNormal);
   }
   // The rest of the predecessor's extended equidistant, at m's applicate, named after it.
   named.kind = OriginKind::kOffset;

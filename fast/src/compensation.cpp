@@ -67,7 +67,7 @@ void Compensation::change_side(const Block& b) {
   }
   decide(again ? "TRC-SIDE-2" : "TRC-SIDE-1", b.words.line, again ? "selected-again" : "side-change");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, BlockPlace::of(b.words), true)) return;
+  if (!close_open(end, BlockPlace::of(b.words), Placed::kNormal)) return;
   run_held_back(end);
   PathPoint tool = xyz(end, h(copy_of(b).start));
   bool tool_on_contour = r_units == 0;  // radius 0: the tool stands on the programmed point
@@ -136,9 +136,9 @@ void Compensation::run_held_back_uncompensated() {
   dummy_count = 0;
 }
 
-bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool at_normal_end,
-                              const Candidate* candidate) {
+bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, Placed placed, const Candidate* candidate) {
   const Element& e = open_el;
+  const bool at_normal_end = placed == Placed::kNormal;
   // A full circle from its normal start to its normal end turns a whole turn exactly and ends where
   // it starts, as in ref. Its two rounded rotations could add up to a hair more, which
   // PATH-ELEMENT-2 below would take for a whole turn and a rest (campaign 20261262, case 192296: a
@@ -151,9 +151,17 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, bool 
   } else if (whole_turn) {
     turn = sweep(e);
     margin = turn * open_radius;
+  } else if (placed == Placed::kOnPiece) {
+    // TRC-ARC-ELEMENT-1: on the piece by the search, its rotation from the start. Past the
+    // piece's end in double it lies at one of its ends within rounding: the nearer one.
+    constexpr double kTurn = 2 * std::numbers::pi;
+    double room = sweep(e) - open_from;
+    turn = signed_rotation(open_start - e.centre, end_point - e.centre, e.sense);
+    if (turn < 0) turn += kTurn;
+    if (turn > room) turn = kTurn - turn < turn - room ? 0.0 : room;
+    margin = turn * open_radius;
   } else {
-    turn = sweep(e) - rotation_memo.rotation(e, open_start) +
-           signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
+    turn = sweep(e) - open_from + signed_rotation(e.end - e.centre, end_point - e.centre, e.sense);
     margin = turn * open_radius;
   }
   std::string_view clause = e.arc ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
@@ -302,11 +310,21 @@ double Compensation::exactly_inside(const BlockCopy& c, const Element& e, double
   return radius;
 }
 
-void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, bool at_normal_start) {
+void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, Placed placed,
+                                const Vec2* piece_start) {
   open = b;
   open_el = e;
   open_start = start;
-  open_at_normal_start = at_normal_start;
+  open_at_normal_start = placed == Placed::kNormal;
+  open_from = 0;
+  if (e.arc && placed == Placed::kCorner) open_from = rotation_memo.rotation(e, start);
+  if (e.arc && placed == Placed::kOnPiece) {  // TRC-ARC-ELEMENT-1: [0, 2 pi) from the piece's start
+    double base = piece_start ? rotation_memo.rotation(e, *piece_start) : 0.0;
+    Vec2 from = piece_start ? *piece_start : Element::offset(e.start, e.start_tangent(), s * r);
+    double t = signed_rotation(from - e.centre, start - e.centre, e.sense);
+    open_from = base + (t < 0 ? t + 2 * std::numbers::pi : t);
+    open_at_normal_start = !piece_start && t == 0;  // a full circle from its normal start stays whole
+  }
   open_blended = false;
   open_radius = radius;
   open_start_error = closing_point_error;  // the point that closed the last element opens this one
@@ -404,13 +422,14 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
     if (too_short) return start_look_ahead(b);
   }
   Candidate cand{&copy, &next, next_radius};
+  const bool tangent = c.kind == Corner::Kind::kTangent;
   closing_point_error = x_error;
-  if (!close_open(x, BlockPlace::of(b.words), c.kind == Corner::Kind::kTangent, &cand)) {
+  if (!close_open(x, BlockPlace::of(b.words), tangent ? Placed::kNormal : Placed::kCorner, &cand)) {
     closing_point_error = -1;
     return;
   }
   run_held_back(x);
-  open_element(copy, next, x, next_radius, c.kind == Corner::Kind::kTangent);
+  open_element(copy, next, x, next_radius, tangent ? Placed::kNormal : Placed::kCorner);
 }
 
 bool Compensation::outer_corner_circle(int line_no, bool g451, const Corner& c) {
@@ -517,7 +536,7 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   if (!valid) return pass_over(c);
   looking = false;
   Candidate candidate{&c, &cand, radius};
-  if (!close_open(y, BlockPlace::of(b.words), false, &candidate)) return;
+  if (!close_open(y, BlockPlace::of(b.words), Placed::kCorner, &candidate)) return;
   for (BlockCopy& d : skipped) skip_at(d, y);
   skipped.clear();
   open_element(c, cand, y, radius);
@@ -530,11 +549,11 @@ void Compensation::skip_at(BlockCopy& k, Vec2 at) {
 
 void Compensation::transition_circle(const BlockCopy& b, const Element& next, double next_radius, Vec2 v) {
   Vec2 from = Element::offset(v, open_el.end_tangent(), s * r);
-  if (!close_open(from, BlockPlace::of(b), true)) return;
+  if (!close_open(from, BlockPlace::of(b), Placed::kNormal)) return;
   run_held_back(from);
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
   Origin corner = origin(open, OriginKind::kTransitionCircle);
-  open_element(b, next, to, next_radius, true);
+  open_element(b, next, to, next_radius, Placed::kNormal);
   corner.next_line = open.line, corner.next_block = open.number, corner.next_insert = open.insert;
   if (r > 0) {  // TRC-G450-2: no circle for a zero radius
     double hv = h(open.start);

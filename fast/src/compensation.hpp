@@ -102,6 +102,7 @@ class Compensation {
   Vec2 open_start;                    // start point of its equidistant (after the previous corner)
   bool open_blended = false;          // TRC-RADIUS-3: the open element runs from one radius to another
   bool open_at_normal_start = false;  // opened at its normal start by construction (a full circle stays whole)
+  double open_from = 0;               // arcs: the start point's rotation from the normal start
   // PATH-ELEMENT-2: how far (mm) the open element's start and the point closing it may lie from
   // their exact places: an intersection of carriers crossing at sine c errs by about 64 u / c of
   // the size; -1: not known (the snap's full 1e-8 of the radius).
@@ -245,8 +246,13 @@ class Compensation {
     const Element* element;
     double radius;
   };
-  // at_normal_end: end_point is the normal end by construction (as ref's close_open).
-  bool close_open(Vec2& end_point, const BlockPlace& alarm_at, bool at_normal_end = false,
+  // How a point of the open element was placed; a circle reads its rotation by it, as ref's
+  // close_open (TRC-ARC-ELEMENT-1). kNormal: the normal point by construction (rotation 0);
+  // kCorner: a corner's point, the signed rotation in (-pi, pi] from the normal point; kOnPiece:
+  // found on the piece by a search (TRC-EDGE-5/6, TRC-CD-3..6), the rotation in [0, 2 pi) from the
+  // piece's start.
+  enum class Placed { kCorner, kNormal, kOnPiece };
+  bool close_open(Vec2& end_point, const BlockPlace& alarm_at, Placed placed = Placed::kCorner,
                   const Candidate* candidate = nullptr);
 
   // TRC-LOOK-2's parallel lines, exactly: two programmed displacements are whole numbers of
@@ -283,7 +289,10 @@ class Compensation {
   bool equidistant_exists(const Block& b, const BlockCopy& c, const Element& e, double& radius);
   double exactly_inside(const BlockCopy& c, const Element& e, double radius) const;
 
-  void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, bool at_normal_start = false);
+  // `placed`: how `start` was placed (see close_open); kOnPiece: on the piece that starts at
+  // `piece_start` (default: the normal start point).
+  void open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, Placed placed = Placed::kCorner,
+                    const Vec2* piece_start = nullptr);
 
   // --- checks shared by the phases with compensation in force --------------------------------
   // Returns false if the block ended the program with an alarm.

@@ -50,8 +50,8 @@ EdgeCurve edge_curve(EdgeStrategy strategy, double r, Vec2 vertex, Vec2 normal_p
 // normal end; the first (retraction) or last (approach) along it. `margin` as in ref: the hit's
 // least slack to the bounds (and the carriers' overlap with a circle); without a hit the
 // largest negative one.
-bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double side_radius, const Vec2* from, bool last,
-              Vec2& out, double& margin) {
+bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double side_radius, const PieceStart* from,
+              bool last, Vec2& out, double& margin) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   margin = -kInf;
   if (curve.carrier.circle ? !(curve.carrier.radius > 0) : dot(curve.carrier.direction, curve.carrier.direction) == 0)
@@ -81,18 +81,17 @@ bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double si
     double a, lower_mm, upper_mm;
     if (!e.arc) {
       a = along(e, xs[i], side_radius);
-      double lower = from ? along(e, *from, side_radius) : 0.0;
+      double lower = from ? along(e, from->point, side_radius) : 0.0;
       lower_mm = a - lower, upper_mm = e.length - a;
     } else {
       constexpr double kTurn = 2 * std::numbers::pi;
-      Vec2 start = from ? *from : Element::offset(e.start, e.start_tangent(), side_radius);
+      Vec2 start = from ? from->point : Element::offset(e.start, e.start_tangent(), side_radius);
       Vec2 end = Element::offset(e.end, e.end_tangent(), side_radius);
       Vec2 f = start - e.centre;
       double t = signed_rotation(f, xs[i] - e.centre, e.sense);
       a = t < 0 ? t + kTurn : t;
-      // What is left of the circle after `from` (as close_open measures it: no wrap-around
-      // when `from` is the normal start of a full circle).
-      double room = sweep(e) - (from ? signed_rotation(e.start - e.centre, f, e.sense) : 0.0);
+      // What is left of the circle after `from`, as close_open measures it.
+      double room = sweep(e) - (from ? from->rotation : 0.0);
       lower_mm = norm(xs[i] - start), upper_mm = norm(xs[i] - end);
       // Beyond the room by the rotation: off by the nearer end (a point that is an end is on).
       if (a > room && lower_mm != 0 && upper_mm != 0) lower_mm = upper_mm = -std::min(lower_mm, upper_mm);

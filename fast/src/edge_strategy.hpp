@@ -21,7 +21,13 @@ EdgeCurve edge_curve(EdgeStrategy strategy, double r, Vec2 vertex, Vec2 normal_p
 
 // TRC-EDGE-5: the first (retraction) or last (approach) hit on e's equidistant between `from`
 // (default: its normal start) and its normal end; `margin` as ref reports it.
-bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double side_radius, const Vec2* from, bool last,
-              Vec2& out, double& margin);
+// The start of the piece searched when it is not the normal start: its point and its rotation
+// from the normal start (arcs; as the open element holds it).
+struct PieceStart {
+  Vec2 point;
+  double rotation = 0;
+};
+bool edge_hit(const EdgeCurve& curve, const Element& e, double radius, double side_radius, const PieceStart* from,
+              bool last, Vec2& out, double& margin);
 
 }  // namespace cutcom::fast

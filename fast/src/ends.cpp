@@ -58,7 +58,7 @@ void Compensation::approach(const Block& b) {
     approach_dummies[static_cast<std::size_t>(i)] = dummies[static_cast<std::size_t>(i)];
   approach_dummy_count = dummy_count;
   dummy_count = 0;
-  open_element(first, e, q, radius, true);
+  open_element(first, e, q, radius, Placed::kNormal);
   phase = Phase::kActive;
 }
 
@@ -144,7 +144,7 @@ void Compensation::approach_around(const BlockCopy& first, const Element& e, dou
     Vec2 q = Element::offset(k.vertex, e.start_tangent(), s * r);
     Origin corner = origin(selection, OriginKind::kTransitionCircle);
     corner.next_line = first.line, corner.next_block = first.number, corner.next_insert = first.insert;
-    open_element(first, e, q, radius, true);
+    open_element(first, e, q, radius, Placed::kNormal);
     double h1 = h(first.start);  // after the held-back blocks
     if (r > 0) corner_circle(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
   } else {                                                                                     // TRC-KONT-4
@@ -177,12 +177,13 @@ void Compensation::retract_edge(const Block& b) {
   EdgeCurve curve = edge_curve(d.edge_strategy, r, last.end, normal_end, last.end_tangent(), ab(d.end), false);
   Vec2 hit;
   double margin = 0;
-  bool found = edge_hit(curve, open_el, open_radius, s * r, &open_start, false, hit, margin);
+  PieceStart piece{open_start, open_from};
+  bool found = edge_hit(curve, open_el, open_radius, s * r, &piece, false, hit, margin);
   decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
   if (d.cdon && search_further_back(d, curve)) return;
   if (!found) return raise(10751, d);
   looking = false;
-  if (!close_open(hit, BlockPlace::of(d))) return;
+  if (!close_open(hit, BlockPlace::of(d), Placed::kOnPiece)) return;
   for (BlockCopy& k : skipped) skip_at(k, hit);
   skipped.clear();
   retraction_line(d, hit);
@@ -197,17 +198,18 @@ void Compensation::retract_edge_around(BlockCopy& d, const BlockCopy& last_block
   circle.carrier.circle = true, circle.carrier.point = k.vertex, circle.carrier.radius = r;
   Vec2 x;
   double margin = 0;
-  bool on_circle = edge_hit(circle, open_el, open_radius, s * r, &open_start, false, x, margin);
+  PieceStart piece{open_start, open_from};
+  bool on_circle = edge_hit(circle, open_el, open_radius, s * r, &piece, false, x, margin);
   decide("TRC-EDGE-6", d.line, on_circle ? "circle" : "line", margin);
   if (!on_circle) {
     EdgeCurve line;
     line.bound = EdgeCurve::Bound::kSegment, line.carrier.point = rp, line.carrier.direction = k.point - rp;
-    bool found = edge_hit(line, open_el, open_radius, s * r, &open_start, false, x, margin);
+    bool found = edge_hit(line, open_el, open_radius, s * r, &piece, false, x, margin);
     decide("TRC-EDGE-5", d.line, found ? "hit" : "none", margin);
     if (!found) return raise(10751, d);
   }
   looking = false;
-  if (!close_open(x, BlockPlace::of(d))) return;
+  if (!close_open(x, BlockPlace::of(d), Placed::kOnPiece)) return;
   for (BlockCopy& k2 : skipped) skip_at(k2, x);
   skipped.clear();
   if (!on_circle) return retraction_line(d, x);
@@ -240,7 +242,7 @@ void Compensation::approach_edge(const Candidate& c) {
   looking = false;
   BlockCopy block = *c.block;
   Element element = *c.element;
-  open_element(block, element, hit, c.radius);
+  open_element(block, element, hit, c.radius, Placed::kOnPiece);
   // TRC-CD-6: with CDON the later blocks of the window are searched too.
   if (selection.cdon) approach_curve = curve, approach_until = selection.seq + md.cutcom_maxnum_check_blocks;
 }
@@ -267,7 +269,7 @@ bool Compensation::approach_further_ahead(const Block& b, const BlockCopy& m) {
     // (PATH-ELEMENT-1; campaign 20261254, case 196623: the hit was the tool's start point).
     double along = norm(hit - ab(held[i].element.start));
     if (!cut_at(static_cast<int>(i), hit, along, BlockPlace::of(m))) return true;
-    open_element(m, e, hit, radius);
+    open_element(m, e, hit, radius, Placed::kOnPiece);
     return true;
   }
   return false;
@@ -286,7 +288,7 @@ void Compensation::deselect(const Block& b) {
     if (trace.stopped()) return;
   }
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, BlockPlace::of(last), true)) return;
+  if (!close_open(end, BlockPlace::of(last), Placed::kNormal)) return;
   run_held_back(end);
   retraction_line(last, end);
 }
@@ -296,7 +298,7 @@ void Compensation::deselect(const Block& b) {
 void Compensation::deselect_in_place(const Block& b) {
   decide("TRC-DESEL-3", b.words.line, "in-place");
   Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-  if (!close_open(end, BlockPlace::of(b.words), true)) return;
+  if (!close_open(end, BlockPlace::of(b.words), Placed::kNormal)) return;
   run_held_back(end);
   retract_from = end;
   phase = Phase::kRetracting;
@@ -346,7 +348,7 @@ void Compensation::retract_around(BlockCopy& last, const Kont& k) {
     Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
     Origin corner = origin(open, OriginKind::kTransitionCircle);
     corner.next_line = last.line, corner.next_block = last.number, corner.next_insert = last.insert;
-    if (!close_open(from, BlockPlace::of(last), true)) return;
+    if (!close_open(from, BlockPlace::of(last), Placed::kNormal)) return;
     run_held_back(from);
     double hv = h(last.start);
     if (r > 0) corner_circle(last, xyz(from, hv), xyz(rp, hv), xyz(k.vertex, hv), s < 0, corner);  // TRC-G450-2
@@ -375,7 +377,7 @@ void Compensation::end_of_program() {
     sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point",
                  open.source});
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-    if (!close_open(end, BlockPlace::of(open), true)) return;
+    if (!close_open(end, BlockPlace::of(open), Placed::kNormal)) return;
     run_held_back(end);
   }
   phase = Phase::kOff;

@@ -223,7 +223,7 @@ bool Compensation::cut_at(const Block& reporting, std::optional<std::size_t> rec
     }
   } else {
     looking_ = false;
-    if (!close_open(x, reporting)) return false;
+    if (!close_open(x, reporting, Placed::kOnPiece)) return false;
   }
   for (const Block* d : skipped_) pass(d);
   for (const Block* d : dummies_) pass(d);
@@ -239,14 +239,14 @@ bool Compensation::cut_at(const Block& reporting, std::optional<std::size_t> rec
 void Compensation::continue_entry(const Block& m, const Entry& en, int entry_piece, const Point& x) {
   const Entry::Lead lead = en.lead;
   bool on_lead = lead != Entry::Lead::kNone && entry_piece == 0 && x != en.own_start;
-  if (!on_lead) return open(m, en.element, x, en.radius, x == en.normal_start);
+  if (!on_lead) return open(m, en.element, x, en.radius, Placed::kOnPiece, en.own_start);
   Decimal h = coord(m.start, comp_->axes.applicate);
   if (lead == Entry::Lead::kCircle) {
     Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
     corner.next_line = m.words.line, corner.next_block = m.words.number, corner.next_insert = m.insert;
     emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
              comp_->axes);
-    return open(m, en.element, en.normal_start, en.radius, true);
+    return open(m, en.element, en.normal_start, en.radius, Placed::kNormal);
   }
   // The rest of the predecessor's extended equidistant, at m's applicate, named after it.
   const ContourElement& p = en.before_element;

@@ -97,7 +97,7 @@ void Compensation::change_side(const Block& b) {
   }
   decide(again ? "TRC-SIDE-2" : "TRC-SIDE-1", b.words.line, again ? "selected-again" : "side-change");
   Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
-  if (!close_open(end, b, true)) return;
+  if (!close_open(end, b, Placed::kNormal)) return;
   run_held_back(end);
   ExactPoint tool = at({end, coord(b.start, comp_->axes.applicate)});
   open_.reset();
@@ -229,7 +229,7 @@ void Compensation::blend_radius(const Block& b) {
   open_blended_ = true;
 }
 
-bool Compensation::close_open(const Point& end_point, const Block& reporting, bool at_normal_end,
+bool Compensation::close_open(const Point& end_point, const Block& reporting, Placed placed,
                               const Candidate* candidate) {
   const ContourElement& e = *open_;
   CGAL::Sign sign;
@@ -240,12 +240,14 @@ bool Compensation::close_open(const Point& end_point, const Block& reporting, bo
     sign = CGAL::sign(left);                    // without the square root: a cheaper exact zero
     if (margins_kept()) margin = exact_mm(left / e.length);
   } else {
-    // Positions on the programmed circle from its start: the cut start (a signed rotation from
-    // the normal start) and the cut end (a signed rotation from the normal end, after the sweep).
+    // Positions on the programmed circle from its start: the start (open_from_, as it was placed)
+    // and the end: a corner's a signed rotation from the normal end, after the sweep; a point
+    // found on the piece the rotation from the start, in [0, 2 pi) (TRC-ARC-ELEMENT-1).
     CircleFrame f(e.a - e.centre, e.sense);
-    CirclePosition from = open_at_normal_start_ ? f.start() : f.signed_from(f.start(), open_start_ - e.centre);
+    const CirclePosition& from = open_from_;
     CirclePosition to = f.end(e.b - e.centre, e.full_circle);
-    if (!at_normal_end) to = f.signed_from(to, end_point - e.centre);
+    if (placed == Placed::kCorner) to = f.signed_from(to, end_point - e.centre);
+    if (placed == Placed::kOnPiece) to = f.forward_from(from, end_point - e.centre);
     sign = f.compare(to, from);
     if (margins_kept()) margin = f.length_text(from, to, open_radius_);
     beyond_a_turn = f.compare(to, CirclePosition{from.turns + 1, from.v}) == CGAL::POSITIVE;
@@ -327,9 +329,9 @@ void Compensation::corner(const Block& next_block) {
   if (kind == CornerKind::kTangent) {
     // Both equidistants pass through the common normal point.
     Point x = equidistant_point<Kernel>(vertex, first.end_normal(), comp_->side_radius);
-    if (!close_open(x, next_block, true)) return;
+    if (!close_open(x, next_block, Placed::kNormal)) return;
     run_held_back(x);
-    return open(next_block, next, x, next_radius, true);
+    return open(next_block, next, x, next_radius, Placed::kNormal);
   }
   std::optional<Point> x;
   if (!first.is_arc() && !next.is_arc()) {
@@ -352,7 +354,7 @@ void Compensation::corner(const Block& next_block) {
   decide("TRC-LOOK-1", next_block.words.line, too_short ? "too-short" : "reaches", reach.left_text);
   if (too_short) return start_look_ahead(next_block);
   Candidate cand{&next_block, &next, next_radius};
-  if (!close_open(*x, next_block, false, &cand)) return;
+  if (!close_open(*x, next_block, Placed::kCorner, &cand)) return;
   run_held_back(*x);
   open(next_block, next, *x, next_radius);
 }
@@ -462,7 +464,7 @@ void Compensation::look_ahead(const Block& b) {
   if (!valid) return pass_over(b);
   looking_ = false;
   Candidate candidate{&b, &cand, radius};
-  if (!close_open(*y, b, false, &candidate)) return;
+  if (!close_open(*y, b, Placed::kCorner, &candidate)) return;
   run_skipped(*y);
   open(b, cand, *y, radius);
 }
@@ -496,14 +498,14 @@ std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u
 void Compensation::transition_circle(const Block& next_block, const ContourElement& next, const FT& next_radius,
                                      const Point& vertex) {
   Point from = equidistant_point<Kernel>(vertex, open_->end_normal(), comp_->side_radius);
-  if (!close_open(from, next_block, true)) return;
+  if (!close_open(from, next_block, Placed::kNormal)) return;
   run_held_back(from);
   Point to = equidistant_point<Kernel>(vertex, next.start_normal(), comp_->side_radius);
   Decimal h = coord(next_block.start, comp_->axes.applicate);
   Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
   corner.next_line = next_block.words.line, corner.next_block = next_block.words.number;
   corner.next_insert = next_block.insert;
-  open(next_block, next, to, next_radius, true);
+  open(next_block, next, to, next_radius, Placed::kNormal);
   if (comp_->radius.sign() != 0) {  // TRC-G450-2: no circle for a zero radius
     // Around the outside of the corner: clockwise on the left, counter-clockwise on the right.
     emit_arc(next_block, at({from, h}), at({to, h}), at({vertex, h}), comp_->side_radius, comp_->s < 0, corner,
@@ -562,9 +564,19 @@ void Compensation::release_window(const Block& b) {
   held_.end_block(phase_ == Phase::kActive && b.state.collision == CollisionMode::kCdon && comp_);
 }
 
-void Compensation::open(const Block& b, const ContourElement& e, const Point& start, const FT& radius,
-                        bool at_normal_start) {
-  open_at_normal_start_ = at_normal_start;
+void Compensation::open(const Block& b, const ContourElement& e, const Point& start, const FT& radius, Placed placed,
+                        const std::optional<Point>& piece_start) {
+  open_at_normal_start_ = placed == Placed::kNormal;
+  if (e.is_arc()) {  // TRC-ARC-ELEMENT-1: where the start lies on the programmed circle
+    CircleFrame f(e.a - e.centre, e.sense);
+    open_from_ = f.start();
+    if (placed == Placed::kCorner) open_from_ = f.signed_from(f.start(), start - e.centre);
+    if (placed == Placed::kOnPiece) {
+      CirclePosition piece = piece_start ? f.signed_from(f.start(), *piece_start - e.centre) : f.start();
+      open_from_ = f.forward_from(piece, start - e.centre);
+      open_at_normal_start_ = f.compare(open_from_, f.start()) == CGAL::ZERO;
+    }
+  }
   open_blended_ = false;
   open_ = e;
   open_block_ = &b;

@@ -198,17 +198,23 @@ class Compensation {
   void blend_radius(const Block& b);
   void compensation_active(const Block& b);
 
+  // How a point of the open element was placed; a circle reads its position by it
+  // (TRC-ARC-ELEMENT-1). kNormal: built as the normal point, its rotation from it 0 by
+  // construction (no exact zero test); kCorner: a corner's point, the signed rotation in (-pi, pi]
+  // from the normal point; kOnPiece: found on the piece by a search (TRC-EDGE-5/6, TRC-CD-3..6),
+  // the rotation in [0, 2 pi) from the piece's start.
+  enum class Placed { kCorner, kNormal, kOnPiece };
+
   // TRC-ELEMENT-1 / TRC-ARC-ELEMENT-1: the open element, from its start point to `end_point`, must
-  // not run backwards; it is output unless it has length exactly 0.
-  // `at_normal_end`: the end point was built as the normal end point (no cut at the end), so its
-  // rotation from it is 0 by construction and needs no exact zero test.
+  // not run backwards; it is output unless it has length exactly 0. `placed`: how `end_point` was
+  // placed (kOnPiece: on the piece from the open element's start).
   // `candidate`: the block whose equidistant fixed this end (for TRC-EDGE-* on approach).
   struct Candidate {
     const Block* block;
     const ContourElement* element;
     FT radius;
   };
-  bool close_open(const Point& end_point, const Block& reporting, bool at_normal_end = false,
+  bool close_open(const Point& end_point, const Block& reporting, Placed placed = Placed::kCorner,
                   const Candidate* candidate = nullptr);
 
   // The carrier of an equidistant: the offset line, or the concentric circle.
@@ -256,8 +262,8 @@ class Compensation {
                        const Point& off_contour, bool approach) const {
     return ref::edge_curve(strategy, vertex, normal_point, outward, off_contour, approach, leaf(comp_->radius));
   }
-  EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius, const std::optional<Point>& from,
-                   bool last) const {
+  EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius,
+                   const std::optional<PieceStart>& from, bool last) const {
     return ref::edge_hit(curve, e, radius, comp_->side_radius, from, last);
   }
 
@@ -350,9 +356,10 @@ class Compensation {
   // the block comes; a collapsed one is passed over by the look-ahead (TRC-LOOK-1/2).
   bool equidistant_exists(const ContourElement& e, FT& radius);
 
-  // `at_normal_start`: the start point was built as the normal start point (see close_open).
+  // `placed`: how the start point was placed (see close_open); kOnPiece: on the piece that starts
+  // at `piece_start` (default: the normal start point).
   void open(const Block& b, const ContourElement& e, const Point& start, const FT& radius,
-            bool at_normal_start = false);
+            Placed placed = Placed::kCorner, const std::optional<Point>& piece_start = std::nullopt);
 
   // TRC-DESEL-1: deselection; with KONT from behind the end point TRC-KONT-* travel around it,
   // otherwise (NORM, KONT in front) TRC-RETR-NORM-1.
@@ -422,6 +429,7 @@ class Compensation {
   Point open_start_;
   FT open_radius_;  // arcs: radius of the open element's equidistant
   bool open_at_normal_start_ = false;
+  CirclePosition open_from_;  // arcs: the start point's position from the programmed start
   // Look-ahead (TRC-LOOK-*): blocks passed over, traversing blocks examined after the open element.
   bool looking_ = false;
   std::vector<const Block*> skipped_;

@@ -63,7 +63,7 @@ EdgeCurve edge_curve(EdgeStrategy strategy, const Point& vertex, const Point& no
 // chord to a circle's end) and of the curve and, with a circle, the depth of the carriers'
 // overlap; without a hit, the largest (negative) such value over the carriers' intersections.
 EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius, const FT& side_radius,
-                 const std::optional<Point>& from, bool last) {
+                 const std::optional<PieceStart>& from, bool last) {
   EdgeHit out;
   if (curve.carrier.circle && CGAL::sign(curve.carrier.radius) == CGAL::ZERO) return out;
   if (!curve.carrier.circle && CGAL::sign(curve.carrier.direction.squared_length()) == CGAL::ZERO) return out;
@@ -75,7 +75,7 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
   if (curve.carrier.circle || e.is_arc()) depth = -carrier_gap<Kernel>(ce, curve.carrier);
   std::vector<Point> xs = carrier_intersections<Kernel>(ce, curve.carrier);
   if (xs.empty() && depth) out.margin = exact_mm(*depth);
-  Point start = from ? *from : equidistant_point<Kernel>(e.a, e.start_normal(), side_radius);
+  Point start = from ? from->point : equidistant_point<Kernel>(e.a, e.start_normal(), side_radius);
   Point end = equidistant_point<Kernel>(e.b, e.end_normal(), side_radius);
   std::optional<FT> best_margin, none_margin;
   CircleFrame frame(e.a - e.centre, e.sense);  // arcs: positions from the programmed start
@@ -98,8 +98,8 @@ EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radi
       least(m, along), least(m, left);
     } else {
       // What is left of the circle after `start`, as close_open measures it: the sweep less the
-      // (signed) rotation already cut at the start; more than a turn after a G451 extension.
-      CirclePosition first = from ? frame.signed_from(frame.start(), start - e.centre) : frame.start();
+      // rotation already cut at the start; more than a turn after a G451 extension.
+      CirclePosition first = from ? from->position : frame.start();
       position = frame.forward_from(first, p - e.centre);
       on_piece = frame.compare(frame.end(e.b - e.centre, e.full_circle), *position) != CGAL::NEGATIVE;
       FT to_start = exact_root(CGAL::squared_distance(p, start)), to_end = exact_root(CGAL::squared_distance(p, end));

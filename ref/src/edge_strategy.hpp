@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "circle_position.hpp"
 #include "contour_element.hpp"
 #include "equidistant.hpp"
 
@@ -32,7 +33,13 @@ struct EdgeHit {
   std::optional<Point> point;
   std::string margin = "-inf";
 };
+// The start of the piece searched when it is not the normal start: its point and its position
+// on e's circle from the programmed start (arcs; as the open element holds it).
+struct PieceStart {
+  Point point;
+  CirclePosition position;
+};
 EdgeHit edge_hit(const EdgeCurve& curve, const ContourElement& e, const FT& radius, const FT& side_radius,
-                 const std::optional<Point>& from, bool last);
+                 const std::optional<PieceStart>& from, bool last);
 
 }  // namespace cutcom::ref

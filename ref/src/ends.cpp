@@ -34,7 +34,7 @@ void Compensation::approach(const Block& first_block) {
   // TRC-EDGE-* replace this line.
   approach_ = PendingApproach{from, to, std::move(dummies_)};
   dummies_.clear();
-  open(first_block, first, onto, radius, true);
+  open(first_block, first, onto, radius, Placed::kNormal);
   phase_ = Phase::kActive;
 }
 
@@ -101,7 +101,7 @@ void Compensation::approach_around(const Block& first_block, const ContourElemen
     if (comp_->radius.sign() != 0)                                 // TRC-G450-2
       emit_arc(first_block, at({a, h1}), at({q, h1}), at({k.vertex, h1}), comp_->side_radius, comp_->s < 0, corner,
                comp_->axes);
-    open(first_block, first, q, radius, true);
+    open(first_block, first, q, radius, Placed::kNormal);
   } else {  // TRC-KONT-4
     decide("TRC-KONT-4", selection_->words.line, "intersection");
     emit_line(*selection_, from, at({*x, h}), OriginKind::kApproach);
@@ -136,13 +136,13 @@ void Compensation::retract_edge(const Block& b) {
   decide("TRC-EDGE-1", b.words.line, g_code(b.state.edge_strategy));
   Point normal_end = equidistant_point<Kernel>(last.b, last.end_normal(), comp_->side_radius);
   EdgeCurve curve = edge_curve(b.state.edge_strategy, last.b, normal_end, last.end_dir, plane_end(b), false);
-  EdgeHit edge = edge_hit(curve, *open_, open_radius_, open_start_, false);
+  EdgeHit edge = edge_hit(curve, *open_, open_radius_, PieceStart{open_start_, open_from_}, false);
   std::optional<Point> hit = edge.point;
   decide("TRC-EDGE-5", b.words.line, hit ? "hit" : "none", edge.margin);
   if (b.state.collision == CollisionMode::kCdon && search_further_back(b, curve)) return;
   if (!hit) return raise(10751, b);
   looking_ = false;
-  if (!close_open(*hit, b)) return;
+  if (!close_open(*hit, b, Placed::kOnPiece)) return;
   run_skipped(*hit);
   retraction_line(b, *hit);
 }
@@ -170,7 +170,7 @@ void Compensation::approach_edge(const Candidate& c) {
   skipped_ = std::move(passed);
   looking_ = false;
   run_skipped(*hit);
-  open(*c.block, *c.element, *hit, c.radius);
+  open(*c.block, *c.element, *hit, c.radius, Placed::kOnPiece);
   // TRC-CD-6: with CDON the later blocks of the window are searched too.
   if (sel.state.collision == CollisionMode::kCdon)
     approach_search_ = ApproachSearch{curve, seq_of(sel) + md_.cutcom_maxnum_check_blocks};
@@ -194,7 +194,7 @@ bool Compensation::approach_further_ahead(const Block& m) {
   for (std::size_t i = 0; i < records.size(); ++i) {
     if (!records[i].element || records[i].element->origin.kind != OriginKind::kApproach) continue;
     if (!cut_at(m, i, *hit.point)) return true;
-    open(m, e, *hit.point, radius);
+    open(m, e, *hit.point, radius, Placed::kOnPiece);
     return true;
   }
   return false;
@@ -209,7 +209,7 @@ void Compensation::deselect(const Block& b) {
     if (trace_.stopped()) return;
   }
   Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
-  if (!close_open(end, b, true)) return;
+  if (!close_open(end, b, Placed::kNormal)) return;
   run_held_back(end);
   retraction_line(b, end);
 }
@@ -219,7 +219,7 @@ void Compensation::deselect(const Block& b) {
 void Compensation::deselect_in_place(const Block& b) {
   decide("TRC-DESEL-3", b.words.line, "in-place");
   Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
-  if (!close_open(end, b, true)) return;
+  if (!close_open(end, b, Placed::kNormal)) return;
   run_held_back(end);
   open_.reset();
   retract_from_ = end;
@@ -270,19 +270,19 @@ void Compensation::retract_edge_around(const Block& b, const Block& last_block, 
   Point r_point = equidistant_point<Kernel>(k.vertex, unit_left_normal(k.d2), comp_->side_radius);
   EdgeCurve circle;
   circle.carrier.circle = true, circle.carrier.point = k.vertex, circle.carrier.radius = leaf(comp_->radius);
-  EdgeHit hit = edge_hit(circle, *open_, open_radius_, open_start_, false);
+  EdgeHit hit = edge_hit(circle, *open_, open_radius_, PieceStart{open_start_, open_from_}, false);
   decide("TRC-EDGE-6", b.words.line, hit.point ? "circle" : "line", hit.margin);
   bool on_circle = hit.point.has_value();
   if (!on_circle) {
     EdgeCurve line;
     line.bound = EdgeCurve::Bound::kSegment, line.carrier.point = r_point, line.carrier.direction = k.point - r_point;
-    hit = edge_hit(line, *open_, open_radius_, open_start_, false);
+    hit = edge_hit(line, *open_, open_radius_, PieceStart{open_start_, open_from_}, false);
     decide("TRC-EDGE-5", b.words.line, hit.point ? "hit" : "none", hit.margin);
     if (!hit.point) return raise(10751, b);
   }
   const Point x = *hit.point;
   looking_ = false;
-  if (!close_open(x, b)) return;
+  if (!close_open(x, b, Placed::kOnPiece)) return;
   run_skipped(x);
   if (!on_circle) return retraction_line(b, x);
   Origin corner = origin(last_block, OriginKind::kTransitionCircle);
@@ -313,7 +313,7 @@ void Compensation::retract_around(const Block& b, const KontCorner& k) {
     Point from = equidistant_point<Kernel>(k.vertex, open_->end_normal(), comp_->side_radius);
     Origin corner = origin(*open_block_, OriginKind::kTransitionCircle);
     corner.next_line = b.words.line, corner.next_block = b.words.number, corner.next_insert = b.insert;
-    if (!close_open(from, b, true)) return;
+    if (!close_open(from, b, Placed::kNormal)) return;
     run_held_back(from);
     Decimal h = coord(b.start, comp_->axes.applicate);
     if (comp_->radius.sign() != 0)  // TRC-G450-2
@@ -343,7 +343,7 @@ void Compensation::end_of_program() {
                   "program ends with compensation active: last block ends at its normal point",
                   open_block_->words.source});
     Point end = equidistant_point<Kernel>(open_->b, open_->end_normal(), comp_->side_radius);
-    if (!close_open(end, *open_block_, true)) return;
+    if (!close_open(end, *open_block_, Placed::kNormal)) return;
     run_held_back(end);
   }
 }
