@@ -242,6 +242,29 @@ void cd_entry_at_end(ContourCase& c, std::int64_t hair) {
   c.steps = {held, before, up, on};
 }
 
+// TRC-CD-3 against a held full circle (PATH-ELEMENT-2: a circle whose start is its end turns a
+// whole turn): under CDON, a line into a circle of radius R tangent to it, with the tool outside
+// (its equidistant R + r, kept whole), a short step on, then a line back across the circle's
+// equidistant, two blocks after it: its entry crosses the held circle, and the loop between is cut
+// (mutant 60 took such a circle for a piece of no length).
+// The hair moves the circle's end by a nanometre along the line: a tiny arc or nearly a whole turn.
+void cd_crossing_a_held_full_circle(ContourCase& c, std::int64_t hair) {
+  const std::int64_t r = c.radius_um, big = r + *inRange<std::int64_t>(1, 40) * kMm / 2;
+  c.cdon = true, c.kont_select = false, c.g451_select = false;
+  c.md20240 = std::max(c.md20240, 3);
+  std::int64_t side = c.right ? -1 : 1;  // the tool on the left of +x travel is +y (G41)
+  c.start_x = c.first_x - 4 * r, c.start_y = c.first_y + side * 2 * r;
+  Step lead{}, circle{}, step{}, across{}, out{};
+  lead.dx = *inRange<std::int64_t>(1, 4) * big;
+  // Clockwise about a centre on the right for G41 (counter-clockwise on the left for G42): the
+  // tool outside, the circle tangent to the line at its start.
+  circle.arc = true, circle.ccw = c.right, circle.cj = -side * big, circle.dx = hair;
+  step.dx = *inRange<std::int64_t>(1, 16) * (big / 16);  // less than R: the line back cuts the circle
+  across.dy = -side * (2 * big + *inRange<std::int64_t>(3, 6) * r);
+  out.dx = *inRange<std::int64_t>(1, 3) * big;
+  c.steps = {lead, circle, step, across, out};
+}
+
 // TRC-CD-5 at a joint: G41 along +x by a radii (A), a right turn that moves exactly r along x (B:
 // an outer corner, its G450 circle starting at A's equidistant's end), then up by less than the
 // inner corner needs (C, too short), and G40 G462 under CDON: C's equidistant extended (on A's
@@ -401,6 +424,7 @@ rc::Gen<ContourCase> exact_situations() {
                                                 {"sar-start-on-tangent", sar_start_on_tangent},
                                                 {"cd-entry-at-end", cd_entry_at_end},
                                                 {"retraction-through-a-joint", retraction_through_a_joint},
+                                                {"cd-crossing-a-held-full-circle", cd_crossing_a_held_full_circle},
                                                 {"cr-circle-tangent", cr_circle_tangent}};
     // Uniform whatever the case's size (inRange alone favours the first entries at small sizes:
     // the last situation came up 5 times in 20,000 cases, the first 198).
