@@ -419,6 +419,7 @@ void CampaignSummary::add(const CaseRecord& r) {
   ++alarms[r.alarm];
   for (const std::string& e : r.evidence) ++evidence[e];
   if (r.verdict == "knife-edge" || r.verdict == "knife-edge-ends-differ") ++knife_edges[r.clause];
+  if (r.verdict == "knife-edge-ends-differ") ++knife_edges_ending_differently[r.clause];
   for (const auto& [clause, branches] : r.decisions)
     for (const auto& [branch, n] : branches) {
       BranchCount& b = coverage[clause][branch];
@@ -443,6 +444,7 @@ nlohmann::json CampaignSummary::to_json() const {
           {"seconds", seconds},
           {"verdicts", verdicts},
           {"knife_edges", knife_edges},
+          {"knife_edges_ending_differently", knife_edges_ending_differently},
           {"styles", styles},
           {"alarms", alarms},
           {"coverage", cov},
@@ -465,6 +467,8 @@ CampaignSummary CampaignSummary::from_json(const nlohmann::json& j) {
   s.seconds = j.at("seconds").get<double>();
   s.verdicts = j.at("verdicts").get<std::map<std::string, long>>();
   s.knife_edges = j.at("knife_edges").get<std::map<std::string, long>>();
+  if (j.contains("knife_edges_ending_differently"))  // older summaries
+    s.knife_edges_ending_differently = j.at("knife_edges_ending_differently").get<std::map<std::string, long>>();
   s.styles = j.at("styles").get<std::map<std::string, long>>();
   s.alarms = j.at("alarms").get<std::map<std::string, long>>();
   for (const auto& [clause, branches] : j.at("coverage").items())
@@ -487,6 +491,7 @@ void CampaignSummary::merge(const CampaignSummary& o) {
   cases += o.cases, seconds += o.seconds;
   for (const auto& [k, v] : o.verdicts) verdicts[k] += v;
   for (const auto& [k, v] : o.knife_edges) knife_edges[k] += v;
+  for (const auto& [k, v] : o.knife_edges_ending_differently) knife_edges_ending_differently[k] += v;
   for (const auto& [k, v] : o.styles) styles[k] += v;
   for (const auto& [k, v] : o.alarms) alarms[k] += v;
   for (const auto& [clause, branches] : o.coverage)

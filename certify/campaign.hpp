@@ -70,6 +70,7 @@ struct CampaignSummary {
   double seconds = 0;                                                  // summed over shards (CPU-bound: one core each)
   std::map<std::string, long> verdicts;                                // agree, knife-edge, not-supported, diverge
   std::map<std::string, long> knife_edges;                             // by clause
+  std::map<std::string, long> knife_edges_ending_differently;          // by clause, those of them
   std::map<std::string, long> styles;                                  // by generator
   std::map<std::string, long> alarms;                                  // by number ("none" without)
   std::map<std::string, std::map<std::string, BranchCount>> coverage;  // clause -> branch

@@ -224,8 +224,12 @@ void write_report(const CampaignSummary& s, const std::string& markdown_path, co
      << "below). *diverge* and *crash* stop a shard: each is an unexplained divergence. A decision\n"
      << "whose branch its own engine's margin contradicts under the clause's boundary rule\n"
      << "(PROP-BOUNDARY-1) is a divergence, never a knife edge.\n\n";
-  md << "### Knife edges by clause\n\n| clause | cases |\n|---|---|\n";
-  for (const auto& [c, n] : s.knife_edges) md << fmt::format("| {} | {} |\n", c, n);
+  md << "### Knife edges by clause\n\n| clause | cases | after which the runs end differently |\n|---|---|---|\n";
+  for (const auto& [c, n] : s.knife_edges) {
+    auto ending = s.knife_edges_ending_differently.find(c);
+    md << fmt::format("| {} | {} | {} |\n", c, n,
+                      ending == s.knife_edges_ending_differently.end() ? 0 : ending->second);
+  }
   md << "\n## Unexplained divergences\n\n";
   if (s.divergences.empty()) md << "None.\n";
   for (const auto& d : s.divergences) md << "- " << d << "\n";

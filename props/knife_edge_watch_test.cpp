@@ -36,5 +36,31 @@ TEST(KnifeEdgeWatch, ARiseBeyondNoiseNamesTheClause) {
                std::runtime_error);
 }
 
+// covers: PROP-KNIFE-1
+TEST(KnifeEdgeWatch, KnifeEdgesEndingDifferentlyAreWatchedOnTheirOwn) {
+  // A clause's knife edges within noise, but more of them now end with an alarm in one engine: a
+  // bug that raises an alarm at a tie (mutant 68: 11 against 3 in all, 7 against 0 ending so).
+  CampaignSummary before = summary(20000, {{"TRC-ARC-CORNER-1", 3}});
+  nlohmann::json base = knife_edge_baseline(before);
+  EXPECT_TRUE(base["ending_differently"].is_object());
+  CampaignSummary now = summary(20000, {{"TRC-ARC-CORNER-1", 11}});
+  now.knife_edges_ending_differently = {{"TRC-ARC-CORNER-1", 7}};
+  std::vector<std::string> r = knife_edge_rises(now, base);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0],
+            "TRC-ARC-CORNER-1: 7 knife edges ending differently in 20000 cases, baseline 0 in 20000 (at most 3 "
+            "allowed)");
+  now.knife_edges_ending_differently = {{"TRC-ARC-CORNER-1", 3}};
+  EXPECT_TRUE(knife_edge_rises(now, base).empty());
+  // A baseline written before this count had it is held to the knife edges alone.
+  base.erase("ending_differently");
+  now.knife_edges_ending_differently = {{"TRC-ARC-CORNER-1", 7}};
+  EXPECT_TRUE(knife_edge_rises(now, base).empty());
+  // A summary keeps the count through JSON and a merge.
+  CampaignSummary back = CampaignSummary::from_json(now.to_json());
+  back.merge(back);
+  EXPECT_EQ(back.knife_edges_ending_differently["TRC-ARC-CORNER-1"], 14);
+}
+
 }  // namespace
 }  // namespace cutcom::props
