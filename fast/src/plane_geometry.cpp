@@ -120,10 +120,18 @@ bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ah
   if (n == 0) return false;
   out = xs[0];
   if (n == 2) {
-    double d0 = norm(xs[0] - near), d1 = norm(xs[1] - near);
-    double scale = std::fabs(near.a) + std::fabs(near.b) + d0 + d1;
-    bool tie = std::fabs(d1 - d0) <= 1e-12 * scale;
-    if (tie ? dot(xs[1] - near, ahead) > dot(xs[0] - near, ahead) : d1 < d0) out = xs[1];
+    // Which is nearer, by (d1^2 - d0^2) / 2 = (x1 - x0).(m - near), m the chord's midpoint: no
+    // difference of two rounded distances, which near-touching carriers leave a rounding apart
+    // (seed 20261276, case 342258: distances 1.3e-13 mm apart, within the old relative tie band,
+    // so the other point was taken). The points' error lies along the chord (intersection_error).
+    Vec2 chord = xs[1] - xs[0], mid = 0.5 * (xs[0] + xs[1]);
+    double k = dot(chord, mid - near);
+    double eps = std::numeric_limits<double>::epsilon();
+    double band =
+        norm(chord) * (2 * intersection_error(u, v, xs[0]) +
+                       64 * eps * (std::fabs(mid.a) + std::fabs(mid.b) + std::fabs(near.a) + std::fabs(near.b)));
+    bool tie = std::fabs(k) <= band;  // equally near within rounding: the one further along `ahead`
+    if (tie ? dot(xs[1] - near, ahead) > dot(xs[0] - near, ahead) : k < 0) out = xs[1];
   }
   return true;
 }
