@@ -7,11 +7,14 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "../core/src/word_lexer.hpp"
 #include "cutcom/input_error.hpp"
+#include "cutcom/interpreter.hpp"
+#include "cutcom/reader.hpp"
 
 namespace {
 
@@ -141,6 +144,55 @@ TEST(PlainBlock, EveryLineOfTheRepositorysProgramsReadsAlike) {
     }
   }
   EXPECT_GT(lines, 1000);
+}
+
+// The interpreter reads a plain line into the block's words itself (Interpreter::next with
+// words): the same words as the lexer reading the text the interpreter gives without them, in a
+// loop's passes (lines from the line cache), after a macro and beside skipped blocks.
+// covers: NC-LEX-1 NC-PARAM-SUB-7 NC-WORD-2
+TEST(PlainBlock, TheInterpreterReadsPlainLinesAsTheLexerDoes) {
+  std::mt19937_64 random(20261202);
+  std::string body = "FAST X1 Y2\n/G1 X5\n/1 G1 X6\nX=R1 Y2\n";  // a macro, skip levels, a parameter
+  int lines = 4;
+  for (int k = 0; k < 300; ++k) {  // plain lines of the generator's kind, and now and then others
+    std::string line = pick(random, {"G1 X", "g2 x", "N5 G0 Y", "X", "G01X", "Z+"}) + value(random);
+    BlockWords probe;
+    probe.reset(1);
+    if (!cutcom::lexer::read_plain_block(line, probe)) continue;
+    body += line + pick(random, {"\n", "\n", " ; note\n", "\r\n"});
+    ++lines;
+    if (k % 17 == 0)
+      body += pick(random, {"R2=R1*2\n", "X=R1 Y2\n", "FAST X1 Y2\n", "/G1 X5\n", "/1 G1 X6\n"}), ++lines;
+  }
+  std::string program = "DEFINE FAST AS G0\nR1=0\nWHILE R1<2\n" + body + "R1=R1+1\nENDWHILE\nM30\n";
+  std::istringstream a_in(program), b_in(program);
+  cutcom::Interpreter a(a_in), b(b_in);
+  a.set_skip_levels(1u << 0), b.set_skip_levels(1u << 0);  // "/" skipped, "/1" not
+  std::vector<std::string> cycles;
+  std::string a_text, b_text;
+  int a_line = 0, b_line = 0;
+  long plain = 0, blocks = 0;
+  BlockWords words;
+  while (true) {
+    bool a_read = a.next(a_text, a_line, &words), b_read = b.next(b_text, b_line);
+    ASSERT_EQ(a_read, b_read);
+    if (!a_read) break;
+    ++blocks;
+    ASSERT_EQ(a_line, b_line);
+    if (!words.plain) {
+      ASSERT_EQ(a_text, b_text) << "line " << b_line;
+      continue;
+    }
+    ++plain;
+    BlockWords lexed;
+    cutcom::parse_block_words(b_text, b_line, lexed, cycles);
+    ASSERT_TRUE(lexed.plain) << b_text;
+    ASSERT_TRUE(static_cast<const cutcom::BlockWordFields&>(words) ==
+                static_cast<const cutcom::BlockWordFields&>(lexed))
+        << "line " << b_line << ": " << b_text;
+  }
+  EXPECT_GT(plain, lines);       // in both passes of the loop (the second from the line cache)
+  EXPECT_GE(blocks - plain, 2);  // and X=R1 given as text in each
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "interpreter_text.hpp"
 #include "nc_expression.hpp"
 #include "nc_vocabulary.hpp"
+#include "word_lexer.hpp"
 
 namespace cutcom {
 
@@ -32,6 +33,14 @@ Interpreter::Interpreter(std::istream& in, SystemValues* system, InterpreterLimi
 void LineRecordDeleter::operator()(LineRecord* r) const { delete r; }
 
 bool Interpreter::getline(std::string& text) {
+  std::string_view line;
+  bool read = getline(line);
+  if (line.data()) text.assign(line);  // a line was read (and perhaps given back)
+  return read;
+}
+
+bool Interpreter::getline(std::string_view& text) {
+  text = {};
   Context& c = cx();
   last_cached_ = nullptr;
   c.line_start = c.offset;
@@ -65,11 +74,12 @@ bool Interpreter::getline(std::string& text) {
   c.stream_at = c.offset;
   ++c.line;
   // NC-LEX-1: a file saved with a UTF-8 byte order mark (Windows editors) starts after it.
-  if (c.line_start == 0 && text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  if (c.line_start == 0 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   if (unit_ends(c, text)) return false;
   if ((control_flow_ || stack_.size() > 1) && cached_bytes_ + text.size() <= limits_.line_cache_bytes) {
     cached_bytes_ += text.size() + sizeof(CachedLine) + 32;  // with the table's own cost
-    last_cached_ = &c.cache->lines.emplace(c.line_start, CachedLine{text, c.offset, nullptr}).first->second;
+    last_cached_ =
+        &c.cache->lines.emplace(c.line_start, CachedLine{std::string(text), c.offset, nullptr}).first->second;
   }
   return true;
 }
@@ -88,7 +98,7 @@ std::string_view unit_header(std::string_view text) {
 
 // NC-PARAM-SUB-8: the header of another unit ends the text of the one being read (the line is
 // given back); the unit's own header, before its first block, does not.
-bool Interpreter::unit_ends(Context& c, const std::string& text) const {
+bool Interpreter::unit_ends(Context& c, std::string_view text) const {
   if (!c.begun) {
     std::size_t k = text.find_first_not_of(" \t\r");
     if (k == std::string::npos || text[k] == ';') return false;
@@ -206,7 +216,8 @@ bool Interpreter::skipped(const std::string& s) {
   return true;
 }
 
-bool Interpreter::next(std::string& text, int& line) {
+bool Interpreter::next(std::string& text, int& line, BlockWords* plain) {
+  if (plain) plain->plain = false;
   while (true) {
     if (pending_next_ < pending_.size()) {  // NC-PARAM-FRAME-1: the blocks of a frame assignment
       text = pending_[pending_next_++];
@@ -225,10 +236,16 @@ bool Interpreter::next(std::string& text, int& line) {
         end_section_pass();
         continue;
       }
-      bool read = getline(raw_);
+      std::string_view view;  // the line where it lies (the file's buffer, the line cache)
+      bool read = getline(view);
       current_cached_ = last_cached_;
-      if (read && !macros_.empty()) expand_macros(raw_);
-      if (read && skip_levels_ != 0 && skipped(raw_)) continue;
+      bool copied = false;  // the line is in raw_
+      if (read && (!macros_.empty() || skip_levels_ != 0)) {
+        raw_.assign(view), copied = true;
+        if (!macros_.empty()) expand_macros(raw_);
+        if (skip_levels_ != 0 && skipped(raw_)) continue;
+        view = raw_;
+      }
       if (!read) {
         if (!cx().frames.empty())
           throw InputError(cx().line, 1, "the program ends inside a loop (WHILE, FOR, LOOP or REPEAT without its end)");
@@ -244,6 +261,15 @@ bool Interpreter::next(std::string& text, int& line) {
         line = stack_.size() == 1 ? cx().line : stack_.front().line;
         return true;
       }
+      if (stack_.size() == 1 && plain) {
+        plain->reset(cx().line);
+        if (lexer::read_plain_block(view, *plain)) {  // no name, '=' or ':': not parametric
+          plain->plain = true;
+          line = cx().line;
+          return true;
+        }
+      }
+      if (!copied) raw_.assign(view);
       if (stack_.size() == 1 && !maybe_parametric(raw_)) {
         text.swap(raw_);
         line = cx().line;

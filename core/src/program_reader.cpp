@@ -59,7 +59,7 @@ bool ProgramReader::next(Block& out) {
 }
 
 bool ProgramReader::read_block(Block& out) {
-  while (!ended_ && interpreter_.next(text_, line_)) {
+  while (!ended_ && interpreter_.next(text_, line_, &out.words)) {
     if (!interpreter_.in_subprogram()) {
       if (take_block(out, line_)) return true;
       continue;
@@ -81,7 +81,7 @@ bool ProgramReader::read_block(Block& out) {
 }
 
 bool ProgramReader::take_block(Block& out, int line) {
-  parse_block_words(text_, line, out.words, machine_cycles_);
+  if (!out.words.plain) parse_block_words(text_, line, out.words, machine_cycles_);  // else read by next()
   const BlockWords& w = out.words;
   if (w.word_count == 0) return false;  // blank, comment-only, header or label-only line
   if (end_line_ != 0 && interpreter_.uses_control_flow()) {

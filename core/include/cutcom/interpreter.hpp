@@ -22,6 +22,7 @@
 namespace cutcom {
 
 class InterpreterLookup;
+struct BlockWords;
 struct LineRecord;  // interpreter_record.hpp
 struct LineRecordDeleter {
   void operator()(LineRecord* r) const;
@@ -93,7 +94,12 @@ class Interpreter {
 
   // The next block's text for the reader and its line in the file; false at the end of the
   // text. Throws InputError naming the line and column.
-  bool next(std::string& text, int& line);
+  // With `plain`, a line of the main program that read_plain_block reads whole (N, G0…G3, X Y Z,
+  // I J K, F with plain decimals) is read into it at once, as parse_block_words would read it,
+  // and `plain->plain` tells so (`text` is then left as it was: the words are the line); such a
+  // line holds no name, '=' or ':', so it has nothing for the interpreter to do and is not
+  // scanned for it, nor copied (issue "Performance": one pass over the line).
+  bool next(std::string& text, int& line, BlockWords* plain = nullptr);
 
   void set_limits(InterpreterLimits limits) { limits_ = limits; }
   // NC-WORD-2: the skip levels the operator has switched on, bit n for `/n` (`/` is `/0`).
@@ -157,6 +163,8 @@ class Interpreter {
   };
 
   bool getline(std::string& text);
+  // The same without a copy: `text` holds until the next line is read.
+  bool getline(std::string_view& text);
   // Sets where the next line is read; the stream itself is moved only when a line must be read
   // from it (a loop's body is read again from the line cache).
   void seek(std::streamoff to, int line);
@@ -294,7 +302,7 @@ class Interpreter {
   // NC-PARAM-SUB-8: the units after the first in the main program's text, by name; read once, when
   // a subprogram is first looked for.
   void scan_units() const;
-  bool unit_ends(Context& c, const std::string& text) const;
+  bool unit_ends(Context& c, std::string_view text) const;
   mutable std::map<std::string, SubprogramText> units_;
   mutable std::map<std::string, int> duplicate_units_;  // a name's second header: its line
   mutable bool units_scanned_ = false;

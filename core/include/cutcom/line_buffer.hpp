@@ -8,6 +8,7 @@
 #include <cstring>
 #include <istream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cutcom {
@@ -19,19 +20,26 @@ class LineBuffer {
 
   // The next line, as std::getline(in, text) would give it; false at the end of the stream.
   bool next(std::istream& in, std::string& text) {
+    std::string_view line;
+    if (!next(in, line)) return false;
+    text.assign(line);
+    return true;
+  }
+  // The same without a copy: `line` points into the buffer and holds until the next call.
+  bool next(std::istream& in, std::string_view& line) {
     std::size_t searched = begin_;  // what holds no '\n' is not searched again
     while (true) {
       const char* data = data_.data();  // null before the first read: nothing to search then
       const void* newline = end_ > searched ? std::memchr(data + searched, '\n', end_ - searched) : nullptr;
       if (newline) {
         auto at = static_cast<std::size_t>(static_cast<const char*>(newline) - data);
-        text.assign(data + begin_, at - begin_);
+        line = std::string_view(data + begin_, at - begin_);
         begin_ = at + 1;
         return true;
       }
       if (at_end_) {
         if (begin_ == end_) return false;
-        text.assign(data + begin_, end_ - begin_);
+        line = std::string_view(data + begin_, end_ - begin_);
         begin_ = end_;
         return true;
       }
