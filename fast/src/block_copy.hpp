@@ -116,14 +116,29 @@ struct BlockCopy : BlockFacts {
 
 inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
-// Plane <-> workpiece coordinates in a given plane (the compensation's, or a SAR block's).
-inline Vec2 ab_in(const PathPoint& p, PlaneAxes a) { return {pick(p, a.abscissa), pick(p, a.ordinate)}; }
-inline double h_in(const PathPoint& p, PlaneAxes a) { return pick(p, a.applicate); }
+// Plane <-> workpiece coordinates in a given plane (the compensation's, or a SAR block's). The
+// axes are plane_axes' of G17, G18 or G19 (the only ones made), which the abscissa tells apart:
+// one branch, predicted, instead of an axis look-up per coordinate (every point of every block).
+inline Vec2 ab_in(const PathPoint& p, PlaneAxes a) {
+  switch (a.abscissa) {
+    case 0:
+      return {p.x, p.y};  // G17
+    case 2:
+      return {p.z, p.x};  // G18
+    default:
+      return {p.y, p.z};  // G19
+  }
+}
+inline double h_in(const PathPoint& p, PlaneAxes a) { return a.abscissa == 0 ? p.z : a.abscissa == 2 ? p.y : p.x; }
 inline PathPoint xyz_in(Vec2 v, double applicate, PlaneAxes a) {
-  PathPoint p;
-  double* c[3] = {&p.x, &p.y, &p.z};
-  *c[a.abscissa] = v.a, *c[a.ordinate] = v.b, *c[a.applicate] = applicate;
-  return p;
+  switch (a.abscissa) {
+    case 0:
+      return {v.a, v.b, applicate};
+    case 2:
+      return {v.b, applicate, v.a};
+    default:
+      return {applicate, v.a, v.b};
+  }
 }
 // Integer displacements below 2^62 units: products of two and sums of two such stay in 128 bits.
 inline bool in_exact_range(Int128 v) {
