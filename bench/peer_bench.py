@@ -202,6 +202,18 @@ def timed(cmd):
     return time.perf_counter() - t
 
 
+def stage_times(cmd, runs):
+    """Medians over `runs` runs of each stage thread's processor time and of the elapsed time
+    (`cutcom run --stage-times`, on standard error): which stage sets the pace."""
+    seen = {}
+    for _ in range(runs):
+        err = subprocess.run([*cmd, "--stage-times"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                             check=True).stderr
+        for name, seconds in re.findall(r"(reader|engine|writer|elapsed) (\d+\.\d+) s", err):
+            seen.setdefault(name, []).append(float(seconds))
+    return {name: statistics.median(v) for name, v in seen.items()}
+
+
 def peak_kb(cmd):
     """Peak resident memory of a whole process (kB) by GNU time (Debian package `time`); None
     without it. (This script's own memory would count in a child it forks itself.)"""
@@ -307,12 +319,16 @@ def main():
                 "ratio_quartiles": quartiles([p / t for p, t in zip(t_peer, t_text)]) if t_peer else None,
                 "peak_kb": peak_kb(text_cmd),
                 "agree": agree,
+                "stages": stage_times(text_cmd, a.runs),
+                "stages_json": stage_times(json_cmd, a.runs),
             }
             rows.append(row)
             ratio = (f"{row['ratio']:.1f}x (middle half {row['ratio_quartiles'][0]:.1f}–{row['ratio_quartiles'][1]:.1f}; "
                      f"JSON {row['ratio_json']:.1f}x)" if row["rs274"] else "-")
             print(f"{label:26} {blocks:>8} blocks  cutcom {row['cutcom']:.3f} s (json {row['json']:.3f} s, "
                   f"{mb(row['peak_kb'])})  rs274 {row['rs274'] or 0:.3f} s  {ratio}  paths agree: {agree}")
+            print(f"{'':26} processor time by stage (text): " +
+                  ", ".join(f"{k} {v:.3f} s" for k, v in row["stages"].items()))
     memory = []
     for n in [int(v) for v in a.memory_blocks.split(",") if v]:
         spf = os.path.join(tmp, f"memory_{n}.mpf")
@@ -476,6 +492,18 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
         lines.append(f"| {r['label']} | {r['blocks']} | {r['cutcom']:.3f} | {r['json']:.3f} | {peer} | {ratio} | "
                      f"{ratio_json} | {mb(r['peak_kb'])} | {r['agree']} |")
     lines += ["", "![whole-process times](performance-peer.svg)", "",
+              "## Where the time goes", "",
+              "The processor time of each stage's thread (`cutcom run --stage-times`, medians of "
+              f"{a.runs} runs; text, then JSON). The stages overlap: a run lasts about as long as its "
+              "slowest thread (on two cores the other two share the other core).", "",
+              "| contour | reader (s) | engine (s) | writer (s) | elapsed (s) | JSON: reader | engine | writer "
+              "| elapsed | slowest |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        st, sj = r["stages"], r["stages_json"]
+        cells = [f"{d.get(k, 0):.3f}" for d in (st, sj) for k in ("reader", "engine", "writer", "elapsed")]
+        slowest = max(("reader", "engine", "writer"), key=lambda k: st.get(k, 0))
+        lines.append(f"| {r['label']} | " + " | ".join(cells) + f" | {slowest} |")
+    lines += ["",
               "## Memory", "",
               "cutcom's fast engine streams: its peak memory does not grow with the program "
               "(`cutcom run`, lines+arcs with CDON). The SVG picture keeps every element up to "

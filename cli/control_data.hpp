@@ -27,6 +27,7 @@ struct RunOptions {
   std::vector<std::string> tool_files;
   std::string offsets_file;
   bool trace = false;
+  bool stage_times = false;  // --stage-times: each thread's processor time on standard error
   std::int64_t max_loops = cutcom::InterpreterLimits{}.max_backward_jumps;
   std::vector<std::string> search_path;
   std::vector<std::string> tool_edges;  // TOOL-FILE-2

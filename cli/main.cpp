@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
                   "a system variable the program reads that cutcom does not model, $NAME[index]=VALUE (a number or "
                   "\"text\"), e.g. --sysvar '$A_IN[1]=1' (repeatable)");
   run->add_flag("--trace", o.trace, "include the decision trace (text and json)");
+  run->add_flag("--stage-times", o.stage_times,
+                "print on standard error the processor time of each stage's thread (reader, engine, writer) and "
+                "the run's elapsed time");
   run->add_option("--tools", o.tool_files,
                   "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");
   run->add_option("--tool", o.tool_edges,

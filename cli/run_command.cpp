@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include "commands.hpp"
 #include "cutcom/background_sink.hpp"
@@ -17,6 +19,7 @@
 #include "cutcom/output.hpp"
 #include "cutcom/read_ahead.hpp"
 #include "cutcom/ref/engine.hpp"
+#include "cutcom/thread_time.hpp"
 
 namespace cutcom::cli {
 
@@ -52,13 +55,27 @@ void hint_after(const std::vector<int>& alarms, const RunOptions& o) {
            "the program\n";
 }
 
+// --stage-times: the processor time of each stage's thread (negative: not measured).
+struct StageTimes {
+  double reader = -1, engine = -1, writer = -1;
+};
+
 // The reader runs ahead on a thread of its own (ReadAhead), the engine on this one.
 bool run_engine(const std::string& engine, cutcom::BlockSource& blocks, const cutcom::MachineData& md,
-                cutcom::PathSink& out, const RunOptions& o) {
+                cutcom::PathSink& out, const RunOptions& o, StageTimes& times) {
   AlarmWatch sink(out);
+  double started = cutcom::thread_cpu_seconds();
   bool ok = engine == "ref" ? cutcom::ref::run(blocks, md, sink) : cutcom::fast::run(blocks, md, sink);
+  times.engine = cutcom::thread_cpu_seconds() - started;
   hint_after(sink.numbers, o);
   return ok;
+}
+
+void print_stage_times(const StageTimes& t, double elapsed) {
+  std::string line = "cutcom: processor time by stage:";
+  for (auto [name, seconds] : {std::pair{"reader", t.reader}, {"engine", t.engine}, {"writer", t.writer}})
+    if (seconds >= 0) line += fmt::format(" {} {:.3f} s,", name, seconds);
+  std::cerr << line << fmt::format(" elapsed {:.3f} s\n", elapsed);
 }
 
 // The output file is written beside its place and renamed when the run is done, so that a
@@ -129,18 +146,22 @@ bool run_to_the_end(Writer& writer, cutcom::BackgroundSink& background, Run run,
 // The text and JSON writers: formatted on a second thread while the engine runs.
 template <class Writer>
 bool run_writing(Writer& writer, cutcom::ProgramReader& reader, const cutcom::MachineData& md, const RunOptions& o,
-                 std::ostream& out) {
+                 std::ostream& out, StageTimes& times) {
   cutcom::ReadAhead blocks(reader);
   cutcom::BackgroundSink background(writer, o.trace);
   background.set_upstream_sources([&blocks](std::uint32_t id) -> const std::string& { return blocks.source_text(id); });
   writer.set_sources(background.sources());
-  return run_to_the_end(
-      writer, background, [&] { return run_engine(o.engine, blocks, md, background, o); }, o, out);
+  bool ok = run_to_the_end(
+      writer, background, [&] { return run_engine(o.engine, blocks, md, background, o, times); }, o, out);
+  times.reader = blocks.reader_cpu_seconds(), times.writer = background.writer_cpu_seconds();
+  return ok;
 }
 
 }  // namespace
 
 int run_command(const RunOptions& o) {
+  auto started = std::chrono::steady_clock::now();
+  StageTimes times;
   cutcom::MachineData md = machine_data(o);
   ControlData control = control_data(o);
 
@@ -204,7 +225,8 @@ int run_command(const RunOptions& o) {
     cutcom::ProgramReader reader(second, md.initial_state());
     control.into(reader);
     cutcom::ReadAhead blocks(reader);
-    ok = run_engine(o.engine, blocks, md, picture, o);
+    ok = run_engine(o.engine, blocks, md, picture, o, times);
+    times.reader = blocks.reader_cpu_seconds();
     std::string title = fmt::format("cutcom — {} — engine {}", o.program == "-" ? "stdin" : o.program, o.engine);
     picture.write(*out, title);
     for (const auto& a : picture.alarms()) std::cerr << fmt::format("ALARM {} {}\n", a.number, a.text);
@@ -212,16 +234,18 @@ int run_command(const RunOptions& o) {
     cutcom::JsonWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
-    ok = run_writing(writer, reader, md, o, *out);
+    ok = run_writing(writer, reader, md, o, *out, times);
   } else {
     cutcom::TextWriter writer(*out, o.engine, o.trace);
     cutcom::ProgramReader reader(*in, md.initial_state());
     control.into(reader);
-    ok = run_writing(writer, reader, md, o, *out);
+    ok = run_writing(writer, reader, md, o, *out, times);
   }
   out->flush();
   if (in->bad()) throw std::runtime_error("read error on the program");
   if (out_file) out_file->commit();
+  if (o.stage_times)
+    print_stage_times(times, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   return ok ? kDone : kAlarm;
 }
 

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
+#include <vector>
 
 #include "cli_shell.hpp"
 
@@ -38,6 +40,28 @@ TEST(Cli, JsonOfTheExampleHasTheDocumentedShape) {
     EXPECT_TRUE(saw_arc);
     EXPECT_TRUE(j["alarms"].empty());
   }
+}
+
+// --stage-times: each stage's processor time on standard error, the output as without it.
+// covers: CLI-1
+TEST(Cli, StageTimesGoToStandardErrorAndLeaveTheOutputAlone) {
+  const std::regex stage(R"((reader|engine|writer) (\d+\.\d{3}) s,)");
+  for (const char* format : {"text", "json", "svg"}) {
+    std::string run = kCli + " run " + kExample + " --format " + format;
+    Result plain = sh(run), timed = sh(run + " --stage-times");
+    ASSERT_EQ(timed.status, 0) << format;
+    EXPECT_EQ(timed.out, plain.out) << format;
+    std::string err = sh_err(run + " --stage-times").out;
+    std::vector<std::string> stages;
+    for (auto m = std::sregex_iterator(err.begin(), err.end(), stage); m != std::sregex_iterator(); ++m)
+      stages.push_back((*m)[1]);
+    // The picture is drawn on the engine's thread: no writer's of its own.
+    std::vector<std::string> expected = {"reader", "engine", "writer"};
+    if (std::string(format) == "svg") expected.pop_back();
+    EXPECT_EQ(stages, expected) << err;
+    EXPECT_NE(err.find("elapsed"), std::string::npos) << err;
+  }
+  EXPECT_EQ(sh_err(kCli + " run " + kExample).out, "");  // nothing without the flag
 }
 
 // covers: CLI-1 ALARM-1

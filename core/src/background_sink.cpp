@@ -4,6 +4,8 @@
 
 #include <utility>
 
+#include "cutcom/thread_time.hpp"
+
 namespace cutcom {
 
 BackgroundSink::BackgroundSink(PathSink& target, bool decisions) : target_(target), decisions_(decisions) {
@@ -11,6 +13,7 @@ BackgroundSink::BackgroundSink(PathSink& target, bool decisions) : target_(targe
   writer_ = std::thread([this] {
     pthread_setname_np(pthread_self(), "cutcom-writer");  // profiles tell the threads apart
     write();
+    writer_seconds_ = thread_cpu_seconds();
   });
 }
 

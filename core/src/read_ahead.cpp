@@ -6,17 +6,26 @@
 #include <stdexcept>
 #include <utility>
 
+#include "cutcom/thread_time.hpp"
+
 namespace cutcom {
 
 ReadAhead::ReadAhead(ProgramReader& reader) : reader_(reader) {}
 
-ReadAhead::~ReadAhead() {
+ReadAhead::~ReadAhead() { stop(); }
+
+void ReadAhead::stop() {
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
     changed_.notify_all();
   }
   if (thread_.joinable()) thread_.join();
+}
+
+double ReadAhead::reader_cpu_seconds() {
+  stop();
+  return reader_seconds_;  // written by the thread before it ended (join orders it)
 }
 
 // Reads up to a batch of blocks; stops after a SAR block, at the end and at the reader's error.
@@ -76,6 +85,7 @@ const Block* ReadAhead::next_block() {
     thread_ = std::thread([this] {
       pthread_setname_np(pthread_self(), "cutcom-reader");  // profiles tell the threads apart
       read();
+      reader_seconds_ = thread_cpu_seconds();
     });
   }
   if (at_ < current_.count) return &current_.blocks[at_++];

@@ -39,6 +39,8 @@ class BackgroundSink : public PathSink {
 
   // Everything handed over is written when it returns; an exception of the target is rethrown.
   void finish();
+  // The processor time the writer's thread used (cutcom run --stage-times), once finish() returned.
+  double writer_cpu_seconds() const { return writer_seconds_; }
 
  private:
   // A decision's clause and branch are views an engine may build for the call: copied.
@@ -68,6 +70,7 @@ class BackgroundSink : public PathSink {
   std::mutex names_mutex_;
   std::deque<std::string> names_{""};  // copies of upstream's names (0: none); references stay valid
   std::uint32_t copied_ = 1;
+  double writer_seconds_ = 0;  // written by the writer's thread as it ends (the join orders it)
   std::thread writer_;
 };
 

@@ -37,10 +37,13 @@ class ReadAhead final : public BlockSource {
   // NC-PARAM-SUB-3: where a block handed out stands ("INNER.SPF line 4, …"): the reader's
   // names, copied with the blocks, read on the engine's thread.
   const std::string& source_text(std::uint32_t id) const { return names_[id < names_.size() ? id : 0]; }
+  // The processor time the reader's thread used (cutcom run --stage-times); stops the reader
+  // where it is, so only once the engine is done.
+  double reader_cpu_seconds();
 
  private:
-  static constexpr std::size_t kBatch = 256; // blocks handed over at once
-  static constexpr std::size_t kQueued = 3;  // batches read ahead at most: the memory bound
+  static constexpr std::size_t kBatch = 256;  // blocks handed over at once
+  static constexpr std::size_t kQueued = 3;   // batches read ahead at most: the memory bound
   struct Batch {
     std::vector<Block> blocks;  // kBatch of them once used; reused, so their text keeps its room
     std::size_t count = 0;
@@ -52,6 +55,7 @@ class ReadAhead final : public BlockSource {
 
   void read();  // the second thread
   void fill(Batch& batch);
+  void stop();  // the reader stops where it is; its thread has ended when this returns
 
   ProgramReader& reader_;
   std::thread thread_;
@@ -59,6 +63,7 @@ class ReadAhead final : public BlockSource {
   std::condition_variable changed_;
   std::deque<Batch> full_, empty_;
   bool stopping_ = false, resume_ = false;
+  double reader_seconds_ = 0;       // the reader thread's processor time, written as it ends
   std::optional<Point3> position_;  // SAR-END-3, for the reader when it resumes
   std::uint32_t names_copied_ = 1;  // on the reader's thread
   // The engine's side.
