@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/output.hpp"
@@ -60,6 +62,28 @@ TEST(ReadAhead, GivesTheEngineTheReadersBlocksInOrder) {
   EXPECT_GT(count, 2000);
   EXPECT_EQ(ahead.source_text(in_side), alone.source_text(in_side));
   EXPECT_NE(ahead.source_text(in_side).find("_N_SIDE_SPF"), std::string::npos) << ahead.source_text(in_side);
+}
+
+// An engine slower than the reader now and then: the reader fills its queue, sleeps, and is woken
+// again when half of it is taken (the blocks keep their order; a lost wake-up would hang here).
+// covers: NC-PARAM-SUB-3
+TEST(ReadAhead, AReaderWithAFullQueueIsWokenAgain) {
+  std::string text = long_program(3000);  // 15,000 blocks: 58 batches, the queue full many times
+  std::istringstream a(text), b(text);
+  ProgramReader alone(a), ahead_of(b);
+  ReadAhead ahead(ahead_of);
+  Block want;
+  int count = 0;
+  while (alone.next(want)) {
+    if (count % 1500 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));  // the reader runs ahead
+    const Block* got = ahead.next_block();
+    ASSERT_NE(got, nullptr) << count;
+    ASSERT_EQ(got->words.line, want.words.line) << count;
+    ASSERT_EQ(got->end, want.end) << count;
+    ++count;
+  }
+  EXPECT_EQ(ahead.next_block(), nullptr);
+  EXPECT_GT(count, 15000);
 }
 
 // covers: NC-ERR-2

@@ -65,7 +65,10 @@ void ReadAhead::read() {
     fill(batch);
     bool stops = batch.stops, last = batch.last;
     std::unique_lock lock(mutex_);
-    changed_.wait(lock, [this] { return full_.size() < kQueued || stopping_; });
+    // Full: the reader sleeps until the engine has taken half of the queue, not one batch; each
+    // wake-up costs the engine a system call and the reader a latency (on a virtual machine up to
+    // hundreds of microseconds), and a reader that wakes late leaves the engine waiting.
+    if (full_.size() >= kQueued) changed_.wait(lock, [this] { return full_.size() <= kLowWater || stopping_; });
     if (stopping_) return;
     full_.push_back(std::move(batch));
     changed_.notify_all();
@@ -97,13 +100,13 @@ const Block* ReadAhead::next_block() {
   if (current_.stops) {  // the engine has taken the SAR block: the reader goes on
     resume_ = true;
     current_.stops = false;
+    changed_.notify_all();
   }
   if (!current_.blocks.empty()) empty_.push_back(std::move(current_));  // its blocks are reused
-  changed_.notify_all();
   changed_.wait(lock, [this] { return !full_.empty(); });
   current_ = std::move(full_.front());
   full_.pop_front();
-  changed_.notify_all();
+  if (full_.size() == kLowWater) changed_.notify_all();  // a reader waiting for room goes on
   lock.unlock();
   for (std::string& name : current_.names) names_.push_back(std::move(name));
   at_ = 0;

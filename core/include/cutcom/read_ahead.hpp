@@ -42,8 +42,9 @@ class ReadAhead final : public BlockSource {
   double reader_cpu_seconds();
 
  private:
-  static constexpr std::size_t kBatch = 256;  // blocks handed over at once
-  static constexpr std::size_t kQueued = 3;   // batches read ahead at most: the memory bound
+  static constexpr std::size_t kBatch = 256;             // blocks handed over at once
+  static constexpr std::size_t kQueued = 8;              // batches read ahead at most: the memory bound (5.6 MB)
+  static constexpr std::size_t kLowWater = kQueued / 2;  // a full queue wakes the reader again here
   struct Batch {
     std::vector<Block> blocks;  // kBatch of them once used; reused, so their text keeps its room
     std::size_t count = 0;
