@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 
+#include <type_traits>
 #include <utility>
 
 #include "cutcom/thread_time.hpp"
@@ -22,6 +23,12 @@ BackgroundSink::~BackgroundSink() {
     finish();
   } catch (...) {  // a destructor must not throw
   }
+}
+
+template <class T>
+void BackgroundSink::push(T&& e) {
+  filling_.emplace_back(std::in_place_type<std::decay_t<T>>, std::forward<T>(e));  // built in place: one copy
+  if (filling_.size() >= kBatch) hand_over();
 }
 
 void BackgroundSink::element(const PathElement& e) {
@@ -53,11 +60,6 @@ SourceNames BackgroundSink::sources() {
     std::lock_guard lock(names_mutex_);
     return names_[id < names_.size() ? id : 0];
   };
-}
-
-void BackgroundSink::push(Event&& e) {
-  filling_.push_back(std::move(e));
-  if (filling_.size() >= kBatch) hand_over();
 }
 
 void BackgroundSink::hand_over() {

@@ -53,7 +53,8 @@ class BackgroundSink : public PathSink {
   static constexpr std::size_t kBatch = 4096;
   static constexpr std::size_t kQueued = 2;  // batches waiting at most: the memory bound
 
-  void push(Event&& e);
+  template <class T>
+  void push(T&& e);  // one event, of the variant's type T
   void copy_sources(std::uint32_t up_to);
   void hand_over();
   void write();  // the second thread
