@@ -99,6 +99,7 @@ void Compensation::select(const Block& b) {
 }
 
 bool Compensation::still_compensable(const Block& b) {
+  radius_changes_here = false;
   if (b.state.side == Side::kOff) {
     if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
       raise(10754, b.words);
@@ -110,8 +111,8 @@ bool Compensation::still_compensable(const Block& b) {
     raise(10757, b.words);
     return false;
   }
-  if (anew(b)) return true;                // TRC-SIDE-1/2, handled by the caller
-  reject_change_while_active(b, edge, s);  // TRC-UNSUP-1, TRC-RADIUS-3
+  if (anew(b)) return true;                                      // TRC-SIDE-1/2, handled by the caller
+  radius_changes_here = reject_change_while_active(b, edge, s);  // TRC-UNSUP-1, TRC-RADIUS-3
   return true;
 }
 
@@ -335,7 +336,7 @@ void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
   bool traversing = b.state.side == side && !anew(b) && b.moves_in_plane();
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
-  bool blend = traversing && !(ActiveEdge::of(b.state) == edge);
+  bool blend = traversing && radius_changes_here;
   if (blend) reject_blend_here(b, looking || approach_until >= 0);
   const BlockCopy* current = nullptr;  // a traversing block, converted once
   if (traversing) {

@@ -40,20 +40,20 @@ void SarExpansion::finish() {
 
 void SarExpansion::take(const Block& b) {
   // SAR-END-3: after a retraction that ended without end point the blocks start there.
-  PlaneOverride end_over;
-  bool use_end = false;
+  const PlaneOverride* end_over = nullptr;
   if (at_sar_end_) {
-    end_over.axes = plane_axes(sar_end_plane_);
-    end_over.start = true, end_over.start_ab = sar_end_;
+    end_over_ = PlaneOverride{};
+    end_over_.axes = plane_axes(sar_end_plane_);
+    end_over_.start = true, end_over_.start_ab = sar_end_;
     if (keeps_sar_end(b, sar_end_plane_))
-      end_over.end = true, end_over.end_ab = sar_end_;
+      end_over_.end = true, end_over_.end_ab = sar_end_;
     else
       at_sar_end_ = false;
-    use_end = true;
+    end_over = &end_over_;
   }
   switch (sequence_.take(b)) {
     case SarSequence::Step::kPass:
-      return forward(b, use_end ? &end_over : nullptr);
+      return forward(b, end_over);
     case SarSequence::Step::kHold:
       return;
     case SarSequence::Step::kApproach:

@@ -60,6 +60,7 @@ class SarExpansion {
   Block last_contour_;
   void keep_last_contour(const Block& b);
   PlaneOverride last_contour_over_;
+  PlaneOverride end_over_;  // SAR-END-3's points for the block being taken (built only after such a retraction)
   bool last_contour_overridden_ = false;
   bool has_last_contour_ = false;
   bool at_sar_end_ = false;  // SAR-END-3: the tool stands at sar_end_ (in the plane)

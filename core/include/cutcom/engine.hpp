@@ -71,9 +71,11 @@ inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_
   return true;
 }
 
-inline void reject_change_while_active(const Block& b, const ActiveEdge& active, int active_side) {
-  radius_changes(b, active, active_side);
+// True when the block changes the radius (a blend follows, TRC-RADIUS-3).
+inline bool reject_change_while_active(const Block& b, const ActiveEdge& active, int active_side) {
+  bool changes = radius_changes(b, active, active_side);
   reject_kontc_kontt(b, false);
+  return changes;
 }
 
 }  // namespace cutcom
