@@ -114,8 +114,6 @@ struct BlockCopy : BlockFacts {
   }
 };
 
-inline double pick(const PathPoint& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
-
 // Plane <-> workpiece coordinates in a given plane (the compensation's, or a SAR block's). The
 // axes are plane_axes' of G17, G18 or G19 (the only ones made), which the abscissa tells apart:
 // one branch, predicted, instead of an axis look-up per coordinate (every point of every block).

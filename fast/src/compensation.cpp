@@ -98,8 +98,7 @@ void Compensation::select(const Block& b) {
   phase = Phase::kApproach;
 }
 
-bool Compensation::still_compensable(const Block& b) {
-  radius_changes_here = false;
+bool Compensation::still_compensable(const Block& b, bool* radius_changes) {
   if (b.state.side == Side::kOff) {
     if (b.is_arc() && b.programs_plane_axis()) {  // TRC-DESEL-2
       raise(10754, b.words);
@@ -111,8 +110,9 @@ bool Compensation::still_compensable(const Block& b) {
     raise(10757, b.words);
     return false;
   }
-  if (anew(b)) return true;                                      // TRC-SIDE-1/2, handled by the caller
-  radius_changes_here = reject_change_while_active(b, edge, s);  // TRC-UNSUP-1, TRC-RADIUS-3
+  if (anew(b)) return true;                               // TRC-SIDE-1/2, handled by the caller
+  bool changes = reject_change_while_active(b, edge, s);  // TRC-UNSUP-1, TRC-RADIUS-3
+  if (radius_changes) *radius_changes = changes;
   return true;
 }
 
@@ -333,10 +333,11 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
 }
 
 void Compensation::compensation_active(const Block& b) {
-  if (!still_compensable(b)) return;
+  bool radius_changes = false;
+  if (!still_compensable(b, &radius_changes)) return;
   bool traversing = b.state.side == side && !anew(b) && b.moves_in_plane();
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
-  bool blend = traversing && radius_changes_here;
+  bool blend = traversing && radius_changes;
   if (blend) reject_blend_here(b, looking || approach_until >= 0);
   const BlockCopy* current = nullptr;  // a traversing block, converted once
   if (traversing) {

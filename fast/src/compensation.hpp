@@ -296,8 +296,8 @@ class Compensation {
 
   // --- checks shared by the phases with compensation in force --------------------------------
   // Returns false if the block ended the program with an alarm.
-  bool still_compensable(const Block& b);
-  bool radius_changes_here = false;  // still_compensable's finding: the block changes the radius
+  // `radius_changes`: whether the block changes the radius (TRC-RADIUS-3), where it was checked.
+  bool still_compensable(const Block& b, bool* radius_changes = nullptr);
 
   // --- phase: compensation off -----------------------------------------------------------------
   void compensation_off(const Block& b);
