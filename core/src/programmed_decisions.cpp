@@ -188,9 +188,12 @@ ProgrammedDecision circle_end_point(const Block& b, const MachineData& md, Margi
   if (text == MarginText::kDouble) {
     // In double: each radius errs by a few u of itself, the tolerance by a few u of itself; the
     // excess is decided when it exceeds 32u of their sum (a generous bound of the rounding).
+    // sqrt of the sum of squares, not hypot (a library call, every arc): differences of decimals
+    // stay below 1e16 mm, whose squares are far from overflow.
     auto radius = [&](const Point3& p) {
-      return std::hypot((coord(p, ax.abscissa) - coord(*b.centre, ax.abscissa)).to_double(),
-                        (coord(p, ax.ordinate) - coord(*b.centre, ax.ordinate)).to_double());
+      double a = (coord(p, ax.abscissa) - coord(*b.centre, ax.abscissa)).to_double();
+      double o = (coord(p, ax.ordinate) - coord(*b.centre, ax.ordinate)).to_double();
+      return std::sqrt(a * a + o * o);
     };
     double rs = radius(b.start), re = radius(b.end);
     double c = md.circle_error_const.to_double(), by_factor = md.circle_error_factor.to_double() * rs;

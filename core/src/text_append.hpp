@@ -67,21 +67,24 @@ inline char* put_fixed(char* p, double v) {
     std::uint64_t truncated = static_cast<std::uint64_t>(y);  // the floor: 0 <= y < 2^40
     double fraction = y - static_cast<double>(truncated);     // exact
     if (std::fabs(fraction - 0.5) > 1e-3) {
+      // The digits of n = round(y) from the right by pairs, the point `kPlaces` from the end, in
+      // a scratch array; then one copy of fixed size (no length to count first: 3 % of a run).
       std::uint64_t n = truncated + (fraction > 0.5 ? 1 : 0);
-      std::uint64_t integer = n / kPower;
-      std::uint64_t fixed = n % kPower;
-      if (std::signbit(v)) *p++ = '-';
-      int length = 1;
-      for (std::uint64_t k = integer; k >= 10; k /= 10) ++length;
-      char* end = p + length + (kPlaces > 0 ? kPlaces + 1 : 0);
+      char scratch[48];  // the text ends at scratch + 24: at most 15 characters
+      char* const end = scratch + 24;
       char* q = end;
       int k = 0;
-      for (; k + 2 <= kPlaces; k += 2, fixed /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (fixed % 100), 2);
-      if (k < kPlaces) *--q = static_cast<char>('0' + fixed % 10);
+      for (; k + 2 <= kPlaces; k += 2, n /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (n % 100), 2);
+      if (k < kPlaces) *--q = static_cast<char>('0' + n % 10), n /= 10;
       if (kPlaces > 0) *--q = '.';
-      for (; integer >= 10; integer /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (integer % 100), 2);
-      if (q > p) *--q = static_cast<char>('0' + integer);
-      return end;
+      for (; n >= 100; n /= 100) q -= 2, std::memcpy(q, kPairs + 2 * (n % 100), 2);
+      if (n >= 10)
+        q -= 2, std::memcpy(q, kPairs + 2 * n, 2);
+      else
+        *--q = static_cast<char>('0' + n);
+      if (std::signbit(v)) *--q = '-';
+      std::memcpy(p, q, 24);  // q + 24 stays inside the scratch array
+      return p + (end - q);
     }
   }
   return std::to_chars(p, p + 352, v, std::chars_format::fixed, kPlaces).ptr;
