@@ -27,6 +27,47 @@ void count_corner(Conditioning& c, double aa, double ab, double ba, double bb, b
     c.corner = std::max(c.corner, 1 / one_plus_cos);
   if (circle && sine > 4 * kUnitRoundoff) c.crossing = std::max(c.crossing, 1 / sine);
 }
+// A block's programmed start tangent (ta, tb), end tangent (ua, ub) in the plane `ax` and its
+// scale (the chord, or the radius where shorter).
+struct ProgrammedTangents {
+  double ta = 0, tb = 0, ua = 0, ub = 0, scale = 0;
+};
+ProgrammedTangents programmed_tangents(const Block& b, PlaneAxes ax) {
+  auto at = [&](const Point3& p) {
+    return std::pair{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()};
+  };
+  auto [sa, sb] = at(b.start);
+  auto [ea, eb] = at(b.end);
+  ProgrammedTangents t;
+  t.ta = ea - sa, t.tb = eb - sb, t.ua = t.ta, t.ub = t.tb;
+  t.scale = std::hypot(t.ta, t.tb);
+  if (b.is_arc()) {
+    // The centre the engines use: the programmed one projected onto the chord's bisector
+    // (ARC-CENTRE-1), or the CR= centre (ARC-CR-1). Tangents from the uncorrected centre can
+    // miss a near-tangent corner by the end point's tolerance.
+    double ma = (sa + ea) / 2, mb = (sb + eb) / 2, pa = -(eb - sb), pb = ea - sa;  // midpoint, perp(chord)
+    double chord2 = pa * pa + pb * pb, ca = ma, cb = mb;
+    if (b.centre) {
+      auto [ka, kb] = at(*b.centre);
+      ca = ka, cb = kb;
+      if (chord2 > 0) {
+        double k = ((ka - ma) * pa + (kb - mb) * pb) / chord2;
+        ca = ma + k * pa, cb = mb + k * pb;
+      }
+    } else if (b.words.cr && chord2 > 0) {
+      double cr = b.words.cr->to_double();
+      double k = ((b.state.motion == Motion::kArcCcw) == (cr > 0) ? 1 : -1) *
+                 std::sqrt(std::max(0.0, cr * cr / chord2 - 0.25));
+      ca = ma + k * pa, cb = mb + k * pb;
+    }
+    double sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
+    t.ta = -sense * (sb - cb), t.tb = sense * (sa - ca);
+    t.ua = -sense * (eb - cb), t.ub = sense * (ea - ca);
+    double radius = std::hypot(sa - ca, sb - cb);
+    t.scale = t.scale > 0 ? std::min(t.scale, radius) : radius;  // a full circle has no chord
+  }
+  return t;
+}
 }  // namespace
 
 Conditioning conditioning_of(const std::vector<Block>& program, int window, const RunResult* generated) {
@@ -64,38 +105,7 @@ Conditioning conditioning_of(const std::vector<Block>& program, int window, cons
       continue;
     }
     if (!b.moves_in_plane()) continue;
-    auto at = [&](const Point3& p) {
-      return std::pair{coord(p, ax.abscissa).to_double(), coord(p, ax.ordinate).to_double()};
-    };
-    auto [sa, sb] = at(b.start);
-    auto [ea, eb] = at(b.end);
-    double ta = ea - sa, tb = eb - sb, ua = ta, ub = tb;  // start and end tangents
-    double scale = std::hypot(ta, tb);
-    if (b.is_arc()) {
-      // The centre the engines use: the programmed one projected onto the chord's bisector
-      // (ARC-CENTRE-1), or the CR= centre (ARC-CR-1). Tangents from the uncorrected centre can
-      // miss a near-tangent corner by the end point's tolerance.
-      double ma = (sa + ea) / 2, mb = (sb + eb) / 2, pa = -(eb - sb), pb = ea - sa;  // midpoint, perp(chord)
-      double chord2 = pa * pa + pb * pb, ca = ma, cb = mb;
-      if (b.centre) {
-        auto [ka, kb] = at(*b.centre);
-        ca = ka, cb = kb;
-        if (chord2 > 0) {
-          double k = ((ka - ma) * pa + (kb - mb) * pb) / chord2;
-          ca = ma + k * pa, cb = mb + k * pb;
-        }
-      } else if (b.words.cr && chord2 > 0) {
-        double cr = b.words.cr->to_double();
-        double k = ((b.state.motion == Motion::kArcCcw) == (cr > 0) ? 1 : -1) *
-                   std::sqrt(std::max(0.0, cr * cr / chord2 - 0.25));
-        ca = ma + k * pa, cb = mb + k * pb;
-      }
-      double sense = b.state.motion == Motion::kArcCcw ? 1 : -1;
-      ta = -sense * (sb - cb), tb = sense * (sa - ca);
-      ua = -sense * (eb - cb), ub = sense * (ea - ca);
-      double radius = std::hypot(sa - ca, sb - cb);
-      scale = scale > 0 ? std::min(scale, radius) : radius;  // a full circle has no chord
-    }
+    auto [ta, tb, ua, ub, scale] = programmed_tangents(b, ax);
     if (scale > 0) c.shortest = std::min(c.shortest, scale);
     for (std::size_t j = 0; j + 1 < recent.size(); ++j) {  // non-adjacent pairs; the adjacent one below
       double pa = recent[j].first, pb = recent[j].second;
@@ -155,16 +165,20 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
   // TRC-KONT-4 (and the same at a side change): the approach line meets the first equidistant,
   // the last one the retraction line, at an intersection the program does not show; nearly
   // reversed, it lies far out (campaign 20261204, case 45849: 179.82 degrees, 2,400 mm away).
-  for (std::size_t k = 0; k + 1 < ref.path.size(); ++k) {
-    const PathElement &a = ref.path[k], &b = ref.path[k + 1];
+  // The approach line may be the path's last element: an alarm after it stops the run before the
+  // equidistant it met (campaign 20261283, case 775245: a SAR lead 144,560 mm out, then alarm
+  // 10742); the programmed line after it tells the corner then.
+  for (std::size_t k = 0; k < ref.path.size(); ++k) {
+    const PathElement& a = ref.path[k];
+    const PathElement* following = k + 1 < ref.path.size() ? &ref.path[k + 1] : nullptr;
     bool approach = a.origin.kind == OriginKind::kApproach && a.type == ElementType::kLine &&
-                    b.origin.kind != OriginKind::kApproach;
-    bool retraction = b.origin.kind == OriginKind::kRetraction && b.type == ElementType::kLine &&
-                      a.origin.kind != OriginKind::kRetraction;
+                    (!following || following->origin.kind != OriginKind::kApproach);
+    bool retraction = following && following->origin.kind == OriginKind::kRetraction &&
+                      following->type == ElementType::kLine && a.origin.kind != OriginKind::kRetraction;
     if (!approach && !retraction) continue;
     // (A SAR lead meets its element here too where P4 lies in a later block: campaign 20261211,
     // case 83509, 179.994 degrees, 34,860 mm out.)
-    int line = (approach ? a : b).origin.line;
+    int line = (approach ? a : *following).origin.line;
     if (std::none_of(ref.decisions.begin(), ref.decisions.end(), [&](const Decision& d) {
           return d.clause == "TRC-KONT-4" && d.branch == "intersection" && d.line == line;
         }))
@@ -180,7 +194,7 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
     // whose approach line meets, past three infeeds in Z, an equidistant 7,000 mm out that the
     // run never reached: it stopped with an alarm first). Then the programmed line tells.
     const PathElement* before = &a;
-    const PathElement* after = &b;
+    const PathElement* after = following;
     std::optional<std::pair<double, double>> programmed;
     if (approach) {
       std::size_t j = k + 1;
@@ -189,10 +203,12 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
       auto next = after ? program.end() : std::find_if(program.begin(), program.end(), [&](const Block& blk) {
         return blk.words.line > line && blk.moves_in_plane();
       });
-      // (An arc's tangent needs its centre: the path has it when the run gets there.)
-      if (next != program.end() && !next->is_arc())
-        programmed = std::pair{coord(next->end, ax.abscissa).to_double() - coord(next->start, ax.abscissa).to_double(),
-                               coord(next->end, ax.ordinate).to_double() - coord(next->start, ax.ordinate).to_double()};
+      // (An arc's from its centre, as the engines correct it: campaign 20261283, case 775245 shrunk,
+      // a SAR lead meeting the equidistant of a circle that then collapsed.)
+      if (next != program.end()) {
+        ProgrammedTangents t = programmed_tangents(*next, ax);
+        programmed = std::pair{t.ta, t.tb};
+      }
     } else {
       std::size_t j = k + 1;
       while (j > 0 && !moves(ref.path[j - 1])) --j;
