@@ -158,6 +158,15 @@ TEST(TextAppend, JsonNumbersAreTheShortestInNlohmannsLayout) {
   EXPECT_EQ(json(3e20), "3e+20");
   EXPECT_EQ(json(-8925.40643), "-8925.40643");  // nlohmann: -8925.406429999999, the same double
 
+  // Significands of every length (put_shortest counts their digits from the bit width): the
+  // powers of ten and their neighbours over the whole range, and 2^k.
+  for (int k = -323; k <= 308; ++k) {
+    double ten = std::pow(10.0, k);
+    for (double v : {ten, std::nextafter(ten, 0.0), std::nextafter(ten, 1e308), 9 * ten, 99 * ten, -3 * ten})
+      if (std::isfinite(v) && v != 0) expect_json_number(v);
+  }
+  for (int k = -1074; k <= 1023; ++k) expect_json_number(std::ldexp(1.0, k));
+
   std::mt19937_64 random(20261129);
   std::uniform_real_distribution<double> magnitude(-8, 17);
   std::uniform_int_distribution<std::int64_t> ticks(-999999999999999, 999999999999999);

@@ -58,7 +58,7 @@ char* JsonWriter::put_new_number(char* p, double v, NumberText& keep) {
   char* end = put_shortest_number(p, v);
   std::memcpy(&keep.bits, &v, sizeof keep.bits);
   keep.size = static_cast<std::uint8_t>(end - p);
-  std::memcpy(keep.text, p, keep.size);
+  std::memcpy(keep.text, p, kNumberCopy);  // whole: the buffer has that room past any number
   return end;
 }
 

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -178,38 +179,68 @@ inline char* put_shortest(char* p, double v) {
   if (v == 0) return put(p, std::signbit(v) ? std::string_view("-0.0") : std::string_view("0.0"));
   if (!std::isfinite(v)) return std::to_chars(p, p + 32, v).ptr;
   auto decimal = fmt::detail::dragonbox::to_decimal(std::fabs(v));  // significand * 10^exponent
-  char padded[17];
-  put_17_digits(padded, decimal.significand);
-  const char* digits = padded;
-  while (*digits == '0') ++digits;  // the significand is not 0
-  int count = static_cast<int>(padded + sizeof padded - digits);
+  // The significand's digits: how many from its bit width (log10 2 ~ 1233 / 4096, then one
+  // comparison), so no loop strips leading zeros.
+  static constexpr std::uint64_t kPowers[] = {1,
+                                              10,
+                                              100,
+                                              1000,
+                                              10000,
+                                              100000,
+                                              1000000,
+                                              10000000,
+                                              100000000,
+                                              1000000000,
+                                              10000000000,
+                                              100000000000,
+                                              1000000000000,
+                                              10000000000000,
+                                              100000000000000,
+                                              1000000000000000,
+                                              10000000000000000,
+                                              100000000000000000};
+  const std::uint64_t significand = decimal.significand;  // not 0, below 10^17
+  int estimate = (static_cast<int>(std::bit_width(significand)) * 1233) >> 12;
+  int count = estimate + (significand >= kPowers[estimate] ? 1 : 0);
+  char padded[40];  // 17 digits, then room for the fixed-size copies below to read past them
+  put_17_digits(padded, significand);
+  const char* digits = padded + 17 - count;
   int point = count + decimal.exponent;  // the decimal point's place after the first digit
-  if (std::signbit(v)) *p++ = '-';
+  // Laid out in a scratch array by copies of fixed size (each a few moves, where a copy of the
+  // exact length is a library call), then copied whole: at most 24 characters.
+  char text[64];
+  char* q = text;
+  if (std::signbit(v)) *q++ = '-';
   if (point <= -4 || point > 15) {  // d.ddde+XX
-    *p++ = digits[0];
-    if (count > 1) *p++ = '.', p = put(p, std::string_view(digits + 1, static_cast<std::size_t>(count - 1)));
+    q[0] = digits[0];
+    if (count > 1) q[1] = '.', std::memcpy(q + 2, digits + 1, 16), q += count;
+    q += 1;
     int exponent = point - 1;
-    *p++ = 'e';
-    *p++ = exponent < 0 ? '-' : '+';
+    *q++ = 'e';
+    *q++ = exponent < 0 ? '-' : '+';
     if (exponent < 0) exponent = -exponent;
-    if (exponent >= 100) *p++ = static_cast<char>('0' + exponent / 100), exponent %= 100;
-    std::memcpy(p, kPairs + 2 * exponent, 2);
-    return p + 2;
+    if (exponent >= 100) *q++ = static_cast<char>('0' + exponent / 100), exponent %= 100;
+    std::memcpy(q, kPairs + 2 * exponent, 2);
+    q += 2;
+  } else if (point <= 0) {  // 0.[000]digits
+    std::memcpy(q, "0.000", 5);
+    q += 2 - point;
+    std::memcpy(q, digits, 17);
+    q += count;
+  } else if (count <= point) {  // digits[000].0
+    std::memcpy(q, digits, 17);
+    q += count;
+    std::memcpy(q, "000000000000000", 15);
+    q += point - count;
+    *q++ = '.', *q++ = '0';
+  } else {  // dig.its
+    std::memcpy(q, digits, 17);
+    q[point] = '.';
+    std::memcpy(q + point + 1, digits + point, 17);
+    q += count + 1;
   }
-  if (point <= 0) {  // 0.[000]digits
-    *p++ = '0', *p++ = '.';
-    for (int k = point; k < 0; ++k) *p++ = '0';
-    return put(p, std::string_view(digits, static_cast<std::size_t>(count)));
-  }
-  if (count <= point) {  // digits[000].0
-    p = put(p, std::string_view(digits, static_cast<std::size_t>(count)));
-    for (int k = count; k < point; ++k) *p++ = '0';
-    *p++ = '.', *p++ = '0';
-    return p;
-  }
-  p = put(p, std::string_view(digits, static_cast<std::size_t>(point)));  // dig.its
-  *p++ = '.';
-  return put(p, std::string_view(digits + point, static_cast<std::size_t>(count - point)));
+  std::memcpy(p, text, 24);
+  return p + (q - text);
 }
 
 // `v` right-aligned in `width` characters at `p` ("{:>width}"); returns the end.
