@@ -244,8 +244,7 @@ void Compensation::continue_entry(const Block& m, const Entry& en, int entry_pie
   if (lead == Entry::Lead::kCircle) {
     Origin corner = origin(*en.before, OriginKind::kTransitionCircle);
     corner.next_line = m.words.line, corner.next_block = m.words.number, corner.next_insert = m.insert;
-    emit_arc(m, at({x, h}), at({en.normal_start, h}), at({en.vertex, h}), comp_->side_radius, comp_->s < 0, corner,
-             comp_->axes);
+    emit_corner_circle(m, x, en.normal_start, en.vertex, h, corner);
     return open(m, en.element, en.normal_start, en.radius, Placed::kNormal);
   }
   // The rest of the predecessor's extended equidistant, at m's applicate, named after it.

@@ -508,8 +508,7 @@ void Compensation::transition_circle(const Block& next_block, const ContourEleme
   open(next_block, next, to, next_radius, Placed::kNormal);
   if (comp_->radius.sign() != 0) {  // TRC-G450-2: no circle for a zero radius
     // Around the outside of the corner: clockwise on the left, counter-clockwise on the right.
-    emit_arc(next_block, at({from, h}), at({to, h}), at({vertex, h}), comp_->side_radius, comp_->s < 0, corner,
-             comp_->axes);
+    emit_corner_circle(next_block, from, to, vertex, h, corner);
   }
 }
 
@@ -546,6 +545,12 @@ void Compensation::emit_arc(const Block& owner, const ExactPoint& from, const Ex
   e.start = a, e.end = path.output(to), e.center = path.output(centre), e.ccw = ccw;
   e.origin = from_what;
   hold(owner, e, ExactPath::circle_element(owner.words.line, from, to, centre, radius, axes));
+}
+
+void Compensation::emit_corner_circle(const Block& owner, const Point& from, const Point& to, const Point& vertex,
+                                      const Decimal& h, const Origin& corner) {
+  if (from == to) return;  // PATH-ELEMENT-1: a corner circle of no turn (campaign 20261284, case 557811)
+  emit_arc(owner, at({from, h}), at({to, h}), at({vertex, h}), comp_->side_radius, comp_->s < 0, corner, comp_->axes);
 }
 
 void Compensation::run_actions(const Block& b, const PathPoint& at) {

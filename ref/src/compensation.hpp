@@ -105,6 +105,11 @@ class Compensation {
   // `owner` gives feed, motion type and actions.
   void emit_arc(const Block& owner, const ExactPoint& from, const ExactPoint& to, const ExactPoint& centre,
                 const FT& radius, bool ccw, const Origin& from_what, PlaneAxes axes);
+  // A circle around an outer corner (TRC-G450-1, TRC-KONT-3, TRC-EDGE-6, a CDON entry's lead) from
+  // `from` to `to` about `vertex`, at the applicate `h`: it turns less than half a turn, so ends
+  // that coincide exactly turn 0 and give no element (PATH-ELEMENT-1), not a whole turn.
+  void emit_corner_circle(const Block& owner, const Point& from, const Point& to, const Point& vertex, const Decimal& h,
+                          const Origin& corner);
 
   ExactPoint at(const CentrePoint& p) const { return ExactPoint::in_plane(p.plane, p.applicate, comp_->axes); }
   static ExactPoint at(const Point3& p) { return ExactPoint::programmed(p); }

@@ -99,8 +99,7 @@ void Compensation::approach_around(const Block& first_block, const ContourElemen
     corner.next_insert = first_block.insert;
     Decimal h1 = coord(first_block.start, comp_->axes.applicate);  // after the held-back blocks
     if (comp_->radius.sign() != 0)                                 // TRC-G450-2
-      emit_arc(first_block, at({a, h1}), at({q, h1}), at({k.vertex, h1}), comp_->side_radius, comp_->s < 0, corner,
-               comp_->axes);
+      emit_corner_circle(first_block, a, q, k.vertex, h1, corner);
     open(first_block, first, q, radius, Placed::kNormal);
   } else {  // TRC-KONT-4
     decide("TRC-KONT-4", selection_->words.line, "intersection");
@@ -288,7 +287,7 @@ void Compensation::retract_edge_around(const Block& b, const Block& last_block, 
   Origin corner = origin(last_block, OriginKind::kTransitionCircle);
   corner.next_line = b.words.line, corner.next_block = b.words.number, corner.next_insert = b.insert;
   Decimal h = coord(b.start, comp_->axes.applicate);
-  emit_arc(b, at({x, h}), at({r_point, h}), at({k.vertex, h}), comp_->side_radius, comp_->s < 0, corner, comp_->axes);
+  emit_corner_circle(b, x, r_point, k.vertex, h, corner);
   retraction_line(b, r_point);
 }
 
@@ -317,7 +316,7 @@ void Compensation::retract_around(const Block& b, const KontCorner& k) {
     run_held_back(from);
     Decimal h = coord(b.start, comp_->axes.applicate);
     if (comp_->radius.sign() != 0)  // TRC-G450-2
-      emit_arc(b, at({from, h}), at({r, h}), at({k.vertex, h}), comp_->side_radius, comp_->s < 0, corner, comp_->axes);
+      emit_corner_circle(b, from, r, k.vertex, h, corner);
     return retraction_line(b, r);
   }
   decide("TRC-KONT-4", b.words.line, "intersection");
