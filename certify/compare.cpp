@@ -121,6 +121,16 @@ bool touching_overlap(const Decision& d, const Tolerance& tol) {
   return d.clause == "TRC-CD-3" && d.branch == "overlap" && margin_in_band(d, tol);
 }
 
+// fast's hit where its carriers touch (its margin in the band: their overlap about 0) and ref's
+// point lies just off the piece: at carriers that touch, the point along them is known only to
+// within Tolerance::touching, so ref's miss by less than that is the same knife edge (campaign
+// 20261286, case 993226: a G461 circle exactly tangent to a later block's equidistant 1e-9 mm
+// before its normal start; ref `none` at -1e-9, fast `later-block` at 2e-15).
+bool touching_hit(const Decision& r, const Decision& f, const Tolerance& tol) {
+  bool kind = (f.clause == "TRC-EDGE-5" && f.branch == "hit") || (f.clause == "TRC-CD-6" && f.branch == "later-block");
+  return kind && margin_in_band(f, tol) && r.has_margin && std::fabs(margin_value(r)) <= tol.touching;
+}
+
 // A crossing that touches a piece's end (touching_crossing) may be taken on either
 // piece at the joint: the engines then skip different blocks and hold different pieces after it.
 // Likewise after carriers that just touch (an intersection of nearly tangent circles: the point
@@ -393,6 +403,12 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       v.kind = Verdict::Kind::kKnifeEdge;
       v.clause = std::string(f.clause);
       v.explanation = where + (f.branch == "overlap" ? ", fast's entry overlaps" : ", fast's crossing touches");
+      return v;
+    }
+    if (r.clause == f.clause && r.line == f.line && touching_hit(r, f, tol)) {
+      v.kind = Verdict::Kind::kKnifeEdge;
+      v.clause = std::string(f.clause);
+      v.explanation = where + ", fast's hit on touching carriers";
       return v;
     }
     // After a knife edge only a touching decision since the runs met again explains a parting.

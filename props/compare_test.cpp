@@ -341,6 +341,29 @@ TEST(Comparison, AnEntryOfOnePointBetweenLinesExplainsNothingAfterIt) {
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
 }
 
+// fast's hit where its carriers touch (margin in the band) against ref's point just off the piece:
+// a knife edge while ref's miss is within the touching tolerance (campaign 20261286, case 993226).
+// covers: PROP-DIFF-1 TRC-CD-6 TRC-EDGE-5
+TEST(Comparison, AHitOnTouchingCarriersIsAKnifeEdgeWithinTheTouchingTolerance) {
+  Tolerance tol = tolerance();  // band 1e-9, touching 1e-6
+  RunResult ref, fast;
+  ref.decisions = {decision("TRC-CD-6", "none", -1e-8, "-1e-8")};
+  fast.decisions = {decision("TRC-CD-6", "later-block", 2e-15)};
+  Verdict v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_NE(v.explanation.find("fast's hit on touching carriers"), std::string::npos) << v.explanation;
+  ref.decisions[0] = decision("TRC-CD-6", "none", -1e-5, "-1e-5");  // farther off than touching allows
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  ref.decisions[0] = decision("TRC-CD-6", "none", -1e-8, "-1e-8");
+  fast.decisions[0] = decision("TRC-CD-6", "later-block", 1e-7);  // a hit well inside: no touching
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+  ref.decisions = {decision("TRC-EDGE-5", "none", -1e-8, "-1e-8")};
+  fast.decisions = {decision("TRC-EDGE-5", "hit", 0)};
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
+  fast.decisions = {decision("TRC-LOOK-2", "intersection", 0)};  // another clause at the same line
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+}
+
 // What an element belongs to and its feed, the actions and where they run, SAR's variables and
 // the notices: a bug that changes only these would otherwise pass.
 // covers: PROP-DIFF-3
