@@ -309,7 +309,10 @@ void run_budgeted(const CampaignOptions& o, Take take, Elapsed elapsed) {
         last = std::chrono::steady_clock::now();
         stop = take(r);
       }
-      if (stop) {
+      // Every case of the shard is in: the worker has only its exit left, and no case is under
+      // way that its budget could count twice (a poll timing out before that exit counted the
+      // case after the shard's last one over budget: 13 cases of 12).
+      if (stop || (o.cases != 0 && i >= o.cases)) {
         ::kill(pid, SIGKILL);
         ::waitpid(pid, nullptr, 0);
         break;

@@ -122,17 +122,26 @@ TEST(Cli, CertifyWithABudgetRunsTheCasesInAChildAndCountsTheSame) {
   EXPECT_EQ(summary_of(dir + "/budget60.json"), summary_of(dir + "/budget0.json"));
   // A budget of a microsecond: cases are killed (over budget, not a divergence) and the shard
   // goes on; every case is counted once, and each one over budget is named.
-  Result tight =
-      sh(kCli + " certify --cases 12 --seed 5 --no-progress --budget 0.000001 --summary " + dir + "/budget-tight.json");
-  ASSERT_EQ(tight.status, 0) << tight.out;
-  nlohmann::json t = summary_of(dir + "/budget-tight.json");
-  EXPECT_EQ(t["cases"], 12);
-  long counted = 0;
-  for (const auto& [verdict, n] : t["verdicts"].items()) counted += n.get<long>();
-  EXPECT_EQ(counted, 12);
-  long over = t["verdicts"].contains("over-budget") ? t["verdicts"]["over-budget"].get<long>() : 0;
-  EXPECT_EQ(static_cast<long>(t["over_budget"].size()), over);
-  EXPECT_NE(tight.out.find(std::to_string(over) + " over budget"), std::string::npos) << tight.out;
+  // Several times: a worker that has written its shard's last case and not yet ended was once
+  // counted over budget for the case after it (13 of 12, case 5/12, in about one run of 30).
+  for (int run = 0; run < 10; ++run) {
+    SCOPED_TRACE(run);
+    Result tight = sh(kCli + " certify --cases 12 --seed 5 --no-progress --budget 0.000001 --summary " + dir +
+                      "/budget-tight.json");
+    ASSERT_EQ(tight.status, 0) << tight.out;
+    nlohmann::json t = summary_of(dir + "/budget-tight.json");
+    EXPECT_EQ(t["cases"], 12);
+    long counted = 0;
+    for (const auto& [verdict, n] : t["verdicts"].items()) counted += n.get<long>();
+    EXPECT_EQ(counted, 12);
+    long over = t["verdicts"].contains("over-budget") ? t["verdicts"]["over-budget"].get<long>() : 0;
+    EXPECT_EQ(static_cast<long>(t["over_budget"].size()), over);
+    EXPECT_NE(tight.out.find(std::to_string(over) + " over budget"), std::string::npos) << tight.out;
+    for (const auto& name : t["over_budget"]) {  // cases 5/0 … 5/11 only
+      std::string k = name.get<std::string>().substr(2);
+      EXPECT_LT(std::stol(k), 12) << name;
+    }
+  }
 }
 
 // covers: CLI-2 PROP-CORPUS-1 PROP-FROM-1
