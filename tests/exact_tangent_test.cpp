@@ -52,5 +52,36 @@ TEST(ExactTangent, ATangentIsTheRadiusTurnedAQuarterInTheSenseOfTravel) {
   EXPECT_FALSE(exact_tangent(line, xy, true));
 }
 
+// covers: TRC-CORNER-1
+TEST(ExactTangent, TwoLinesSignsAreExactBelowTwoToThe62AndDeclinedFromIt) {
+  std::mt19937_64 g(20261202);
+  PlaneAxes xy{0, 1, 2};
+  CornerSignsMemo memo;
+  BlockCopy first, second;
+  for (int k = 0; k < 200000; ++k) {
+    int bits = 1 + static_cast<int>(g() % 66);  // up to 2^66: the range's edge and past it
+    auto value = [&] {
+      Int128 v = static_cast<Int128>(g() & ((std::uint64_t{1} << std::min(bits, 63)) - 1));
+      if (bits > 63) v <<= bits - 63;
+      return g() % 2 ? -v : v;
+    };
+    first.delta = {value(), value(), 0};
+    second.delta = k % 3 == 0 ? first.delta : std::array<Int128, 3>{value(), value(), 0};
+    if (k % 5 == 0) second.delta[1] += g() % 2 ? 1 : -1;                   // one unit off collinear
+    if (k % 7 == 0) second.delta = {-first.delta[0], -first.delta[1], 0};  // a reversal
+    first.block = 2 * k, second.block = 2 * k + 1;                         // new blocks: the memo must not answer
+    int cross = 9, dot = 9;
+    bool found = memo.signs(first, second, xy, cross, dot);
+    auto below = [](Int128 v) { return v < (Int128(1) << 62) && v > -(Int128(1) << 62); };
+    bool exact = below(first.delta[0]) && below(first.delta[1]) && below(second.delta[0]) && below(second.delta[1]);
+    ASSERT_EQ(found, exact) << k;  // as exact_tangent: a line from 2^62 units on is not taken
+    if (!exact) continue;
+    mpz_class a1 = to_mpz(first.delta[0]), b1 = to_mpz(first.delta[1]);
+    mpz_class a2 = to_mpz(second.delta[0]), b2 = to_mpz(second.delta[1]);
+    ASSERT_EQ(cross, sgn(mpz_class(a1 * b2 - b1 * a2))) << k;
+    ASSERT_EQ(dot, sgn(mpz_class(a1 * a2 + b1 * b2))) << k;
+  }
+}
+
 }  // namespace
 }  // namespace cutcom::fast
