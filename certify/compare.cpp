@@ -131,6 +131,16 @@ bool touching_hit(const Decision& r, const Decision& f, const Tolerance& tol) {
   return kind && margin_in_band(f, tol) && r.has_margin && std::fabs(margin_value(r)) <= tol.touching;
 }
 
+// What fast's decision touches where ref's at the same place does not (the verdict's words), or
+// empty: the three knife edges above, ref and fast at the same clause and line.
+std::string_view fast_touching(const Decision& r, const Decision& f, const Tolerance& tol) {
+  if (r.clause != f.clause || r.line != f.line) return {};
+  if (touching_overlap(f, tol)) return "fast's entry overlaps";
+  if (touching_crossing(f, tol)) return "fast's crossing touches";
+  if (touching_hit(r, f, tol)) return "fast's hit on touching carriers";
+  return {};
+}
+
 // A crossing that touches a piece's end (touching_crossing) may be taken on either
 // piece at the joint: the engines then skip different blocks and hold different pieces after it.
 // Likewise after carriers that just touch (an intersection of nearly tangent circles: the point
@@ -398,17 +408,12 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     // fast's own crossing touches (its margin in the band) where ref found none to compare: an
     // entry exactly one point long in ref is nothing, a rounding longer in fast a sliver that may
     // touch a held piece (corpus cdon-entry-of-zero-length) or lie along one and overlap it
-    // (corpus cdon-point-entry-along-a-held-piece).
-    if (r.clause == f.clause && r.line == f.line && (touching_crossing(f, tol) || touching_overlap(f, tol))) {
+    // (corpus cdon-point-entry-along-a-held-piece); or fast hits where its carriers touch and
+    // ref's point lies just off the piece (touching_hit).
+    if (std::string_view touching = fast_touching(r, f, tol); !touching.empty()) {
       v.kind = Verdict::Kind::kKnifeEdge;
       v.clause = std::string(f.clause);
-      v.explanation = where + (f.branch == "overlap" ? ", fast's entry overlaps" : ", fast's crossing touches");
-      return v;
-    }
-    if (r.clause == f.clause && r.line == f.line && touching_hit(r, f, tol)) {
-      v.kind = Verdict::Kind::kKnifeEdge;
-      v.clause = std::string(f.clause);
-      v.explanation = where + ", fast's hit on touching carriers";
+      v.explanation = where + ", " + std::string(touching);
       return v;
     }
     // After a knife edge only a touching decision since the runs met again explains a parting.
