@@ -1,7 +1,8 @@
 // TRC-CORNER-1 exactly where ref decides it in rationals: at lines and at circles with a centre
 // (I/J/K, and the centres the reader puts on the grid). A corner's kind is the sign of the cross
 // and dot products of two tangents; each tangent is an integer vector (units of 1e-9 mm) times a
-// positive factor, and the products are taken in 256 bits. Private to fast.
+// positive factor, and the products are taken in 256 bits (two lines' in 128: their components
+// fit in 64). Private to fast.
 #pragma once
 
 #include <optional>
