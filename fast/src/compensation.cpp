@@ -269,15 +269,6 @@ void Compensation::decide_kind_on_integers(const BlockCopy& first, const BlockCo
   if (!(c.sine * sign > 0)) c.sine = sign * std::numeric_limits<double>::denorm_min();
 }
 
-std::optional<Compensation::ExactProducts> Compensation::exact_products(const std::array<Int128, 3>& t,
-                                                                        const std::array<Int128, 3>& u) const {
-  Int128 a1 = t[static_cast<std::size_t>(axes.abscissa)], b1 = t[static_cast<std::size_t>(axes.ordinate)];
-  Int128 a2 = u[static_cast<std::size_t>(axes.abscissa)], b2 = u[static_cast<std::size_t>(axes.ordinate)];
-  for (Int128 v : {a1, b1, a2, b2})
-    if (!in_exact_range(v)) return std::nullopt;  // beyond the range: the double decision stands
-  return ExactProducts{a1 * b2 - b1 * a2, a1 * a2 + b1 * b2};
-}
-
 std::optional<int> Compensation::exact_room_sign(const std::array<Int128, 3>& u) const {
   Int128 a = u[static_cast<std::size_t>(axes.abscissa)], b = u[static_cast<std::size_t>(axes.ordinate)];
   for (Int128 v : {a, b, r_units})
@@ -504,7 +495,7 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   // ran along the open block's own line, and fast met it there).
   bool parallel = false;
   if (!open_el.arc && !cand.arc && open.exact && c.exact) {
-    std::optional<ExactProducts> p = exact_products(open.delta, c.delta);
+    std::optional<LineProducts> p = line_products(open.delta, c.delta, axes);  // TRC-LOOK-2 exactly: cross 0
     parallel = p && p->cross == 0;
   } else if (!open_el.arc && !cand.arc) {
     // Lines built on one tangent (SAR lines at the two ends of a full circle: campaign 20261207,

@@ -255,14 +255,6 @@ class Compensation {
   bool close_open(Vec2& end_point, const BlockPlace& alarm_at, Placed placed = Placed::kCorner,
                   const Candidate* candidate = nullptr);
 
-  // TRC-LOOK-2's parallel lines, exactly: two programmed displacements are whole numbers of
-  // 1e-9 mm, and while each component stays below 2^62 their products fit in 128 bits (corner
-  // kinds use exact_tangent.hpp, which covers circles too).
-  struct ExactProducts {
-    Int128 cross, dot;
-  };
-  std::optional<ExactProducts> exact_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u) const;
-
   void decide_kind_exactly(const BlockCopy& first, const BlockCopy& second, Corner& c) const {
     if (first.tangent_after || second.tangent_before) {  // SAR-POINTS-1/2: tangent by construction
       c.kind = Corner::Kind::kTangent, c.sine = 0;

@@ -69,22 +69,16 @@ std::optional<IntVec> exact_tangent(const BlockCopy& c, PlaneAxes axes, bool at_
   return IntVec{sigma * (along * d.a - across * d.b), sigma * (along * d.b + across * d.a)};
 }
 
-namespace {
-// Two lines: their displacements, each component below 2^62 (exact_tangent's range), are exact
-// 64-bit integers, and the products are widened from 64 bits (one multiply each): the signs of a
-// CAM program's collinear runs without the general 256-bit path (a third of such a block's cost).
-bool line_signs(const BlockCopy& first, const BlockCopy& second, PlaneAxes axes, int& cross, int& dot) {
+std::optional<LineProducts> line_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u,
+                                          PlaneAxes axes) {
   const auto ia = static_cast<std::size_t>(axes.abscissa), io = static_cast<std::size_t>(axes.ordinate);
-  const Int128 a1 = first.delta[ia], b1 = first.delta[io], a2 = second.delta[ia], b2 = second.delta[io];
-  if (!in_exact_range(a1) || !in_exact_range(b1) || !in_exact_range(a2) || !in_exact_range(b2)) return false;
-  auto wide = [](Int128 x, Int128 y) {
+  const Int128 a1 = t[ia], b1 = t[io], a2 = u[ia], b2 = u[io];
+  if (!in_exact_range(a1) || !in_exact_range(b1) || !in_exact_range(a2) || !in_exact_range(b2)) return std::nullopt;
+  auto wide = [](Int128 x, Int128 y) {  // both below 2^62: one widening multiply
     return static_cast<Int128>(static_cast<std::int64_t>(x)) * static_cast<std::int64_t>(y);
   };
-  const Int128 c = wide(a1, b2) - wide(b1, a2), d = wide(a1, a2) + wide(b1, b2);  // below 2^125
-  cross = (c > 0) - (c < 0), dot = (d > 0) - (d < 0);
-  return true;
+  return LineProducts{wide(a1, b2) - wide(b1, a2), wide(a1, a2) + wide(b1, b2)};  // below 2^125
 }
-}  // namespace
 
 bool CornerSignsMemo::signs(const BlockCopy& first, const BlockCopy& second, PlaneAxes axes, int& cross, int& dot) {
   if (!first.exact || !second.exact) return false;  // exact_tangent's first test
@@ -92,16 +86,17 @@ bool CornerSignsMemo::signs(const BlockCopy& first, const BlockCopy& second, Pla
       axes.abscissa != abscissa_ || axes.ordinate != ordinate_) {
     first_ = first.block, second_ = second.block, first_seq_ = first.seq, second_seq_ = second.seq;
     abscissa_ = axes.abscissa, ordinate_ = axes.ordinate;
-    if (!first.arc && !second.arc) {
-      found_ = line_signs(first, second, axes, cross_, dot_);
-      if (found_) cross = cross_, dot = dot_;
-      return found_;
-    }
-    std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
-    found_ = t1 && t2;
-    if (found_) {
-      cross_ = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
-      dot_ = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
+    if (!first.arc && !second.arc) {  // two lines (a CAM program's collinear runs): 128 bits suffice
+      std::optional<LineProducts> p = line_products(first.delta, second.delta, axes);
+      found_ = p.has_value();
+      if (found_) cross_ = (p->cross > 0) - (p->cross < 0), dot_ = (p->dot > 0) - (p->dot < 0);
+    } else {
+      std::optional<IntVec> t1 = exact_tangent(first, axes, true), t2 = exact_tangent(second, axes, false);
+      found_ = t1 && t2;
+      if (found_) {
+        cross_ = sign_of_difference(t1->a, t2->b, t1->b, t2->a);
+        dot_ = sign_of_difference(t1->a, t2->a, -t1->b, t2->b);
+      }
     }
   }
   if (found_) cross = cross_, dot = dot_;

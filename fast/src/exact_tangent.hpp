@@ -5,6 +5,7 @@
 // fit in 64). Private to fast.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "block_copy.hpp"
@@ -14,6 +15,15 @@ namespace cutcom::fast {
 struct IntVec {
   Int128 a = 0, b = 0;
 };
+
+// The cross and dot products of two lines' displacements in the plane `axes`, exactly (TRC-CORNER-1
+// between lines, TRC-LOOK-2's parallel lines): each component below 2^62 units fits in 64 bits and
+// each product is one 64 x 64-bit multiply into 128 bits; nullopt from 2^62 on.
+struct LineProducts {
+  Int128 cross = 0, dot = 0;
+};
+std::optional<LineProducts> line_products(const std::array<Int128, 3>& t, const std::array<Int128, 3>& u,
+                                          PlaneAxes axes);
 
 // The sign of p·q − r·t, exactly (each product in 256 bits).
 int sign_of_difference(Int128 p, Int128 q, Int128 r, Int128 t);
