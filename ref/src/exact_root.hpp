@@ -9,23 +9,38 @@
 // written it ends the process (exit 1, no output): `cutcom run --engine ref` in a read-only
 // directory did so on two corpus programs. The argument's exact sign is known here, so its filter
 // is settled first (settle_filter). The result stays exact either way.
+//
+// Settled with the value's nearest double and a bound of two of its ulps, the filter decides the
+// signs built on it again (issue "Performance"): a bound of infinity, as before, sent every sign
+// downstream of a line-circle corner to CORE's exact evaluation, most of ref's time on a contour
+// far from the origin (the filter's bound grows with the coordinates, not with the differences).
 #pragma once
 
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/number_utils.h>
 
+#include <cmath>
 #include <limits>
 
 namespace cutcom::ref {
 
+// The double nearest to an exact value (kernel.cpp): exact, ties to even.
+double nearest_double(const CORE::Expr& value);
+
 // Where `v`'s filter does not prove its sign (CORE's isOK(): a filter that does proves the exact
-// one), it is replaced by one of the exact sign `exact` and an unbounded error bound: CORE never
-// decides by such a filter either, so every later sign of an expression built on `v` is computed
-// exactly as before, and no operation finds a negative root argument or a zero divisor in it.
-// Sound whatever the old filter was: it claims nothing. No decision is taken on the filter's
-// double here; the bound's infinity is CORE's own type for it.
+// one), it is replaced by a filter that does: d, the double nearest to v, with maxAbs = 2|d| and
+// ind = 2, an error bound of maxAbs * ind * 2^-53 = 2^-51 |d|. Sound as CORE's filters require
+// (Burnikel, Funke, Schirra): |d - v| <= 2^-53 |v| (a nearest double in the normal range) lies
+// below that bound, and |v|, |d| <= maxAbs. d has v's exact sign, so no operation finds a
+// negative root argument or a zero divisor in it. Where d is 0 or not in the normal range, the
+// bound is infinite instead: the filter claims nothing and CORE decides every later sign exactly.
 inline void settle_filter(const CORE::Expr& v, CGAL::Sign exact) {
   if (exact == CGAL::ZERO || v.Rep()->ffVal.isOK()) return;
+  double d = nearest_double(v);
+  if (std::isnormal(d) && (d > 0) == (exact == CGAL::POSITIVE)) {
+    v.Rep()->ffVal = CORE::filteredFp(d, 2 * std::fabs(d), 2);
+    return;
+  }
   v.Rep()->ffVal = CORE::filteredFp(static_cast<int>(exact), std::numeric_limits<double>::infinity(), 1);
 }
 
