@@ -487,6 +487,7 @@ std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u
                                                         const Point& vertex, const Vector& ahead) {
   std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
   if (xs.empty()) return std::nullopt;
+  for (const Point& x : xs) tighten_filters(x);  // the corner's point: ends of held pieces under CDON
   if (xs.size() == 1) return xs[0];
   // The nearer one; equally near, the one further along `ahead` (second_farther's algebra, checked
   // against the points in ref/test/intersection_order_test.cpp).

@@ -11,9 +11,8 @@
 // is settled first (settle_filter). The result stays exact either way.
 //
 // Settled with the value's nearest double and a bound of two of its ulps, the filter decides the
-// signs built on it again (issue "Performance"): a bound of infinity, as before, sent every sign
-// downstream of a line-circle corner to CORE's exact evaluation, most of ref's time on a contour
-// far from the origin (the filter's bound grows with the coordinates, not with the differences).
+// signs built on it again (issue "Performance"): a bound of infinity sent every sign downstream of
+// a line-circle corner to CORE's exact evaluation (a sixth of ref's time under CDON).
 #pragma once
 
 #include <CGAL/CORE_Expr.h>
@@ -21,27 +20,33 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace cutcom::ref {
 
-// The double nearest to an exact value (kernel.cpp): exact, ties to even.
-double nearest_double(const CORE::Expr& value);
+// The double nearest to an exact value where one approximation of it decides (kernel.cpp): no
+// exact comparison, so never a zero test; empty where it does not, or outside the normal range.
+std::optional<double> nearest_by_approximation(const CORE::Expr& value);
+
+// `v`'s filter made its nearest double d with maxAbs = 2|d| and ind = 2: an error bound of
+// maxAbs * ind * 2^-53 = 2^-51 |d|. Sound as CORE's filters require (Burnikel, Funke, Schirra):
+// |d - v| <= 2^-53 |v| (a nearest double in the normal range) lies below that bound, and |v|,
+// |d| <= maxAbs; d has v's sign. False (the filter unchanged) where no such d was found.
+inline bool filter_by_nearest(const CORE::Expr& v) {
+  std::optional<double> d = nearest_by_approximation(v);
+  if (!d || !std::isnormal(*d)) return false;
+  v.Rep()->ffVal = CORE::filteredFp(*d, 2 * std::fabs(*d), 2);
+  return true;
+}
 
 // Where `v`'s filter does not prove its sign (CORE's isOK(): a filter that does proves the exact
-// one), it is replaced by a filter that does: d, the double nearest to v, with maxAbs = 2|d| and
-// ind = 2, an error bound of maxAbs * ind * 2^-53 = 2^-51 |d|. Sound as CORE's filters require
-// (Burnikel, Funke, Schirra): |d - v| <= 2^-53 |v| (a nearest double in the normal range) lies
-// below that bound, and |v|, |d| <= maxAbs. d has v's exact sign, so no operation finds a
-// negative root argument or a zero divisor in it. Where d is 0 or not in the normal range, the
-// bound is infinite instead: the filter claims nothing and CORE decides every later sign exactly.
+// one), it is replaced by one that does (filter_by_nearest), so no operation finds a negative root
+// argument or a zero divisor in it. Where no nearest double is found, the bound is infinite
+// instead: the filter claims nothing and CORE decides every later sign exactly.
 inline void settle_filter(const CORE::Expr& v, CGAL::Sign exact) {
   if (exact == CGAL::ZERO || v.Rep()->ffVal.isOK()) return;
-  double d = nearest_double(v);
-  if (std::isnormal(d) && (d > 0) == (exact == CGAL::POSITIVE)) {
-    v.Rep()->ffVal = CORE::filteredFp(d, 2 * std::fabs(d), 2);
-    return;
-  }
-  v.Rep()->ffVal = CORE::filteredFp(static_cast<int>(exact), std::numeric_limits<double>::infinity(), 1);
+  if (!filter_by_nearest(v))
+    v.Rep()->ffVal = CORE::filteredFp(static_cast<int>(exact), std::numeric_limits<double>::infinity(), 1);
 }
 
 // A divisor known not to be 0, with a filter fit to divide by: one whose double may be 0 (a sum of

@@ -56,6 +56,11 @@ std::optional<double> nearest_from_interval(const FT& value, long prec, unsigned
 }
 }  // namespace
 
+std::optional<double> nearest_by_approximation(const FT& value) {
+  std::optional<double> d = nearest_from_interval(value, 96);
+  return d && std::isnormal(*d) ? d : std::nullopt;
+}
+
 double nearest_double(const FT& value) {
   if (auto d = nearest_from_interval(value, 96)) return *d;
   double d = CGAL::to_double(value);

@@ -39,6 +39,16 @@ double nearest_double(const FT& value);
 // The same of units (10^-9 mm) in mm: the double nearest to units / 10^9.
 double nearest_mm(const FT& units);
 
+// A point computed through square roots and divisions from coordinates far larger than the
+// differences that matter has a floating-point filter (exact_root.hpp) orders of magnitude looser
+// than its value, so that every sign built on it (where a later piece crosses it, whether it lies
+// before an element's end) is taken exactly. Its coordinates' filters are made their nearest
+// doubles' (filter_by_nearest), where one approximation finds them: the point itself is unchanged.
+inline void tighten_filters(const Point& p) {
+  filter_by_nearest(p.x());
+  filter_by_nearest(p.y());
+}
+
 // A margin for the decision trace: the sign is exact, the digits are a 20-digit rendering.
 std::string exact_text(const FT& value);
 // A length margin: units (10^-9 mm) rendered in mm.

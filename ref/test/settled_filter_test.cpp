@@ -1,7 +1,8 @@
-// exact_root.hpp's settle_filter: where CORE's floating-point filter cannot tell an expression's
-// sign (large coordinates cancelling), the filter is replaced by the value's nearest double with
-// a bound of two ulps. The new filter must be sound (the exact value within its bound), decide the
-// signs built on it again, and claim nothing where the nearest double is not a normal one.
+// exact_root.hpp's settle_filter and kernel.hpp's tighten_filters: where CORE's floating-point
+// filter cannot tell an expression's sign (large coordinates cancelling), the filter is replaced by
+// the value's nearest double with a bound of two ulps. The new filter must be sound (the exact
+// value within its bound), decide the signs built on it again, and claim nothing where the nearest
+// double is not a normal one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,6 +66,27 @@ TEST(SettledFilter, ClaimsNothingWhereTheNearestDoubleIsNotNormal) {
   EXPECT_FALSE(v.Rep()->ffVal.isOK());  // an unbounded error: every later sign is exact
   EXPECT_EQ(CGAL::sign(root), CGAL::POSITIVE);
   EXPECT_EQ(CGAL::sign(root * root - tiny), CGAL::ZERO);
+}
+
+// A corner's point (compensation.cpp's nearest_intersection) far from the origin: 10^15 units
+// plus 200 times a value whose filter cannot even tell its sign (exactly 1).
+TEST(SettledFilter, ATightenedPointDecidesTheSignsBuiltOnIt) {
+  FT big(1'000'000'000'000'000L);
+  FT one = hidden(FT(3)) / FT(3);
+  Point p(big + FT(200) * one, FT(-200) * one);
+  FT before = p.x() - big - FT(100);
+  ASSERT_FALSE(before.Rep()->ffVal.isOK());
+  tighten_filters(p);
+  EXPECT_TRUE(bound_holds(p.x()));
+  EXPECT_EQ(p.y().Rep()->ffVal.getValue(), -200.0);
+  FT after = p.x() - big - FT(100);  // built anew on the tightened coordinate
+  EXPECT_TRUE(after.Rep()->ffVal.isOK());
+  EXPECT_EQ(CGAL::sign(after), CGAL::POSITIVE);
+  // A coordinate exactly 0 has no normal nearest double: its filter stays, its sign exact.
+  Point q(hidden(FT(0)), big);
+  tighten_filters(q);
+  EXPECT_FALSE(q.x().Rep()->ffVal.isOK());
+  EXPECT_EQ(CGAL::sign(q.x()), CGAL::ZERO);
 }
 
 }  // namespace
