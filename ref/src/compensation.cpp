@@ -487,13 +487,15 @@ std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u
                                                         const Point& vertex, const Vector& ahead) {
   std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
   if (xs.empty()) return std::nullopt;
-  for (const Point& x : xs) tighten_filters(x);  // the corner's point: ends of held pieces under CDON
-  if (xs.size() == 1) return xs[0];
-  // The nearer one; equally near, the one further along `ahead` (second_farther's algebra, checked
-  // against the points in ref/test/intersection_order_test.cpp).
-  CGAL::Sign c = second_farther(u, v, vertex);
-  if (c == CGAL::ZERO) return second_ahead(u, v, ahead) == CGAL::POSITIVE ? xs[1] : xs[0];
-  return c == CGAL::NEGATIVE ? xs[1] : xs[0];
+  std::size_t k = 0;
+  if (xs.size() == 2) {
+    // The nearer one; equally near, the one further along `ahead` (second_farther's algebra,
+    // checked against the points in ref/test/intersection_order_test.cpp).
+    CGAL::Sign c = second_farther(u, v, vertex);
+    k = (c == CGAL::ZERO ? second_ahead(u, v, ahead) == CGAL::POSITIVE : c == CGAL::NEGATIVE) ? 1 : 0;
+  }
+  tighten_filters(xs[k]);  // the corner's point: an end of held pieces, crossed by later ones (CDON)
+  return xs[k];
 }
 
 void Compensation::transition_circle(const Block& next_block, const ContourElement& next, const FT& next_radius,
