@@ -77,6 +77,30 @@ double corner_trim(const Corner& c, int side, double radius) {
   return side * radius * tan_half;
 }
 
+namespace {
+// Two circles' common points lie on the line of centres at `along` times d from the smaller
+// circle's centre, across it by sqrt(across2) times |d|. From the larger one, across2 = R^2 / d^2
+// - along^2 cancels to about (rho / d)^2 and keeps only rho / d of its digits (seed 20261294,
+// case 97596: a circle of 0.007 mm on one of 48 mm, 1.1e-10 mm off). carrier_intersections and
+// carrier_gap decide on the same across2 (PROP-BOUNDARY-1).
+struct CentreLine {
+  const Carrier* from;  // the smaller circle (u of equal ones)
+  Vec2 d;               // to the other centre
+  double dd = 0, along = 0, across2 = 0;
+};
+CentreLine centre_line(const Carrier& u, const Carrier& v) {
+  const bool from_v = v.radius < u.radius;
+  const Carrier& a = from_v ? v : u;
+  const Carrier& b = from_v ? u : v;
+  CentreLine l{&a, b.point - a.point};
+  l.dd = dot(l.d, l.d);
+  if (l.dd == 0) return l;
+  l.along = (a.radius * a.radius - b.radius * b.radius + l.dd) / (2 * l.dd);
+  l.across2 = a.radius * a.radius / l.dd - l.along * l.along;
+  return l;
+}
+}  // namespace
+
 int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]) {
   if (!u.circle && !v.circle) {
     double den = cross(u.direction, v.direction);
@@ -98,15 +122,13 @@ int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]) {
     out[0] = foot - h * d, out[1] = foot + h * d;
     return h > 0 ? 2 : 1;
   }
-  Vec2 d = v.point - u.point;
-  double dd = dot(d, d);
-  if (dd == 0) return 0;
-  double along = (u.radius * u.radius - v.radius * v.radius + dd) / (2 * dd);
-  double across2 = u.radius * u.radius / dd - along * along;
-  if (across2 < 0) return 0;
-  Vec2 m = u.point + along * d;
-  double h = std::sqrt(across2);
-  out[0] = m + h * left_normal(d), out[1] = m - h * left_normal(d);
+  CentreLine l = centre_line(u, v);
+  if (l.dd == 0 || l.across2 < 0) return 0;
+  Vec2 m = l.from->point + l.along * l.d;
+  double h = std::sqrt(l.across2);
+  // In ref's order: first the point to the left of the direction from u's centre to v's.
+  Vec2 left = l.from == &u ? left_normal(l.d) : -1.0 * left_normal(l.d);
+  out[0] = m + h * left, out[1] = m - h * left;
   return h > 0 ? 2 : 1;
 }
 
@@ -236,16 +258,13 @@ double carrier_gap(const Carrier& u, const Carrier& v) {
     double g = -half2 / (c.radius + std::sqrt(dist2));  // = distance of the centre - radius
     return half2 < 0 ? missing(g) : std::min(g, 0.0);
   }
-  Vec2 d = v.point - u.point;
-  double dd = dot(d, d);
-  if (dd == 0) return missing(std::fabs(u.radius - v.radius));  // concentric: never meet (or the same circle)
-  double along = (u.radius * u.radius - v.radius * v.radius + dd) / (2 * dd);
-  double across2 = u.radius * u.radius / dd - along * along;
-  double dist = std::sqrt(dd);
+  CentreLine l = centre_line(u, v);
+  if (l.dd == 0) return missing(std::fabs(u.radius - v.radius));  // concentric: never meet (or the same circle)
+  double dist = std::sqrt(l.dd);
   double gap = std::max(dist - (u.radius + v.radius), std::fabs(u.radius - v.radius) - dist);
   // Within rounding of touching the two formulas may disagree: the deciding one's sign, its size.
-  if ((across2 < 0) != (gap > 0)) gap = -across2 * dd / (u.radius + std::fabs(along) * dist);
-  return across2 < 0 ? missing(gap) : std::min(gap, 0.0);
+  if ((l.across2 < 0) != (gap > 0)) gap = -l.across2 * l.dd / (l.from->radius + std::fabs(l.along) * dist);
+  return l.across2 < 0 ? missing(gap) : std::min(gap, 0.0);
 }
 
 double signed_rotation(Vec2 from, Vec2 to, int sense) { return sense * std::atan2(cross(from, to), dot(from, to)); }
