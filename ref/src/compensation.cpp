@@ -492,7 +492,8 @@ std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u
     // The nearer one; equally near, the one further along `ahead` (second_farther's algebra,
     // checked against the points in ref/test/intersection_order_test.cpp).
     CGAL::Sign c = second_farther(u, v, vertex);
-    k = (c == CGAL::ZERO ? second_ahead(u, v, ahead) == CGAL::POSITIVE : c == CGAL::NEGATIVE) ? 1 : 0;
+    bool second = c == CGAL::ZERO ? second_ahead(u, v, ahead) == CGAL::POSITIVE : c == CGAL::NEGATIVE;
+    k = second ? 1 : 0;
   }
   tighten_filters(xs[k]);  // the corner's point: an end of held pieces, crossed by later ones (CDON)
   return xs[k];

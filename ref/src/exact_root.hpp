@@ -18,36 +18,14 @@
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/number_utils.h>
 
-#include <cmath>
-#include <limits>
-#include <optional>
-
 namespace cutcom::ref {
 
-// The double nearest to an exact value where one approximation of it decides (kernel.cpp): no
-// exact comparison, so never a zero test; empty where it does not, or outside the normal range.
-std::optional<double> nearest_by_approximation(const CORE::Expr& value);
-
-// `v`'s filter made its nearest double d with maxAbs = 2|d| and ind = 2: an error bound of
-// maxAbs * ind * 2^-53 = 2^-51 |d|. Sound as CORE's filters require (Burnikel, Funke, Schirra):
-// |d - v| <= 2^-53 |v| (a nearest double in the normal range) lies below that bound, and |v|,
-// |d| <= maxAbs; d has v's sign. False (the filter unchanged) where no such d was found.
-inline bool filter_by_nearest(const CORE::Expr& v) {
-  std::optional<double> d = nearest_by_approximation(v);
-  if (!d || !std::isnormal(*d)) return false;
-  v.Rep()->ffVal = CORE::filteredFp(*d, 2 * std::fabs(*d), 2);
-  return true;
-}
-
 // Where `v`'s filter does not prove its sign (CORE's isOK(): a filter that does proves the exact
-// one), it is replaced by one that does (filter_by_nearest), so no operation finds a negative root
-// argument or a zero divisor in it. Where no nearest double is found, the bound is infinite
-// instead: the filter claims nothing and CORE decides every later sign exactly.
-inline void settle_filter(const CORE::Expr& v, CGAL::Sign exact) {
-  if (exact == CGAL::ZERO || v.Rep()->ffVal.isOK()) return;
-  if (!filter_by_nearest(v))
-    v.Rep()->ffVal = CORE::filteredFp(static_cast<int>(exact), std::numeric_limits<double>::infinity(), 1);
-}
+// one), it is replaced by one that does: its nearest double's (kernel.hpp, filter_by_nearest), so
+// no operation finds a negative root argument or a zero divisor in it. Where no nearest double is
+// found, the bound is infinite instead: the filter claims nothing and CORE decides every later
+// sign exactly (kernel.cpp).
+void settle_filter(const CORE::Expr& v, CGAL::Sign exact);
 
 // A divisor known not to be 0, with a filter fit to divide by: one whose double may be 0 (a sum of
 // nearly opposite terms) has CORE warn of a possible zero divisor as above. Its exact sign is

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -56,9 +57,22 @@ std::optional<double> nearest_from_interval(const FT& value, long prec, unsigned
 }
 }  // namespace
 
-std::optional<double> nearest_by_approximation(const FT& value) {
-  std::optional<double> d = nearest_from_interval(value, 96);
-  return d && std::isnormal(*d) ? d : std::nullopt;
+// The filter of d, the double nearest to v, with maxAbs = 2|d| and ind = 2: an error bound of
+// maxAbs * ind * 2^-53 = 2^-51 |d|. Sound as CORE's filters require (Burnikel, Funke, Schirra):
+// |d - v| <= 2^-53 |v| (a nearest double in the normal range) lies below that bound, |v| and |d|
+// are at most maxAbs, and d has v's sign. The double only bounds the filter; the signs it then
+// decides are exact, as every sign CORE's filter decides.
+bool filter_by_nearest(const FT& v) {
+  std::optional<double> d = nearest_from_interval(v, 96);
+  if (!d || !std::isnormal(*d)) return false;
+  v.Rep()->ffVal = CORE::filteredFp(*d, 2 * std::fabs(*d), 2);
+  return true;
+}
+
+void settle_filter(const FT& v, CGAL::Sign exact) {
+  if (exact == CGAL::ZERO || v.Rep()->ffVal.isOK()) return;
+  if (!filter_by_nearest(v))
+    v.Rep()->ffVal = CORE::filteredFp(static_cast<int>(exact), std::numeric_limits<double>::infinity(), 1);
 }
 
 double nearest_double(const FT& value) {

@@ -39,6 +39,12 @@ double nearest_double(const FT& value);
 // The same of units (10^-9 mm) in mm: the double nearest to units / 10^9.
 double nearest_mm(const FT& units);
 
+// `v`'s floating-point filter replaced by one of its nearest double and a bound of two of that
+// double's ulps, where one approximation of v finds that double in the normal range (kernel.cpp,
+// with the soundness argument); false, the filter unchanged, where it does not. Never an exact
+// comparison, so never a zero test.
+bool filter_by_nearest(const FT& v);
+
 // A point computed through square roots and divisions from coordinates far larger than the
 // differences that matter has a floating-point filter (exact_root.hpp) orders of magnitude looser
 // than its value, so that every sign built on it (where a later piece crosses it, whether it lies
