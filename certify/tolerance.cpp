@@ -261,9 +261,9 @@ double Tolerance::band(std::string_view clause) const {
   if (clause == "TRC-ELEMENT-1" || clause == "TRC-ARC-ELEMENT-1" || clause == "TRC-APPR-NORM-1" ||
       clause == "TRC-RETR-NORM-1" || clause == "TRC-KONT-1" || clause == "TRC-KONT-2" || clause == "TRC-EDGE-5" ||
       clause == "TRC-EDGE-6" || clause == "TRC-CD-5" || clause == "TRC-CD-6" || clause == "TRC-LOOK-1" ||
-      clause == "TRC-LOOK-2" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" || clause == "ARC-CR-1" ||
-      clause == "TRC-ARC-CORNER-1" || clause == "TRC-CD-3" || clause == "SAR-SIDE-2" || clause == "SAR-DISR-1" ||
-      clause == "SAR-DISR-2" || clause == "SAR-DISCL-3" || clause == "SAR-SUB-1")
+      clause == "TRC-LOOK-2" || clause == "TRC-LOOK-4" || clause == "TRC-ARC-EQ-1" || clause == "ARC-CENTRE-2" ||
+      clause == "ARC-CR-1" || clause == "TRC-ARC-CORNER-1" || clause == "TRC-CD-3" || clause == "SAR-SIDE-2" ||
+      clause == "SAR-DISR-1" || clause == "SAR-DISR-2" || clause == "SAR-DISCL-3" || clause == "SAR-SUB-1")
     return coordinate;
   return 0;  // decisions on exact decimals (block kinds, alarms) never diverge
 }

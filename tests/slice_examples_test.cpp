@@ -169,6 +169,51 @@ TEST(SliceExamples, ShortBlockAtAnInnerCornerIsSkipped) {
   }
 }
 
+// The look-ahead's decision TRC-LOOK-4 in `run` at `line`; fails the test when there is none.
+const Decision& nearer_choice(const RunResult& run, int line) {
+  static const Decision kNone{};
+  for (const Decision& d : run.decisions)
+    if (d.clause == "TRC-LOOK-4" && d.line == line) return d;
+  ADD_FAILURE() << "no TRC-LOOK-4 decision at line " << line;
+  return kNone;
+}
+
+// covers: TRC-LOOK-2 TRC-LOOK-4
+TEST(SliceExamples, LookAheadTakesTheFurtherAlongOfTwoEquallyNearIntersections) {
+  // Radius 1. N40 (0.5 mm up) is too short at the inner corner after N30. The look-ahead meets N30's
+  // equidistant y = 1 with N50's, the circle of radius 5 + 1 about (10,-4.5), at x = 10 -+
+  // sqrt(5.75): the points lie symmetric about x = 10, and N50's normal start (10,1.5) lies on
+  // that axis. Equally near, exactly: the one further along N50's start tangent (+X) is taken,
+  // and it lies on N50's equidistant.
+  std::string tie =
+      "N20 G1 G41 G450 X0 Y0 F500\nN30 X10\nN40 Y0.5\nN50 G2 X15 Y-4.5 I0 J-5\nN60 G1 Y-20\n"
+      "N70 G40 X25\n";
+  Runs r = run_both(program(tie, "1"));
+  ASSERT_TRUE(r.fast_ok && r.ref_ok);
+  const double x = 10 + std::sqrt(5.75);
+  for (const RunResult* run : {&r.fast, &r.ref}) {
+    const Decision& d = nearer_choice(*run, 7);
+    EXPECT_EQ(d.branch, "tie");
+    EXPECT_TRUE(has_decision(*run, "TRC-LOOK-2", "intersection"));
+    ASSERT_GE(run->path.size(), 4u);
+    expect_point(run->path[2].end, {x, 1, 0}, "N30's equidistant ends at the intersection");
+  }
+  EXPECT_EQ(nearer_choice(r.ref, 7).margin_exact, "0");
+  EXPECT_EQ(nearer_choice(r.fast, 7).margin, 0);
+  // N40 0.9 up, N50 a circle of radius 1 about (10.28,-0.06) (7-24-25): its normal start
+  // (10,0.9) + (-0.28,0.96) = (9.72,1.86) lies 0.56 left of the axis x = 10.28, on the side of the
+  // first point (behind along y = 1), which is the nearer by 0.56 (less than the carriers'
+  // overlap, 0.94).
+  Runs off =
+      run_both(program("N20 G1 G41 G450 X0 Y0 F500\nN30 X10\nN40 Y0.9\nN50 G2 X11.28 Y-0.06 I0.28 J-0.96\n"
+                       "N60 G1 Y-20\nN70 G40 X25\n",
+                       "1"));
+  const double by = 0.56;
+  for (const RunResult* run : {&off.fast, &off.ref}) EXPECT_EQ(nearer_choice(*run, 7).branch, "first");
+  EXPECT_NEAR(nearer_choice(off.fast, 7).margin, by, 1e-12);
+  EXPECT_NEAR(std::stod(nearer_choice(off.ref, 7).margin_exact), by, 1e-15);
+}
+
 // covers: TRC-ELEMENT-1
 TEST(SliceExamples, ElementShortenedToZeroVanishes) {
   // N40 is exactly 4 mm: the inner corners at both of its ends take r tan(45) = 2 mm each, so its

@@ -35,6 +35,9 @@ constexpr std::array kRules{
     BoundaryRule{"TRC-LOOK-1", "too-short", kNegative},
     BoundaryRule{"TRC-LOOK-2", "intersection", kNonNegative},  // an intersection at the equidistant's start is valid
     BoundaryRule{"TRC-LOOK-2", "none", kNegative},
+    BoundaryRule{"TRC-LOOK-4", "first", kPositive},  // the first point nearer
+    BoundaryRule{"TRC-LOOK-4", "second", kNegative},
+    BoundaryRule{"TRC-LOOK-4", "tie", kZero},  // equally near (or one point): the one further along
     BoundaryRule{"TRC-APPR-NORM-1", "line", kPositive},
     BoundaryRule{"TRC-APPR-NORM-1", "zero-length", kZero},
     BoundaryRule{"TRC-RETR-NORM-1", "line", kPositive},

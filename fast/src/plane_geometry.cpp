@@ -132,30 +132,36 @@ int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]) {
   return h > 0 ? 2 : 1;
 }
 
-// Of two intersections the nearer; of two equally near the one further along `ahead`. Equally
-// near within 1e-12 of the scale: `near` on the line of centres (aligned centres, common in
-// programs and in SAR's circles by construction) is an exact tie for ref, which the doubles'
-// distances, off by the rounding of everything before them, would break at random.
+// Of two intersections the nearer; of two equally near the one further along `ahead`.
 bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out) {
   Vec2 xs[2];
   int n = carrier_intersections(u, v, xs);
   if (n == 0) return false;
-  out = xs[0];
-  if (n == 2) {
-    // Which is nearer, by (d1^2 - d0^2) / 2 = (x1 - x0).(m - near), m the chord's midpoint: no
-    // difference of two rounded distances, which near-touching carriers leave a rounding apart
-    // (seed 20261276, case 342258: distances 1.3e-13 mm apart, within the old relative tie band,
-    // so the other point was taken). The points' error lies along the chord (intersection_error).
-    Vec2 chord = xs[1] - xs[0], mid = 0.5 * (xs[0] + xs[1]);
-    double k = dot(chord, mid - near);
-    double eps = std::numeric_limits<double>::epsilon();
-    double band =
-        norm(chord) * (2 * intersection_error(u, v, xs[0]) +
-                       64 * eps * (std::fabs(mid.a) + std::fabs(mid.b) + std::fabs(near.a) + std::fabs(near.b)));
-    bool tie = std::fabs(k) <= band;  // equally near within rounding: the one further along `ahead`
-    if (tie ? dot(xs[1] - near, ahead) > dot(xs[0] - near, ahead) : k < 0) out = xs[1];
-  }
+  out = xs[n == 2 && nearer_choice(u, v, near, ahead).second ? 1 : 0];
   return true;
+}
+
+// Which is nearer from the carriers, as ref decides it (second_farther), not from the points:
+// their distances differ by a rounding where the carriers nearly touch (seed 20261276, case
+// 342258: 1.3e-13 mm), and `near` exactly on the axis (aligned centres, common in programs and in
+// SAR's circles by construction) is an exact tie that the points' rounding would break at random.
+NearerChoice nearer_choice(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead) {
+  // `across` points from the first of carrier_intersections' points to the second (ref's order).
+  Vec2 on_axis, across;
+  if (u.circle != v.circle) {
+    const Carrier& l = u.circle ? v : u;
+    on_axis = (u.circle ? u : v).point, across = l.direction;
+  } else {
+    on_axis = u.point, across = -1.0 * left_normal(v.point - u.point);
+  }
+  NearerChoice c;
+  c.first_nearer = dot(on_axis - near, across) / norm(across);
+  double band = 64 * std::numeric_limits<double>::epsilon() *
+                (std::fabs(near.a) + std::fabs(near.b) + std::fabs(on_axis.a) + std::fabs(on_axis.b));
+  if (std::fabs(c.first_nearer) <= band) c.first_nearer = 0;  // equally near within rounding
+  // A tie takes the one further along `ahead` (across it exactly: the first, as ref).
+  c.second = c.first_nearer == 0 ? dot(across, ahead) > 0 : c.first_nearer < 0;
+  return c;
 }
 
 namespace {

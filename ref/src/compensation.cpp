@@ -435,6 +435,7 @@ void Compensation::look_ahead(const Block& b) {
   Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
   Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
   std::optional<Point> y = nearest_intersection(u, v, start, cand.start_dir);
+  if (y && (u.circle || v.circle)) decide_nearer(b.words.line, u, v, start);
   bool valid = false;
   // No intersection at all: minus the gap between the carriers (parallel lines, and one circle
   // carrying both, which has no gap and no point: "-inf").
@@ -453,11 +454,12 @@ void Compensation::look_ahead(const Block& b) {
       margin = on.left_text;
     else
       margin = on.start_nearer ? on.along_text : on.left_text;
-    // With a circle the carriers' overlap too, when it is less (picked by the filter value, as
-    // TRC-CD-3): carriers that just touch are the knife edge of meeting at all.
+    // With a circle the carriers' overlap too, when it is less (picked by the texts' values, both
+    // in mm: the depth itself is in the kernel's units): carriers that just touch are the knife
+    // edge of meeting at all.
     if (valid && margins_kept() && (u.circle || v.circle)) {
-      FT depth = -carrier_gap<Kernel>(u, v);
-      if (rough(depth) < std::stod(margin)) margin = exact_mm(depth);
+      std::string depth = exact_mm(-carrier_gap<Kernel>(u, v));
+      if (std::stod(depth) < std::stod(margin)) margin = depth;
     }
   }
   decide("TRC-LOOK-2", b.words.line, valid ? "intersection" : "none", margin);
@@ -467,6 +469,25 @@ void Compensation::look_ahead(const Block& b) {
   if (!close_open(*y, b, Placed::kCorner, &candidate)) return;
   run_skipped(*y);
   open(b, cand, *y, radius);
+}
+
+// TRC-LOOK-4: which of the carriers' points the look-ahead took. One point (they touch) is a tie.
+// The margin is the lesser of the two distances at which the choice would change: p on the points'
+// axis of symmetry, or the carriers no longer crossing (their overlap, as TRC-LOOK-2's margin).
+void Compensation::decide_nearer(int line, const Carrier<Kernel>& u, const Carrier<Kernel>& v, const Point& p) {
+  FT depth = -carrier_gap<Kernel>(u, v);  // > 0: two points
+  // Two circles' points are named from the side (G42 swaps them), so that mirroring keeps names.
+  const int named = u.circle && v.circle ? comp_->s : 1;
+  CGAL::Sign farther = CGAL::sign(depth) == CGAL::POSITIVE ? second_farther(u, v, p) : CGAL::ZERO;
+  if (named < 0) farther = CGAL::opposite(farther);
+  std::string margin;
+  if (margins_kept() && farther != CGAL::ZERO) {
+    FT by = first_nearer_by(u, v, p) * FT(named);
+    margin = exact_mm(rough(depth) < std::fabs(rough(by)) ? (farther == CGAL::NEGATIVE ? -depth : depth) : by);
+  } else if (margins_kept()) {
+    margin = exact_mm(FT(0));
+  }
+  decide("TRC-LOOK-4", line, farther == CGAL::ZERO ? "tie" : farther == CGAL::POSITIVE ? "first" : "second", margin);
 }
 
 void Compensation::pass_over(const Block& b) {
@@ -491,9 +512,7 @@ std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u
   if (xs.size() == 2) {
     // The nearer one; equally near, the one further along `ahead` (second_farther's algebra,
     // checked against the points in ref/test/intersection_order_test.cpp).
-    CGAL::Sign c = second_farther(u, v, vertex);
-    bool second = c == CGAL::ZERO ? second_ahead(u, v, ahead) == CGAL::POSITIVE : c == CGAL::NEGATIVE;
-    k = second ? 1 : 0;
+    k = takes_second(u, v, vertex, ahead) ? 1 : 0;
   }
   tighten_filters(xs[k]);  // the corner's point: an end of held pieces, crossed by later ones (CDON)
   return xs[k];

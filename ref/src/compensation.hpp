@@ -261,6 +261,8 @@ class Compensation {
   // the orientation of the plane (TRC-ARC-CORNER-1, TRC-LOOK-2).
   static std::optional<Point> nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
                                                    const Point& vertex, const Vector& ahead);
+  // TRC-LOOK-4: the look-ahead's choice of the two points where u and v meet, traced.
+  void decide_nearer(int line, const Carrier<Kernel>& u, const Carrier<Kernel>& v, const Point& p);
 
   // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*, edge_strategy.cpp) ------
   EdgeCurve edge_curve(EdgeStrategy strategy, const Point& vertex, const Point& normal_point, const Vector& outward,

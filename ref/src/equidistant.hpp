@@ -147,4 +147,29 @@ CGAL::Sign second_ahead(const Carrier<K>& u, const Carrier<K>& v, const typename
   return -CGAL::sign(perp * w);
 }
 
+// The choice of two intersections: the second when it is the nearer to p, or equally near and
+// further along w (TRC-ARC-CORNER-1, TRC-LOOK-2, TRC-LOOK-4).
+template <class K>
+bool takes_second(const Carrier<K>& u, const Carrier<K>& v, const typename K::Point_2& p,
+                  const typename K::Vector_2& w) {
+  CGAL::Sign c = second_farther(u, v, p);
+  return c == CGAL::ZERO ? second_ahead(u, v, w) == CGAL::POSITIVE : c == CGAL::NEGATIVE;
+}
+
+// TRC-LOOK-4's measure: how much nearer to p the first of the two intersections is than the
+// second (mm; 0 equally near): the distance of p from the points' axis of symmetry (the
+// perpendicular through the circle's centre to the line, the line of centres), signed. Half the
+// difference of the squared distances over the chord, without the points: second_farther's
+// algebra divided by the length of l.direction, of d.
+template <class K>
+typename K::FT first_nearer_by(const Carrier<K>& u, const Carrier<K>& v, const typename K::Point_2& p) {
+  if (u.circle != v.circle) {
+    const Carrier<K>& l = u.circle ? v : u;
+    const Carrier<K>& c = u.circle ? u : v;
+    return ((c.point - p) * l.direction) / exact_root(l.direction.squared_length());
+  }
+  typename K::Vector_2 d = v.point - u.point, perp(-d.y(), d.x());
+  return ((p - u.point) * perp) / exact_root(d.squared_length());
+}
+
 }  // namespace cutcom::ref
