@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "campaign.hpp"
@@ -38,8 +39,27 @@ bool run(const std::string& engine, const std::string& text, const MachineData& 
   }
 }
 
-// PROP-CORPUS-1 for one case: ref gives the stored output exactly, fast agrees with it.
-void replays(const std::filesystem::path& p) {
+// A verdict as tests/corpus/verdicts.txt pins it: "agree" or "knife-edge CLAUSE".
+std::string pinned_form(const Verdict& v) {
+  if (v.kind == Verdict::Kind::kAgree) return "agree";
+  return (v.kind == Verdict::Kind::kKnifeEdge ? "knife-edge " : "diverge ") + v.clause;
+}
+
+// tests/corpus/verdicts.txt: "NAME.mpf knife-edge CLAUSE" lines (# comments); other cases agree.
+std::map<std::string, std::string> pinned_verdicts() {
+  std::map<std::string, std::string> pins;
+  std::ifstream in(std::filesystem::path(CUTCOM_CORPUS_DIR) / "verdicts.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::size_t space = line.find(' ');
+    if (space != std::string::npos) pins[line.substr(0, space)] = line.substr(space + 1);
+  }
+  return pins;
+}
+
+// PROP-CORPUS-1 for one case: ref gives the stored output exactly, fast agrees with it; the verdict.
+std::string replays(const std::filesystem::path& p) {
   std::string text = slurp(p);
   MachineData md;
   std::filesystem::path md_file = p;
@@ -68,6 +88,7 @@ void replays(const std::filesystem::path& p) {
   Verdict v = compare(r.result, f.result,
                       Tolerance::for_program(conditioning_of(blocks, md.cutcom_maxnum_check_blocks, &r.result)));
   EXPECT_NE(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  std::string verdict = pinned_form(v);
   // PROP-TRACE-1: both engines take the same path without their trace.
   for (const char* engine : {"ref", "fast"}) {
     UntracedSink u;
@@ -76,6 +97,7 @@ void replays(const std::filesystem::path& p) {
         untraced_difference(engine == std::string("ref") ? r.result : f.result, u.result, engine);
     EXPECT_FALSE(d) << *d;
   }
+  return verdict;
 }
 
 // covers: PROP-CORPUS-1 PROP-DIFF-1 PROP-TRACE-1
@@ -85,10 +107,20 @@ TEST(Corpus, EveryCaseReplays) {
     if (e.path().extension() == ".mpf") cases.push_back(e.path());
   std::sort(cases.begin(), cases.end());
   ASSERT_FALSE(cases.empty());
+  const std::map<std::string, std::string> pins = pinned_verdicts();
+  ASSERT_FALSE(pins.empty());
   for (const auto& p : cases) {
-    SCOPED_TRACE(p.filename().string());
-    replays(p);
+    const std::string name = p.filename().string();
+    SCOPED_TRACE(name);
+    std::string verdict = replays(p);
+    auto pin = pins.find(name);
+    EXPECT_EQ(verdict, pin == pins.end() ? "agree" : pin->second)
+        << "the verdict pinned in tests/corpus/verdicts.txt changed (PROP-CORPUS-1): review, then pin \"" << name << " "
+        << verdict << "\" (or leave an agreeing case out)";
   }
+  for (const auto& [name, verdict] : pins)
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(CUTCOM_CORPUS_DIR) / name))
+        << name << " is pinned, not in the corpus";
 }
 
 // What a divergence leaves behind replays as written: ref's output of the file itself, comment

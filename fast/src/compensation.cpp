@@ -510,9 +510,10 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   // Carriers within rounding of touching touch (campaign 20261214, case 492847: a line exactly
   // tangent to a SAR semicircle's equidistant missed it by 4e-16 mm, alarm 10751 in fast only;
   // 20261215, case 11707: the same crossed it 3.5e-8 mm off the point).
-  bool found = !parallel &&
-               (touching_within_rounding(cu, cv, y) || nearest_intersection(cu, cv, start, cand.start_tangent(), y));
-  if (found && (cu.circle || cv.circle)) decide_nearer(b.words.line, cu, cv, start, cand.start_tangent());
+  NearerChoice choice;  // touching: one point, a tie
+  bool found = !parallel && (touching_within_rounding(cu, cv, y) ||
+                             nearest_intersection(cu, cv, start, cand.start_tangent(), y, &choice));
+  if (found && (cu.circle || cv.circle)) decide_nearer(b.words.line, cu, cv, choice);
   bool valid = false;
   // No intersection at all: minus the gap between the carriers (parallel lines, and one circle
   // carrying both, which has no gap and no point: -inf).
@@ -536,12 +537,12 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   open_element(c, cand, y, radius);
 }
 
-// TRC-LOOK-4: which of the carriers' points the look-ahead took (as nearest_intersection). The
-// margin is the lesser of the two distances at which the choice would change, as ref's: `start`
-// on the points' axis of symmetry, or the carriers no longer crossing (their gap).
-void Compensation::decide_nearer(int line, const Carrier& u, const Carrier& v, Vec2 start, Vec2 ahead) {
+// TRC-LOOK-4: which of the carriers' points the look-ahead took (nearest_intersection's choice).
+// The margin is the lesser of the two distances at which the choice would change, as ref's: the
+// normal start on the points' axis of symmetry, or the carriers no longer crossing (their gap).
+void Compensation::decide_nearer(int line, const Carrier& u, const Carrier& v, const NearerChoice& choice) {
   // Two circles' points are named from the side (G42 swaps them), so that mirroring keeps names.
-  double by = nearer_choice(u, v, start, ahead).first_nearer * (u.circle && v.circle ? s : 1);
+  double by = choice.first_nearer * (u.circle && v.circle ? s : 1);
   double depth = trace.keeps_decisions() ? std::fabs(carrier_gap(u, v)) : 0;  // only the margin needs it
   double margin = depth > 0 && depth < std::fabs(by) ? std::copysign(depth, by) : by;
   decide("TRC-LOOK-4", line, by == 0 ? "tie" : by > 0 ? "first" : "second", margin);

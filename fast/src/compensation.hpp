@@ -382,7 +382,7 @@ class Compensation {
 
   // TRC-LOOK-3: a skipped block loses its plane motion; the rest runs at `at`.
   void skip_at(BlockCopy& k, Vec2 at);
-  void decide_nearer(int line, const Carrier& u, const Carrier& v, Vec2 start, Vec2 ahead);  // TRC-LOOK-4
+  void decide_nearer(int line, const Carrier& u, const Carrier& v, const NearerChoice& choice);  // TRC-LOOK-4
 
   // TRC-EDGE-1 on approach: the first element would run backwards to meet c's equidistant; the
   // approach line ends at the hit on c's equidistant, the first block and those between are skipped.

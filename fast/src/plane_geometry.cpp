@@ -133,19 +133,23 @@ int carrier_intersections(const Carrier& u, const Carrier& v, Vec2 out[2]) {
 }
 
 // Of two intersections the nearer; of two equally near the one further along `ahead`.
-bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out) {
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out, NearerChoice* choice) {
   Vec2 xs[2];
   int n = carrier_intersections(u, v, xs);
   if (n == 0) return false;
-  out = xs[n == 2 && nearer_choice(u, v, near, ahead).second ? 1 : 0];
+  NearerChoice c = n == 2 ? nearer_choice(u, v, xs, near, ahead) : NearerChoice{};
+  out = xs[c.second ? 1 : 0];
+  if (choice) *choice = c;
   return true;
 }
 
-// Which is nearer from the carriers, as ref decides it (second_farther), not from the points:
-// their distances differ by a rounding where the carriers nearly touch (seed 20261276, case
-// 342258: 1.3e-13 mm), and `near` exactly on the axis (aligned centres, common in programs and in
-// SAR's circles by construction) is an exact tie that the points' rounding would break at random.
-NearerChoice nearer_choice(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead) {
+// Which is nearer from the carriers, as ref decides it (second_farther), not from the points' own
+// distances, which differ by a rounding where the carriers nearly touch (seed 20261276, case
+// 342258: 1.3e-13 mm). `near` exactly on the axis (aligned centres, common in programs and in
+// SAR's circles by construction) is an exact tie, which fast takes as one within its error: that
+// of the carriers' data (SAR's circles are computed), which moves the points along the chord by
+// up to intersection_error and the axis with them.
+NearerChoice nearer_choice(const Carrier& u, const Carrier& v, const Vec2 xs[2], Vec2 near, Vec2 ahead) {
   // `across` points from the first of carrier_intersections' points to the second (ref's order).
   Vec2 on_axis, across;
   if (u.circle != v.circle) {
@@ -156,9 +160,10 @@ NearerChoice nearer_choice(const Carrier& u, const Carrier& v, Vec2 near, Vec2 a
   }
   NearerChoice c;
   c.first_nearer = dot(on_axis - near, across) / norm(across);
-  double band = 64 * std::numeric_limits<double>::epsilon() *
-                (std::fabs(near.a) + std::fabs(near.b) + std::fabs(on_axis.a) + std::fabs(on_axis.b));
-  if (std::fabs(c.first_nearer) <= band) c.first_nearer = 0;  // equally near within rounding
+  double band = 2 * intersection_error(u, v, xs[0]) +
+                64 * std::numeric_limits<double>::epsilon() *
+                    (std::fabs(near.a) + std::fabs(near.b) + std::fabs(on_axis.a) + std::fabs(on_axis.b));
+  if (std::fabs(c.first_nearer) <= band) c.first_nearer = 0;  // equally near within fast's error
   // A tie takes the one further along `ahead` (across it exactly: the first, as ref).
   c.second = c.first_nearer == 0 ? dot(across, ahead) > 0 : c.first_nearer < 0;
   return c;

@@ -69,17 +69,19 @@ struct Carrier {
   Vec2 point, direction;  // line
   double radius = 0;      // circle about `point`
 };
-bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out);
-// That choice (TRC-LOOK-4), from the carriers: the two points lie symmetric about an axis (the
-// perpendicular through the circle's centre to the line, the line of centres). `first_nearer`: how
-// much nearer to `near` the first of carrier_intersections' points is than the second (mm: the
-// distance of `near` from the axis, signed); 0 within the rounding of the carriers and `near`, a
-// tie, which takes the point further along `ahead`.
+// Which of two points was taken (TRC-LOOK-4), from the carriers: the two points lie symmetric about
+// an axis (the perpendicular through the circle's centre to the line, the line of centres).
+// `first_nearer`: how much nearer to `near` the first of carrier_intersections' points is than
+// the second (mm: the distance of `near` from the axis, signed); 0 within fast's error of it, a
+// tie, which takes the point further along `ahead`; 0 too for one point.
 struct NearerChoice {
   double first_nearer = 0;
   bool second = false;  // the second point is taken
 };
-NearerChoice nearer_choice(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead);
+bool nearest_intersection(const Carrier& u, const Carrier& v, Vec2 near, Vec2 ahead, Vec2& out,
+                          NearerChoice* choice = nullptr);
+// That choice between the two points xs of carrier_intersections.
+NearerChoice nearer_choice(const Carrier& u, const Carrier& v, const Vec2 xs[2], Vec2 near, Vec2 ahead);
 // The same at a programmed corner `corner`, the equidistants' carriers for tool radius `r`, and
 // their gap as a margin (TRC-ARC-CORNER-1).
 bool corner_intersection(const Carrier& u, const Carrier& v, Vec2 corner, Vec2 ahead, double r, Vec2& out);
