@@ -434,8 +434,9 @@ void Compensation::look_ahead(const Block& b) {
   if (!equidistant_exists(cand, radius)) return pass_over(b);
   Point start = equidistant_point<Kernel>(cand.a, cand.start_normal(), comp_->side_radius);
   Carrier<Kernel> u = carrier_of(*open_, open_radius_), v = carrier_of(cand, radius);
-  std::optional<Point> y = nearest_intersection(u, v, start, cand.start_dir);
-  if (y && (u.circle || v.circle)) decide_nearer(b.words.line, u, v, start);
+  CGAL::Sign farther = CGAL::ZERO;
+  std::optional<Point> y = nearest_intersection(u, v, start, cand.start_dir, &farther);
+  if (y && (u.circle || v.circle)) decide_nearer(b.words.line, u, v, start, farther);
   bool valid = false;
   // No intersection at all: minus the gap between the carriers (parallel lines, and one circle
   // carrying both, which has no gap and no point: "-inf").
@@ -471,18 +472,18 @@ void Compensation::look_ahead(const Block& b) {
   open(b, cand, *y, radius);
 }
 
-// TRC-LOOK-4: which of the carriers' points the look-ahead took. One point (they touch) is a tie.
-// The margin is the lesser of the two distances at which the choice would change: p on the points'
-// axis of symmetry, or the carriers no longer crossing (their overlap, as TRC-LOOK-2's margin).
-void Compensation::decide_nearer(int line, const Carrier<Kernel>& u, const Carrier<Kernel>& v, const Point& p) {
-  FT depth = -carrier_gap<Kernel>(u, v);  // > 0: two points
+// TRC-LOOK-4: which of the carriers' points the look-ahead took (`farther`: nearest_intersection's
+// sign; one point, they touch, is a tie). The margin is the lesser of the two distances at which
+// the choice would change: p on the points' axis of symmetry, or the carriers no longer crossing
+// (their overlap, as TRC-LOOK-2's margin).
+void Compensation::decide_nearer(int line, const Carrier<Kernel>& u, const Carrier<Kernel>& v, const Point& p,
+                                 CGAL::Sign farther) {
   // Two circles' points are named from the side (G42 swaps them), so that mirroring keeps names.
   const int named = u.circle && v.circle ? comp_->s : 1;
-  CGAL::Sign farther = CGAL::sign(depth) == CGAL::POSITIVE ? second_farther(u, v, p) : CGAL::ZERO;
   if (named < 0) farther = CGAL::opposite(farther);
   std::string margin;
   if (margins_kept() && farther != CGAL::ZERO) {
-    FT by = first_nearer_by(u, v, p) * FT(named);
+    FT depth = -carrier_gap<Kernel>(u, v), by = first_nearer_by(u, v, p) * FT(named);
     margin = exact_mm(rough(depth) < std::fabs(rough(by)) ? (farther == CGAL::NEGATIVE ? -depth : depth) : by);
   } else if (margins_kept()) {
     margin = exact_mm(FT(0));
@@ -505,14 +506,17 @@ void Compensation::run_skipped(const Point& at_point) {
 }
 
 std::optional<Point> Compensation::nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
-                                                        const Point& vertex, const Vector& ahead) {
+                                                        const Point& vertex, const Vector& ahead, CGAL::Sign* farther) {
   std::vector<Point> xs = carrier_intersections<Kernel>(u, v);
   if (xs.empty()) return std::nullopt;
   std::size_t k = 0;
   if (xs.size() == 2) {
     // The nearer one; equally near, the one further along `ahead` (second_farther's algebra,
     // checked against the points in ref/test/intersection_order_test.cpp).
-    k = takes_second(u, v, vertex, ahead) ? 1 : 0;
+    CGAL::Sign c = second_farther(u, v, vertex);
+    bool second = c == CGAL::ZERO ? second_ahead(u, v, ahead) == CGAL::POSITIVE : c == CGAL::NEGATIVE;
+    k = second ? 1 : 0;
+    if (farther) *farther = c;
   }
   tighten_filters(xs[k]);  // the corner's point: an end of held pieces, crossed by later ones (CDON)
   return xs[k];

@@ -259,10 +259,13 @@ class Compensation {
   // The carriers' intersection nearest to `vertex`; of two equally near, the one further along
   // `ahead` (the second element's direction of travel), so that the choice does not depend on
   // the orientation of the plane (TRC-ARC-CORNER-1, TRC-LOOK-2).
+  // `farther`, where given: the sign of |xs[1] - vertex| - |xs[0] - vertex| it chose by (left as
+  // it was for one point).
   static std::optional<Point> nearest_intersection(const Carrier<Kernel>& u, const Carrier<Kernel>& v,
-                                                   const Point& vertex, const Vector& ahead);
+                                                   const Point& vertex, const Vector& ahead,
+                                                   CGAL::Sign* farther = nullptr);
   // TRC-LOOK-4: the look-ahead's choice of the two points where u and v meet, traced.
-  void decide_nearer(int line, const Carrier<Kernel>& u, const Carrier<Kernel>& v, const Point& p);
+  void decide_nearer(int line, const Carrier<Kernel>& u, const Carrier<Kernel>& v, const Point& p, CGAL::Sign farther);
 
   // --- G460 / G461 / G462: a too-short first or last block (TRC-EDGE-*, edge_strategy.cpp) ------
   EdgeCurve edge_curve(EdgeStrategy strategy, const Point& vertex, const Point& normal_point, const Vector& outward,

@@ -147,15 +147,6 @@ CGAL::Sign second_ahead(const Carrier<K>& u, const Carrier<K>& v, const typename
   return -CGAL::sign(perp * w);
 }
 
-// The choice of two intersections: the second when it is the nearer to p, or equally near and
-// further along w (TRC-ARC-CORNER-1, TRC-LOOK-2, TRC-LOOK-4).
-template <class K>
-bool takes_second(const Carrier<K>& u, const Carrier<K>& v, const typename K::Point_2& p,
-                  const typename K::Vector_2& w) {
-  CGAL::Sign c = second_farther(u, v, p);
-  return c == CGAL::ZERO ? second_ahead(u, v, w) == CGAL::POSITIVE : c == CGAL::NEGATIVE;
-}
-
 // TRC-LOOK-4's measure: how much nearer to p the first of the two intersections is than the
 // second (mm; 0 equally near): the distance of p from the points' axis of symmetry (the
 // perpendicular through the circle's centre to the line, the line of centres), signed. Half the
