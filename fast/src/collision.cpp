@@ -9,6 +9,10 @@
 namespace cutcom::fast {
 
 bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
+  return entry_corner(m, before, en) && entry_pieces(m, en);
+}
+
+bool Compensation::entry_corner(const BlockCopy& m, const BlockCopy& before, Entry& en) {
   en.element = element_of(m);
   en.radius = 0, en.lead = Entry::Lead::kNone;  // `en` is reused from block to block
   en.before = &before;
@@ -19,11 +23,7 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
     if (!(en.radius > 0)) return decide("TRC-CD-2", m.line, "collapsed", en.radius), false;
   }
   en.normal_start = Element::offset(next.start, next.start_tangent(), sr);
-  Vec2 end = Element::offset(next.end, next.end_tangent(), sr);
-  auto equidistant_from = [&](Vec2 from, bool full) {
-    return next.arc ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
-                    : PathPiece::segment(from, end);
-  };
+  en.normal_end = Element::offset(next.end, next.end_tangent(), sr);
   en.before_element = element_of(before);
   const Element& prev = en.before_element;
   double prev_radius = prev.arc ? exactly_inside(before, prev, prev.equidistant_radius(sr)) : 0;
@@ -39,9 +39,24 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
     static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
     decide("TRC-CD-2", m.line, kKind[static_cast<int>(c.kind)], c.sine);
   }
+  en.corner = c;
+  en.extended = c.kind == Corner::Kind::kOuter && !outer_corner_circle(m.line, m.g451, c);
+  return true;
+}
+
+bool Compensation::entry_pieces(const BlockCopy& m, Entry& en) {
+  const Element& next = en.element;
+  const Element& prev = en.before_element;
+  const double prev_radius = en.before_radius, sr = s * r;
+  const Corner& c = en.corner;
+  const Vec2 end = en.normal_end;
+  auto equidistant_from = [&](Vec2 from, bool full) {
+    return next.arc ? PathPiece::circle(from, end, next.centre, en.radius, next.sense, full)
+                    : PathPiece::segment(from, end);
+  };
   en.count = 0;
   Vec2 prev_end = Element::offset(prev.end, prev.end_tangent(), sr);
-  if (c.kind == Corner::Kind::kOuter && !outer_corner_circle(m.line, m.g451, c)) {
+  if (en.extended) {
     // G451 (TRC-G451-1, TRC-ARC-CORNER-1): both equidistants extended to their intersection;
     // none found (circles) is the circle (TRC-ARC-CORNER-2).
     Vec2 x;
@@ -91,6 +106,41 @@ bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& 
   return true;
 }
 
+// Every piece entry_pieces builds lies in the transition circle's box, in the box of m's
+// equidistant from its normal start (a circle's whole circle after an inner corner, whose point
+// may lie anywhere on it), or, at an inner corner before a line, around the intersection x: that
+// lies on m's equidistant after its normal start when the predecessor is a line too (r tan(phi/2)
+// >= 0 along it), on the predecessor's circle otherwise. The pad holds x's rounding, at most
+// 64 eps size / sine (intersection_error), where the sine is 2^-10 or more. A G451 extension can
+// reach far: no box then.
+bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
+  const Corner& c = en.corner;
+  if (en.extended) return false;
+  const Element& next = en.element;
+  const bool inner = c.kind == Corner::Kind::kInner;
+  auto circle_box = [](Vec2 centre, double radius) {
+    return PieceBox{centre.a - radius, centre.b - radius, centre.a + radius, centre.b + radius, 0};
+  };
+  PieceBox b = !next.arc ? PieceBox::of(PathPiece::segment(en.normal_start, en.normal_end))
+               : inner   ? circle_box(next.centre, en.radius)
+                         : PieceBox::arc(en.normal_start, en.normal_end, next.centre, en.radius, next.sense, next.full);
+  auto add = [&b](const PieceBox& u) {
+    b.lo_a = std::min(b.lo_a, u.lo_a), b.lo_b = std::min(b.lo_b, u.lo_b);
+    b.hi_a = std::max(b.hi_a, u.hi_a), b.hi_b = std::max(b.hi_b, u.hi_b);
+  };
+  if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) add(circle_box(en.vertex, r));
+  if (inner && !next.arc) {
+    if (en.before_element.arc)
+      add(circle_box(en.before_element.centre, en.before_radius));
+    else if (std::fabs(c.sine) < 0x1p-10)
+      return false;
+  }
+  PieceBox sized = PieceBox::sized(b.lo_a, b.lo_b, b.hi_a, b.hi_b);
+  double pad = 1e-9 * (1 + sized.size);
+  box = PieceBox::sized(b.lo_a - pad, b.lo_b - pad, b.hi_a + pad, b.hi_b + pad);
+  return true;
+}
+
 PathPiece Compensation::piece_of(const HeldRecord& rec) const {
   const PathElement& e = rec.element;
   Vec2 a = ab(e.start), b = ab(e.end);
@@ -98,18 +148,15 @@ PathPiece Compensation::piece_of(const HeldRecord& rec) const {
   return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
 }
 
-// PieceBox::of(piece_of(rec)) without the sweep, which a box does not need; computed once per
+// PieceBox::of(piece_of(rec)) without the sweep, which the box does not need; computed once per
 // record and plane.
 const PieceBox& Compensation::box_of(const HeldRecord& rec) const {
   if (rec.boxed && rec.box_axes.abscissa == axes.abscissa && rec.box_axes.ordinate == axes.ordinate) return rec.box;
   const PathElement& e = rec.element;
-  if (e.type == ElementType::kLine) {
-    rec.box = PieceBox::of(PathPiece::segment(ab(e.start), ab(e.end)));
-  } else {
-    PathPiece whole;
-    whole.arc = true, whole.centre = ab(e.center), whole.radius = rec.radius;
-    rec.box = PieceBox::of(whole);
-  }
+  Vec2 a = ab(e.start), b = ab(e.end);
+  rec.box = e.type == ElementType::kLine
+                ? PieceBox::of(PathPiece::segment(a, b))
+                : PieceBox::arc(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
   rec.boxed = true, rec.box_axes = axes;
   return rec.box;
 }
@@ -131,19 +178,24 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (r == 0) return false;  // no width: nothing to collide
   int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
   Entry& entry = entry_scratch;
-  int state = 0;                                           // 0: not built, 1: built, -1: none
+  int state = 0;                                           // 0: not built, 2: the corner only, 1: built, -1: none
   double near = -std::numeric_limits<double>::infinity();  // the largest near miss
   bool overlap = false;                                    // collinear pieces overlap (a miss of 0)
   // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
   // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
   const bool margins = trace.keeps_decisions();
   PieceBox entry_box{};  // around the entry's pieces, once it is built (without margins only)
+  // Without margins the corner comes first (state 2) and, where entry_bound can tell, a box
+  // around every piece it may build: held pieces apart from it are passed over without building
+  // the entry, which most blocks then never need.
+  bool bounded = false;
   auto build = [&] {
-    state = entry_of(m, before, entry) ? 1 : -1;
+    if (state == 0 && !entry_corner(m, before, entry)) return void(state = -1);
+    state = entry_pieces(m, entry) ? 1 : -1;
     if (state > 0 && !margins) entry_box = PieceBox::around(entry.pieces, entry.count);
   };
   auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
-    if (state == 0) build();
+    if (state == 0 || state == 2) build();
     if (state < 0) return false;
     bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
     c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0, margins);
@@ -155,7 +207,13 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   for (std::size_t i = 0; i < held.size(); ++i) {
     const HeldRecord& rec = held[i];
     if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
-    if (state == 0) build();
+    if (state == 0 && !margins) {
+      if (!entry_corner(m, before, entry)) return false;
+      state = 2, bounded = entry_bound(entry, entry_box);
+    }
+    // Apart from the bound is apart from every piece in it (its pad is no smaller).
+    if (state == 2 && bounded && PieceBox::apart(box_of(rec), entry_box)) continue;
+    if (state == 0 || state == 2) build();
     if (state < 0) return false;
     // A held piece plainly apart from the whole entry: piece_crossing would pass over each of its
     // pieces (the same path: PROP-TRACE-1), so the piece is not even built.
@@ -165,7 +223,7 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
     return cut(m, entry, -1, c, near), true;
   // A miss of exactly 0 is an overlap of collinear pieces; a point at 0 would have been on both.
-  if (state > 0) decide("TRC-CD-3", m.line, near == 0 && overlap ? "overlap" : "none", near);
+  if (state == 1) decide("TRC-CD-3", m.line, near == 0 && overlap ? "overlap" : "none", near);
   return false;
 }
 

@@ -400,7 +400,7 @@ class Compensation {
   struct Entry {
     Element element;
     double radius = 0;
-    Vec2 vertex, normal_start;
+    Vec2 vertex, normal_start, normal_end;
     Vec2 own_start;  // where m's own equidistant piece starts
     // The predecessor, which names the corner and the rest of its equidistant (its slot in
     // prev_blocks, which the cut leaves as it is).
@@ -410,10 +410,19 @@ class Compensation {
     // pieces[0] leads to m's equidistant: the transition circle, or (G451) the predecessor's
     // equidistant extended to the intersection.
     enum class Lead { kNone, kCircle, kExtension } lead = Lead::kNone;
+    Corner corner;          // at m's start, as TRC-CD-2 decided it
+    bool extended = false;  // an outer corner taken as G451: the lead is the extension
     PathPiece pieces[2];
     int count = 0;
   };
   bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en);
+  // entry_of in two steps: the elements and the corner (false: m's equidistant collapses), then
+  // the pieces (false: an inner corner's intersection is missing or beyond m's end).
+  bool entry_corner(const BlockCopy& m, const BlockCopy& before, Entry& en);
+  bool entry_pieces(const BlockCopy& m, Entry& en);
+  // A box around every piece entry_pieces can build after entry_corner, without building them;
+  // false where it cannot tell (see collision.cpp).
+  bool entry_bound(const Entry& en, PieceBox& box) const;
   Entry entry_scratch;  // bottleneck's, kept: constructing one per block cost more than its checks
 
   PathPiece piece_of(const HeldRecord& rec) const;
