@@ -81,6 +81,16 @@ TEST(PieceBox, QuarterArcsEndingOnExtremesAndWholeTurns) {
   PieceBox point = PieceBox::of(PathPiece::circle({11, -3}, {11, -3}, c, rho, 1));
   EXPECT_EQ(point.lo_a, 11);
   EXPECT_EQ(point.hi_a, 11);
+  // All but a sliver of the circle, its ends a rounding apart: the circle's box less nothing
+  // (from the ends alone it would be a point).
+  const double sliver = 1e-13;
+  Vec2 from{c.a + rho * std::cos(0.3), c.b + rho * std::sin(0.3)};
+  Vec2 to{c.a + rho * std::cos(0.3 - sliver), c.b + rho * std::sin(0.3 - sliver)};
+  PieceBox nearly = PieceBox::of(PathPiece::circle(from, to, c, rho, 1));
+  EXPECT_EQ(nearly.lo_a, 8);
+  EXPECT_EQ(nearly.hi_a, 12);
+  EXPECT_EQ(nearly.lo_b, -7);
+  EXPECT_EQ(nearly.hi_b, -3);
   // Boxes apart by more than the pad are apart; a circle piece's own box is never apart from it.
   EXPECT_TRUE(PieceBox::apart(q, PieceBox::of(PathPiece::segment({12.1, -4}, {13, -4}))));
   EXPECT_FALSE(PieceBox::apart(three, PieceBox::of(PathPiece::segment({11.9, -4}, {13, -4}))));

@@ -57,30 +57,33 @@ OnPiece locate(const PathPiece& piece, Vec2 p) {
 }
 }  // namespace
 
-// The arc passes its circle's extreme point at pseudo-angle k (0: +a, 1: +b, 2: -a, 3: -b, from
-// +a counterclockwise) where k lies between its ends in cyclic order, which pseudo-angles keep
-// (they grow with the angle). Rounding near an extreme moves a bound by a second-order amount
-// only, well inside apart()'s pad.
-PieceBox PieceBox::arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full) {
+// The piece passes its circle's extreme point in direction d where the rotation from its start to
+// d (as locate() measures it) is within its sweep. Pseudo-angles of directions a quarter turn
+// apart differ by exactly 1, so the four rotations are the first one plus 0, 1, 2, 3 (one
+// division); their rounding moves a bound near an extreme by a second-order amount only, well
+// inside apart()'s pad.
+PieceBox PieceBox::arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, double sweep) {
   const Vec2 c = centre;
   const double rho = radius;
-  if (full) return sized(c.a - rho, c.b - rho, c.a + rho, c.b + rho);
+  if (sweep >= kPseudoTurn) return sized(c.a - rho, c.b - rho, c.a + rho, c.b + rho);
   double lo_a = std::min(a.a, b.a), lo_b = std::min(a.b, b.b);
   double hi_a = std::max(a.a, b.a), hi_b = std::max(a.b, b.b);
-  // Counterclockwise from `from` to `to`: a clockwise arc is the counterclockwise one back.
-  double from = pseudo_rotation({1, 0}, (sense > 0 ? a : b) - c, 1);
-  double to = pseudo_rotation({1, 0}, (sense > 0 ? b : a) - c, 1);
-  double span = to - from;
-  if (span < 0) span += kPseudoTurn;
-  auto passes = [&](double k) {
-    double d = k - from;
-    return (d < 0 ? d + kPseudoTurn : d) <= span;
-  };
-  if (passes(0)) hi_a = c.a + rho;
-  if (passes(1)) hi_b = c.b + rho;
-  if (passes(2)) lo_a = c.a - rho;
-  if (passes(3)) lo_b = c.b - rho;
+  const double first = pseudo_rotation(a - c, {1, 0}, sense);
+  for (int quarter = 0; quarter < 4; ++quarter) {
+    double t = first + quarter;
+    if (t >= kPseudoTurn) t -= kPseudoTurn;
+    if (t > sweep) continue;
+    // From +a in the sense +1: +b, -a, -b; in the sense -1: -b, -a, +b.
+    if (quarter == 0) hi_a = c.a + rho;
+    if (quarter == 2) lo_a = c.a - rho;
+    if (quarter % 2 == 1 && (quarter == 1) == (sense > 0)) hi_b = c.b + rho;
+    if (quarter % 2 == 1 && (quarter == 1) != (sense > 0)) lo_b = c.b - rho;
+  }
   return sized(lo_a, lo_b, hi_a, hi_b);
+}
+
+PieceBox PieceBox::arc_from_ends(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full) {
+  return arc(a, b, centre, radius, sense, full ? kPseudoTurn : pseudo_rotation(a - centre, b - centre, sense));
 }
 
 PieceBox PieceBox::around(const PathPiece* pieces, int count) {

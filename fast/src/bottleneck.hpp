@@ -33,11 +33,13 @@ struct PathPiece {
 struct PieceBox {
   double lo_a = 0, lo_b = 0, hi_a = 0, hi_b = 0, size = 0;
   static PieceBox of(const PathPiece& p) {
-    if (p.arc) return arc(p.a, p.b, p.centre, p.radius, p.sense, p.sweep >= 4);
+    if (p.arc) return arc(p.a, p.b, p.centre, p.radius, p.sense, p.sweep);
     return sized(std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b));
   }
-  // A circle piece's, from a to b in the sense `sense` (`full`: a whole turn).
-  static PieceBox arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full);
+  // A circle piece's, from a to b in the sense `sense`: `sweep` as PathPiece's, or from a and b
+  // as PathPiece::circle takes it (`full`: a whole turn).
+  static PieceBox arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, double sweep);
+  static PieceBox arc_from_ends(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full);
   static PieceBox around(const PathPiece* pieces, int count);  // count >= 1
   static PieceBox sized(double lo_a, double lo_b, double hi_a, double hi_b) {
     return {lo_a, lo_b, hi_a, hi_b, std::max({std::fabs(lo_a), std::fabs(lo_b), std::fabs(hi_a), std::fabs(hi_b)})};

@@ -121,9 +121,10 @@ bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
   auto circle_box = [](Vec2 centre, double radius) {
     return PieceBox{centre.a - radius, centre.b - radius, centre.a + radius, centre.b + radius, 0};
   };
-  PieceBox b = !next.arc ? PieceBox::of(PathPiece::segment(en.normal_start, en.normal_end))
-               : inner   ? circle_box(next.centre, en.radius)
-                         : PieceBox::arc(en.normal_start, en.normal_end, next.centre, en.radius, next.sense, next.full);
+  PieceBox b =
+      !next.arc ? PieceBox::of(PathPiece::segment(en.normal_start, en.normal_end))
+      : inner   ? circle_box(next.centre, en.radius)
+              : PieceBox::arc_from_ends(en.normal_start, en.normal_end, next.centre, en.radius, next.sense, next.full);
   auto add = [&b](const PieceBox& u) {
     b.lo_a = std::min(b.lo_a, u.lo_a), b.lo_b = std::min(b.lo_b, u.lo_b);
     b.hi_a = std::max(b.hi_a, u.hi_a), b.hi_b = std::max(b.hi_b, u.hi_b);
@@ -156,7 +157,7 @@ const PieceBox& Compensation::box_of(const HeldRecord& rec) const {
   Vec2 a = ab(e.start), b = ab(e.end);
   rec.box = e.type == ElementType::kLine
                 ? PieceBox::of(PathPiece::segment(a, b))
-                : PieceBox::arc(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
+                : PieceBox::arc_from_ends(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
   rec.boxed = true, rec.box_axes = axes;
   return rec.box;
 }
