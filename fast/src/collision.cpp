@@ -107,11 +107,12 @@ bool Compensation::entry_pieces(const BlockCopy& m, Entry& en) {
 }
 
 // Every piece entry_pieces builds lies in the transition circle's box, in the box of m's
-// equidistant from its normal start (a circle's whole circle after an inner corner, whose point
-// may lie anywhere on it), or, at an inner corner before a line, around the intersection x: that
-// lies on m's equidistant after its normal start when the predecessor is a line too (r tan(phi/2)
-// >= 0 along it), on the predecessor's circle otherwise. The pad holds x's rounding, at most
-// 64 eps size / sine (intersection_error), where the sine is 2^-10 or more. A G451 extension can
+// equidistant from its normal start, or, after an inner corner, from the intersection x. In exact
+// arithmetic x lies after the normal start (two lines: r tan(phi/2) >= 0 along m; a circle before
+// a line: the root nearer the corner), but its rounding grows where the carriers cross at a small
+// angle. So the box takes a circle's whole circle, and before a line the predecessor's circle
+// (x lies on it to a few ulps) or, after a line, m's segment padded by x's rounding: at most
+// 64 eps size / sine (intersection_error) where the sine is 2^-10 or more. A G451 extension can
 // reach far: no box then.
 bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
   const Corner& c = en.corner;
