@@ -150,8 +150,7 @@ PathPiece Compensation::piece_of(const HeldRecord& rec) const {
   return PathPiece::circle(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
 }
 
-// PieceBox::of(piece_of(rec)) without the sweep, which the box does not need; computed once per
-// record and plane.
+// PieceBox::of(piece_of(rec)), computed once per record and plane.
 const PieceBox& Compensation::box_of(const HeldRecord& rec) const {
   if (rec.boxed && rec.box_axes.abscissa == axes.abscissa && rec.box_axes.ordinate == axes.ordinate) return rec.box;
   const PathElement& e = rec.element;
@@ -180,25 +179,25 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (r == 0) return false;  // no width: nothing to collide
   int lo = m.seq - md.cutcom_maxnum_check_blocks, hi = m.seq - 2;
   Entry& entry = entry_scratch;
-  int state = 0;                                           // 0: not built, 2: the corner only, 1: built, -1: none
+  enum class Built { kNothing, kCorner, kEntry, kNoEntry } built = Built::kNothing;
   double near = -std::numeric_limits<double>::infinity();  // the largest near miss
   bool overlap = false;                                    // collinear pieces overlap (a miss of 0)
   // A G451 lead is the predecessor's equidistant: m-2's held element ends on it, at their common
   // corner, and is not compared with it (in the look-ahead m-1 was passed over: no such corner).
   const bool margins = trace.keeps_decisions();
-  PieceBox entry_box{};  // around the entry's pieces, once it is built (without margins only)
-  // Without margins the corner comes first (state 2) and, where entry_bound can tell, a box
-  // around every piece it may build: held pieces apart from it are passed over without building
-  // the entry, which most blocks then never need.
+  PieceBox entry_box{};  // without margins: the bound, then the box of the pieces once built
+  // Without margins the corner comes first and, where entry_bound can tell, a box around every
+  // piece the entry may have: held pieces apart from it are passed over without building the
+  // entry, which most blocks then never need.
   bool bounded = false;
   auto build = [&] {
-    if (state == 0 && !entry_corner(m, before, entry)) return void(state = -1);
-    state = entry_pieces(m, entry) ? 1 : -1;
-    if (state > 0 && !margins) entry_box = PieceBox::around(entry.pieces, entry.count);
+    if (built == Built::kNothing && !entry_corner(m, before, entry)) return void(built = Built::kNoEntry);
+    built = entry_pieces(m, entry) ? Built::kEntry : Built::kNoEntry;
+    if (built == Built::kEntry && !margins) entry_box = PieceBox::around(entry.pieces, entry.count);
   };
   auto try_piece = [&](const PathPiece& held_piece, int seq, PieceCrossing& c) {
-    if (state == 0 || state == 2) build();
-    if (state < 0) return false;
+    if (built == Built::kNothing || built == Built::kCorner) build();
+    if (built == Built::kNoEntry) return false;
     bool skip_lead = entry.lead == Entry::Lead::kExtension && seq == hi && !looking;
     c = piece_crossing(held_piece, entry.pieces, entry.count, skip_lead ? 1 : 0, margins);
     near = std::max(near, c.near_miss);
@@ -209,14 +208,14 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   for (std::size_t i = 0; i < held.size(); ++i) {
     const HeldRecord& rec = held[i];
     if (!is_candidate(rec) || rec.seq < lo || rec.seq > hi) continue;
-    if (state == 0 && !margins) {
+    if (built == Built::kNothing && !margins) {
       if (!entry_corner(m, before, entry)) return false;
-      state = 2, bounded = entry_bound(entry, entry_box);
+      built = Built::kCorner, bounded = entry_bound(entry, entry_box);
     }
     // Apart from the bound is apart from every piece in it (its pad is no smaller).
-    if (state == 2 && bounded && PieceBox::apart(box_of(rec), entry_box)) continue;
-    if (state == 0 || state == 2) build();
-    if (state < 0) return false;
+    if (built == Built::kCorner && bounded && PieceBox::apart(box_of(rec), entry_box)) continue;
+    if (built == Built::kNothing || built == Built::kCorner) build();
+    if (built == Built::kNoEntry) return false;
     // A held piece plainly apart from the whole entry: piece_crossing would pass over each of its
     // pieces (the same path: PROP-TRACE-1), so the piece is not even built.
     if (!margins && PieceBox::apart(box_of(rec), entry_box)) continue;
@@ -225,7 +224,7 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
   if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
     return cut(m, entry, -1, c, near), true;
   // A miss of exactly 0 is an overlap of collinear pieces; a point at 0 would have been on both.
-  if (state == 1) decide("TRC-CD-3", m.line, near == 0 && overlap ? "overlap" : "none", near);
+  if (built == Built::kEntry) decide("TRC-CD-3", m.line, near == 0 && overlap ? "overlap" : "none", near);
   return false;
 }
 
