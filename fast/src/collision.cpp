@@ -8,10 +8,6 @@
 
 namespace cutcom::fast {
 
-bool Compensation::entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en) {
-  return entry_corner(m, before, en) && entry_pieces(m, en);
-}
-
 bool Compensation::entry_corner(const BlockCopy& m, const BlockCopy& before, Entry& en) {
   en.element = element_of(m);
   en.radius = 0, en.lead = Entry::Lead::kNone;  // `en` is reused from block to block

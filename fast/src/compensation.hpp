@@ -415,8 +415,7 @@ class Compensation {
     PathPiece pieces[2];
     int count = 0;
   };
-  bool entry_of(const BlockCopy& m, const BlockCopy& before, Entry& en);
-  // entry_of in two steps: the elements and the corner (false: m's equidistant collapses), then
+  // The entry in two steps: the elements and the corner (false: m's equidistant collapses), then
   // the pieces (false: an inner corner's intersection is missing or beyond m's end).
   bool entry_corner(const BlockCopy& m, const BlockCopy& before, Entry& en);
   bool entry_pieces(const BlockCopy& m, Entry& en);
