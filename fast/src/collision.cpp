@@ -107,9 +107,9 @@ bool Compensation::entry_pieces(const BlockCopy& m, Entry& en) {
 // arithmetic x lies after the normal start (two lines: r tan(phi/2) >= 0 along m; a circle before
 // a line: the root nearer the corner), but its rounding grows where the carriers cross at a small
 // angle. So the box takes a circle's whole circle, and before a line the predecessor's circle
-// (x lies on it to a few ulps) or, after a line, m's segment padded by x's rounding: at most
-// 64 eps size / sine (intersection_error) where the sine is 2^-10 or more. A G451 extension can
-// reach far: no box then.
+// (x lies on it to a few ulps) or, after a line, m's segment padded by x's rounding: 64 eps size
+// / sine (intersection_error) with room to spare, where the sine is 2^-10 or more. A G451
+// extension can reach far: no box then.
 bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
   const Corner& c = en.corner;
   if (en.extended) return false;
@@ -127,14 +127,21 @@ bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
     b.hi_a = std::max(b.hi_a, u.hi_a), b.hi_b = std::max(b.hi_b, u.hi_b);
   };
   if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) add(circle_box(en.vertex, r));
+  double slide = 0;  // how far x may slide along two lines by rounding
   if (inner && !next.arc) {
-    if (en.before_element.arc)
+    if (en.before_element.arc) {
       add(circle_box(en.before_element.centre, en.before_radius));
-    else if (std::fabs(c.sine) < 0x1p-10)
-      return false;
+    } else {
+      if (std::fabs(c.sine) < 0x1p-10) return false;
+      // The carriers' points are the lines' offset starts: the predecessor's may lie far back.
+      const Vec2 from = en.before_element.start;
+      double size = std::fabs(from.a) + std::fabs(from.b) + r;
+      for (double v : {b.lo_a, b.lo_b, b.hi_a, b.hi_b}) size += 2 * std::fabs(v);
+      slide = 256 * std::numeric_limits<double>::epsilon() * size / std::fabs(c.sine);
+    }
   }
   PieceBox sized = PieceBox::sized(b.lo_a, b.lo_b, b.hi_a, b.hi_b);
-  double pad = 1e-9 * (1 + sized.size);
+  double pad = std::max(1e-9 * (1 + sized.size), slide);
   box = PieceBox::sized(b.lo_a - pad, b.lo_b - pad, b.hi_a + pad, b.hi_b + pad);
   return true;
 }
