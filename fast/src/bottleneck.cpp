@@ -65,7 +65,7 @@ OnPiece locate(const PathPiece& piece, Vec2 p) {
 PieceBox PieceBox::arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, double sweep) {
   const Vec2 c = centre;
   const double rho = radius;
-  if (sweep >= kPseudoTurn) return sized(c.a - rho, c.b - rho, c.a + rho, c.b + rho);
+  if (sweep >= kPseudoTurn) return circle(c, rho);
   double lo_a = std::min(a.a, b.a), lo_b = std::min(a.b, b.b);
   double hi_a = std::max(a.a, b.a), hi_b = std::max(a.b, b.b);
   const double first = pseudo_rotation(a - c, {1, 0}, sense);
@@ -88,11 +88,7 @@ PieceBox PieceBox::arc_from_ends(Vec2 a, Vec2 b, Vec2 centre, double radius, int
 
 PieceBox PieceBox::around(const PathPiece* pieces, int count) {
   PieceBox u = of(pieces[0]);
-  for (int i = 1; i < count; ++i) {
-    PieceBox v = of(pieces[i]);
-    u.lo_a = std::min(u.lo_a, v.lo_a), u.lo_b = std::min(u.lo_b, v.lo_b);
-    u.hi_a = std::max(u.hi_a, v.hi_a), u.hi_b = std::max(u.hi_b, v.hi_b);
-  }
+  for (int i = 1; i < count; ++i) u = join(u, of(pieces[i]));
   return count == 1 ? u : sized(u.lo_a, u.lo_b, u.hi_a, u.hi_b);  // the size of the union, once
 }
 

@@ -41,6 +41,13 @@ struct PieceBox {
   static PieceBox arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, double sweep);
   static PieceBox arc_from_ends(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full);
   static PieceBox around(const PathPiece* pieces, int count);  // count >= 1
+  static PieceBox circle(Vec2 centre, double radius) {         // a whole circle's
+    return sized(centre.a - radius, centre.b - radius, centre.a + radius, centre.b + radius);
+  }
+  // The bounds of u and v together; `size` is left to sized(), which the caller takes once.
+  static PieceBox join(const PieceBox& u, const PieceBox& v) {
+    return {std::min(u.lo_a, v.lo_a), std::min(u.lo_b, v.lo_b), std::max(u.hi_a, v.hi_a), std::max(u.hi_b, v.hi_b), 0};
+  }
   static PieceBox sized(double lo_a, double lo_b, double hi_a, double hi_b) {
     return {lo_a, lo_b, hi_a, hi_b, std::max({std::fabs(lo_a), std::fabs(lo_b), std::fabs(hi_a), std::fabs(hi_b)})};
   }

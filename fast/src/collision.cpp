@@ -115,22 +115,16 @@ bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
   if (en.extended) return false;
   const Element& next = en.element;
   const bool inner = c.kind == Corner::Kind::kInner;
-  auto circle_box = [](Vec2 centre, double radius) {
-    return PieceBox{centre.a - radius, centre.b - radius, centre.a + radius, centre.b + radius, 0};
-  };
   PieceBox b =
       !next.arc ? PieceBox::of(PathPiece::segment(en.normal_start, en.normal_end))
-      : inner   ? circle_box(next.centre, en.radius)
+      : inner   ? PieceBox::circle(next.centre, en.radius)
               : PieceBox::arc_from_ends(en.normal_start, en.normal_end, next.centre, en.radius, next.sense, next.full);
-  auto add = [&b](const PieceBox& u) {
-    b.lo_a = std::min(b.lo_a, u.lo_a), b.lo_b = std::min(b.lo_b, u.lo_b);
-    b.hi_a = std::max(b.hi_a, u.hi_a), b.hi_b = std::max(b.hi_b, u.hi_b);
-  };
-  if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal) add(circle_box(en.vertex, r));
+  if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal)
+    b = PieceBox::join(b, PieceBox::circle(en.vertex, r));
   double slide = 0;  // how far x may slide along two lines by rounding
   if (inner && !next.arc) {
     if (en.before_element.arc) {
-      add(circle_box(en.before_element.centre, en.before_radius));
+      b = PieceBox::join(b, PieceBox::circle(en.before_element.centre, en.before_radius));
     } else {
       if (std::fabs(c.sine) < 0x1p-10) return false;
       // The carriers' points are the lines' offset starts: the predecessor's may lie far back.
