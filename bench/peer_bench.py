@@ -452,6 +452,20 @@ def mb(kb):
     return f"{kb / 1024:.1f} MB" if kb else "not measured"
 
 
+def build_kind(cutcom):
+    """How the measured cutcom was built, from its build directory's CMake cache."""
+    cache = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(cutcom))), "CMakeCache.txt")
+    pgo = "unknown"
+    try:
+        pgo = next(l.split("=", 1)[1].strip() for l in open(cache) if l.startswith("CUTCOM_PGO:"))
+    except (OSError, StopIteration):
+        pass
+    if pgo == "use":
+        return ("built as `scripts/setup.sh` builds it: Release, profile-guided (trained by "
+                "`scripts/pgo_training.sh` on its own serpentine passes, not on these contours)")
+    return f"built with CUTCOM_PGO={pgo} (not profile-guided)"
+
+
 def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
     here = os.path.dirname(os.path.abspath(__file__))
     docs = os.path.join(here, "..", "docs")
@@ -474,7 +488,8 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
         "the other; on a virtual machine what a crossing costs depends on where the hypervisor puts the",
         "two cores (perf, 200,000 blocks of lines+arcs: the reader's thread took 220 M cycles in one hour,",
         "45 M in another, the same binary), which moves whole-process times by up to a third.",
-        "cutcom: `cutcom run FILE --md MD20230=0` (fast engine, text; JSON in its own column).",
+        "cutcom: `cutcom run FILE --md MD20230=0` (fast engine, text; JSON in its own column), "
+        f"{build_kind(a.cutcom)}.",
         "LinuxCNC: `rs274 -g FILE` (standalone interpreter, cutter compensation `G42.1 D<diameter>`).",
         "The two tool paths are compared move by move (kind, end point and centre to 2e-4 mm, rs274",
         "prints four places) before timing; the contours are those where the two controls' rules",

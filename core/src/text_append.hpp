@@ -202,7 +202,7 @@ inline char* put_shortest(char* p, double v) {
   const std::uint64_t significand = decimal.significand;  // not 0, below 10^17
   int estimate = (static_cast<int>(std::bit_width(significand)) * 1233) >> 12;
   int count = estimate + (significand >= kPowers[estimate] ? 1 : 0);
-  char padded[40];  // 17 digits, then room for the fixed-size copies below to read past them
+  char padded[40]{};  // 17 digits, then room for the fixed-size copies below to read past them
   put_17_digits(padded, significand);
   const char* digits = padded + 17 - count;
   int point = count + decimal.exponent;  // the decimal point's place after the first digit
