@@ -396,8 +396,8 @@ void Interpreter::run_line(const std::string& s, std::string& out) {
         std::size_t after_index = skip_space(s, close + 1);
         if (after_index < s.size() && s[after_index] == '=' &&
             !(after_index + 1 < s.size() && s[after_index + 1] == '=')) {
-          for (char c : s.substr(k, close + 1 - k))
-            if (c != ' ' && c != '\t') raw_index += upper(c);
+          for (char ch : s.substr(k, close + 1 - k))
+            if (ch != ' ' && ch != '\t') raw_index += upper(ch);
           k = after_index;
           plan.reset();
         }

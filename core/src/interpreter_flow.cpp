@@ -174,10 +174,10 @@ bool Interpreter::statement(std::string_view k, std::string_view s, std::size_t 
     if (ne == n) throw InputError(cx().line, static_cast<int>(n) + 1, "EXTERN needs the subprogram's name");
     std::size_t e = skip_space(s, ne);
     if (e < s.size() && s[e] == '(') {
-      std::size_t close = s.find(')', e);
-      if (close == std::string_view::npos)
+      std::size_t shut = s.find(')', e);
+      if (shut == std::string_view::npos)
         throw InputError(cx().line, static_cast<int>(e) + 1, "EXTERN: ')' expected after the parameter types");
-      e = close + 1;
+      e = shut + 1;
     }
     nothing_after(e, "the EXTERN declaration");
     return true;
