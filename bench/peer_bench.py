@@ -542,7 +542,9 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, a):
                   "the coordinates, not with the differences that matter (the contours below reach 167 m "
                   "along X at 10^5 blocks, 1.7 km at 10^6), so a corner's intersection point gets its coordinates' filters from "
                   "their nearest doubles (ref/src/kernel.hpp, tighten_filters): under CDON the later "
-                  "pieces that cross it are then decided by the filter, about half of ref's time before.", "",
+                  "pieces that cross it are then decided by the filter, about half of ref's time before. "
+                  "ref is not built profile-guided (only the reader, fast, the writers and the command "
+                  "are): its times here move with the machine's speed alone.", "",
                   "| contour | blocks | ref peak memory | ref time (s) | per block (ms) |", "|---|---|---|---|---|"]
         lines += [f"| {label} | {n} | {mb(kb)} | {t:.1f} | {1000 * t / n:.3f} |" for label, n, kb, t in ref_memory]
     lines += ["", "## A parametric program", "",
