@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # The training run of the profile-guided build (CUTCOM_PGO in CMakeLists.txt, run by
-# scripts/setup.sh between its two builds): `cutcom run` on the bundled examples and on two
-# generated serpentine passes (with CDOF and with CDON), in text, JSON and SVG. The passes are
-# this script's own, unlike the benchmarks' contours: rows of lines, half-circle bumps, CR=
-# dents, G91 steps, runs of tiny segments along a wide curve, feed and M words, joined by
-# half circles. Usage: pgo_training.sh BUILD_DIR (its earlier profiles are removed first).
+# scripts/setup.sh between its two builds): `cutcom run` on two generated serpentine passes
+# (with CDOF and with CDON) in text, JSON and SVG, on a parametric spiral, and on the bundled
+# examples. The programs are this script's own, unlike the benchmarks' contours: rows of lines,
+# half-circle bumps, CR= dents, G91 steps, runs of tiny segments along a shallow curve, feed and
+# M words, joined by half circles; a WHILE loop with an IF. Usage: pgo_training.sh BUILD_DIR,
+# a build configured with -DCUTCOM_PGO=generate (its earlier profiles are removed first).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:?usage: pgo_training.sh BUILD_DIR}
 cutcom="$build/cli/cutcom"
+if ! grep -q '^CUTCOM_PGO:STRING=generate$' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "pgo_training: $build is not configured with -DCUTCOM_PGO=generate (its profiles are kept)" >&2
+  exit 2
+fi
 find "$build" -name '*.gcda' -delete
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -66,10 +71,39 @@ done
 "$cutcom" run "$work/cdon.mpf" --format svg -o /dev/null
 "$cutcom" run "$work/cdof.mpf" --format json --trace -o /dev/null
 
-# The examples, as a user runs them (some end in an alarm on purpose: that is their point).
-for program in examples/*.mpf; do
-  "$cutcom" run "$program" -o /dev/null || true
+# A parametric program: a spiral of 3,000 blocks computed in a WHILE loop, with an IF.
+cat >"$work/spiral.mpf" <<'EOF'
+; cutcom PGO training: a parametric spiral (scripts/pgo_training.sh)
+DEF INT KK=0
+DEF REAL ANG, RR
+$TC_DP1[1,1]=120
+$TC_DP6[1,1]=1
+N10 G17 G90 G71 T1 D1 F900
+G0 X-20 Y-20
+G41 G1 X-15 Y-15
+WHILE KK<3000
+  RR=10+0.01*KK
+  ANG=KK*7.5
+  IF KK==1500
+    M8
+  ENDIF
+  G1 X=RR*COS(ANG) Y=RR*SIN(ANG)
+  KK=KK+1
+ENDWHILE
+G40 G1 X-60 Y-60
+M30
+EOF
+"$cutcom" run "$work/spiral.mpf" -o /dev/null
+
+# The examples, as a user runs them, with the tool table and offsets beside them (some end in an
+# alarm on purpose: that is their point).
+find examples -iname '*.mpf' | sort | while read -r program; do
+  dir=$(dirname "$program")
+  options=()
+  [[ -f "$dir/TO_INI.INI" ]] && options+=(--tools "$dir/TO_INI.INI")
+  [[ -f "$dir/UFR.INI" ]] && options+=(--offsets "$dir/UFR.INI")
+  [[ "$dir" == examples/job ]] && options+=(--md MD22550=1)           # T preselects, M6 changes
+  [[ "$dir" == examples/turning ]] && options+=(--md 'MD20150[5]=2')  # a lathe's diameter axis
+  "$cutcom" run "$program" "${options[@]}" -o /dev/null || true
 done
-"$cutcom" run examples/job/PLATE.MPF --tools examples/job/TO_INI.INI --offsets examples/job/UFR.INI \
-  --md MD22550=1 -o /dev/null || true
 echo "pgo_training: $(find "$build" -name '*.gcda' | wc -l) profiles written"
