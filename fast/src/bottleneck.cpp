@@ -68,22 +68,18 @@ PieceBox PieceBox::arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, do
   if (sweep >= kPseudoTurn) return circle(c, rho);
   double lo_a = std::min(a.a, b.a), lo_b = std::min(a.b, b.b);
   double hi_a = std::max(a.a, b.a), hi_b = std::max(a.b, b.b);
+  // The extremes in the order the sense meets them from +a: +a, +b, -a, -b counterclockwise,
+  // +a, -b, -a, +b clockwise.
+  double* const bound[4] = {&hi_a, sense > 0 ? &hi_b : &lo_b, &lo_a, sense > 0 ? &lo_b : &hi_b};
+  const double extreme[4] = {c.a + rho, sense > 0 ? c.b + rho : c.b - rho, c.a - rho,
+                             sense > 0 ? c.b - rho : c.b + rho};
   const double first = pseudo_rotation(a - c, {1, 0}, sense);
   for (int quarter = 0; quarter < 4; ++quarter) {
     double t = first + quarter;
     if (t >= kPseudoTurn) t -= kPseudoTurn;
-    if (t > sweep) continue;
-    // From +a in the sense +1: +b, -a, -b; in the sense -1: -b, -a, +b.
-    if (quarter == 0) hi_a = c.a + rho;
-    if (quarter == 2) lo_a = c.a - rho;
-    if (quarter % 2 == 1 && (quarter == 1) == (sense > 0)) hi_b = c.b + rho;
-    if (quarter % 2 == 1 && (quarter == 1) != (sense > 0)) lo_b = c.b - rho;
+    if (t <= sweep) *bound[quarter] = extreme[quarter];
   }
   return sized(lo_a, lo_b, hi_a, hi_b);
-}
-
-PieceBox PieceBox::arc_from_ends(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full) {
-  return arc(a, b, centre, radius, sense, full ? kPseudoTurn : pseudo_rotation(a - centre, b - centre, sense));
 }
 
 PieceBox PieceBox::around(const PathPiece* pieces, int count) {

@@ -36,10 +36,8 @@ struct PieceBox {
     if (p.arc) return arc(p.a, p.b, p.centre, p.radius, p.sense, p.sweep);
     return sized(std::min(p.a.a, p.b.a), std::min(p.a.b, p.b.b), std::max(p.a.a, p.b.a), std::max(p.a.b, p.b.b));
   }
-  // A circle piece's, from a to b in the sense `sense`: `sweep` as PathPiece's, or from a and b
-  // as PathPiece::circle takes it (`full`: a whole turn).
+  // A circle piece's, from a to b in the sense `sense` with PathPiece's `sweep`.
   static PieceBox arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, double sweep);
-  static PieceBox arc_from_ends(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, bool full);
   static PieceBox around(const PathPiece* pieces, int count);  // count >= 1
   static PieceBox circle(Vec2 centre, double radius) {         // a whole circle's
     return sized(centre.a - radius, centre.b - radius, centre.a + radius, centre.b + radius);

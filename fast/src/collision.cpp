@@ -115,10 +115,10 @@ bool Compensation::entry_bound(const Entry& en, PieceBox& box) const {
   if (en.extended) return false;
   const Element& next = en.element;
   const bool inner = c.kind == Corner::Kind::kInner;
-  PieceBox b =
-      !next.arc ? PieceBox::of(PathPiece::segment(en.normal_start, en.normal_end))
-      : inner   ? PieceBox::circle(next.centre, en.radius)
-              : PieceBox::arc_from_ends(en.normal_start, en.normal_end, next.centre, en.radius, next.sense, next.full);
+  PieceBox b = !next.arc ? PieceBox::of(PathPiece::segment(en.normal_start, en.normal_end))
+               : inner   ? PieceBox::circle(next.centre, en.radius)
+                         : PieceBox::of(PathPiece::circle(en.normal_start, en.normal_end, next.centre, en.radius,
+                                                          next.sense, next.full));
   if (c.kind == Corner::Kind::kOuter || c.kind == Corner::Kind::kReversal)
     b = PieceBox::join(b, PieceBox::circle(en.vertex, r));
   double slide = 0;  // how far x may slide along two lines by rounding
@@ -150,11 +150,7 @@ PathPiece Compensation::piece_of(const HeldRecord& rec) const {
 // PieceBox::of(piece_of(rec)), computed once per record and plane.
 const PieceBox& Compensation::box_of(const HeldRecord& rec) const {
   if (rec.boxed && rec.box_axes.abscissa == axes.abscissa && rec.box_axes.ordinate == axes.ordinate) return rec.box;
-  const PathElement& e = rec.element;
-  Vec2 a = ab(e.start), b = ab(e.end);
-  rec.box = e.type == ElementType::kLine
-                ? PieceBox::of(PathPiece::segment(a, b))
-                : PieceBox::arc_from_ends(a, b, ab(e.center), rec.radius, e.ccw ? 1 : -1, a.a == b.a && a.b == b.b);
+  rec.box = PieceBox::of(piece_of(rec));
   rec.boxed = true, rec.box_axes = axes;
   return rec.box;
 }
