@@ -66,20 +66,19 @@ PieceBox PieceBox::arc(Vec2 a, Vec2 b, Vec2 centre, double radius, int sense, do
   const Vec2 c = centre;
   const double rho = radius;
   if (sweep >= kPseudoTurn) return circle(c, rho);
-  double lo_a = std::min(a.a, b.a), lo_b = std::min(a.b, b.b);
-  double hi_a = std::max(a.a, b.a), hi_b = std::max(a.b, b.b);
-  // The extremes in the order the sense meets them from +a: +a, +b, -a, -b counterclockwise,
-  // +a, -b, -a, +b clockwise.
-  double* const bound[4] = {&hi_a, sense > 0 ? &hi_b : &lo_b, &lo_a, sense > 0 ? &lo_b : &hi_b};
-  const double extreme[4] = {c.a + rho, sense > 0 ? c.b + rho : c.b - rho, c.a - rho,
-                             sense > 0 ? c.b - rho : c.b + rho};
+  // The bounds in sized()'s order: lo a, lo b, hi a, hi b.
+  double box[4] = {std::min(a.a, b.a), std::min(a.b, b.b), std::max(a.a, b.a), std::max(a.b, b.b)};
+  // The extremes in the order the sense meets them from +a (+a, +b, -a, -b counterclockwise;
+  // +a, -b, -a, +b clockwise): the bound each sets and its value.
+  const int bound[4] = {2, sense > 0 ? 3 : 1, 0, sense > 0 ? 1 : 3};
+  const double extreme[4] = {c.a + rho, c.b + sense * rho, c.a - rho, c.b - sense * rho};
   const double first = pseudo_rotation(a - c, {1, 0}, sense);
   for (int quarter = 0; quarter < 4; ++quarter) {
     double t = first + quarter;
     if (t >= kPseudoTurn) t -= kPseudoTurn;
-    if (t <= sweep) *bound[quarter] = extreme[quarter];
+    if (t <= sweep) box[bound[quarter]] = extreme[quarter];
   }
-  return sized(lo_a, lo_b, hi_a, hi_b);
+  return sized(box[0], box[1], box[2], box[3]);
 }
 
 PieceBox PieceBox::around(const PathPiece* pieces, int count) {
