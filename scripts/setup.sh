@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(g++ make cmake ca-certificates
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
   librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev libfmt-dev libgoogle-perftools-dev)
+  libcli11-dev nlohmann-json3-dev libfmt-dev libmimalloc-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
