@@ -133,19 +133,26 @@ inline char* put_short_decimal(char* p, double v) {
   if (!(a >= 1e-3 && a < 1e9)) return nullptr;
   auto m = static_cast<std::uint64_t>(a * 1e6 + 0.5);  // a truncation: no rounding-mode call
   if (static_cast<double>(m) / 1e6 != a) return nullptr;
-  std::uint64_t integer = m / 1000000, fraction = m % 1000000;
+  auto integer = static_cast<std::int64_t>(m / 1000000);
+  auto fraction = static_cast<std::uint32_t>(m % 1000000);
   if (std::signbit(v)) *p++ = '-';
-  p = std::to_chars(p, p + 12, integer).ptr;
+  p = put_integer(p, integer);
   *p++ = '.';
   if (fraction == 0) {
     *p++ = '0';
     return p;
   }
-  int places = 6;
-  for (; fraction % 10 == 0; fraction /= 10) --places;
-  char* end = p + places;
-  for (char* q = end; q > p; fraction /= 10) *--q = static_cast<char>('0' + fraction % 10);
-  return end;
+  // The six places by pairs, then as many as are not trailing zeros: the highest byte that is no
+  // '0' (the two bytes after the places are '0' too), found from the bit width of their XOR.
+  char places[8] = {0, 0, 0, 0, 0, 0, '0', '0'};
+  std::memcpy(places, kPairs + 2 * (fraction / 10000), 2);
+  std::memcpy(places + 2, kPairs + 2 * (fraction / 100 % 100), 2);
+  std::memcpy(places + 4, kPairs + 2 * (fraction % 100), 2);
+  std::uint64_t word;
+  std::memcpy(&word, places, 8);
+  if constexpr (std::endian::native == std::endian::big) word = __builtin_bswap64(word);
+  std::memcpy(p, places, 8);  // whole: the caller's room holds it
+  return p + (std::bit_width(word ^ 0x3030303030303030u) + 7) / 8;
 }
 
 // The 17 digits of v < 10^17, with leading zeros, at `p`: a fixed number of pairs, no loop
