@@ -8,18 +8,48 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "word_lexer.hpp"
 
 namespace cutcom::lexer {
 
 namespace {
-constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
 // The line is read from a copy with eight zero bytes after it, so that a number's digits are
 // taken eight at a time (issue "Performance": a digit at a time was a fifth of the reader).
 constexpr std::size_t kLongestCopied = 256;  // a longer line goes to the lexer
 constexpr std::size_t kPadding = 8;
+
+// What a character is to the one pass, from a table (a chain of comparisons per character was a
+// fifth of the pass): bits of the classes below, and the word a letter begins.
+enum CharClass : std::uint8_t {
+  kSpace = 1,           // between words
+  kValueStart = 2,      // a value's first character: a digit, point or sign
+  kAfterValue = 4,      // may follow a value: a space, a comment or the next word's letter
+  kNotAfterNumber = 8,  // makes a number the lexer's: a point, sign, '_', '*' or '/'
+};
+enum class Word : std::uint8_t { kNone, kN, kG, kX, kY, kZ, kI, kJ, kK, kF };
+struct CharTable {
+  std::uint8_t cls[256] = {};
+  Word word[256] = {};
+};
+constexpr CharTable kChars = [] {
+  CharTable t;
+  auto set = [&](char c, int bits) { t.cls[static_cast<unsigned char>(c)] |= static_cast<std::uint8_t>(bits); };
+  for (char c : {' ', '\t', '\r'}) set(c, kSpace | kAfterValue);
+  set(';', kAfterValue);
+  for (char c = '0'; c <= '9'; ++c) set(c, kValueStart);
+  for (char c : {'.', '+', '-'}) set(c, kValueStart | kNotAfterNumber);
+  for (char c : {'_', '*', '/'}) set(c, kNotAfterNumber);
+  for (char c = 'A'; c <= 'Z'; ++c) set(c, kAfterValue), set(static_cast<char>(c - 'A' + 'a'), kAfterValue);
+  const std::pair<char, Word> words[] = {{'N', Word::kN}, {'G', Word::kG}, {'X', Word::kX},
+                                         {'Y', Word::kY}, {'Z', Word::kZ}, {'I', Word::kI},
+                                         {'J', Word::kJ}, {'K', Word::kK}, {'F', Word::kF}};
+  for (auto [c, w] : words)  // NC-LEX-1: letters are case-insensitive
+    t.word[static_cast<unsigned char>(c)] = t.word[static_cast<unsigned char>(c - 'A' + 'a')] = w;
+  return t;
+}();
+inline std::uint8_t class_of(char c) { return kChars.cls[static_cast<unsigned char>(c)]; }
 
 // The run of digits at p (p padded): its length, up to 8, and the value of those digits. The
 // characters become their digit values (XOR '0'); a byte is no digit where the result or the
@@ -68,20 +98,19 @@ bool plain_number(const char*& p, const char* end, Decimal& out) {
     p = q;
   }
   // A second point belongs to the lexer's span (Decimal::parse rejects it there).
-  return !(p < end && (*p == '.' || *p == '_' || *p == '+' || *p == '-' || *p == '*' || *p == '/'));
+  return !(class_of(*p) & kNotAfterNumber);
 }
 
 // Digits alone (N, G), as WordLexer::integer reads them directly: at most 12, not followed by a
-// digit, point, sign, '*', '/' or '_'.
-bool plain_integer(const char*& p, const char* end, std::int64_t& out) {
+// digit, point, sign, '*', '/' or '_' (p padded: the zeros after the line end the digits).
+bool plain_integer(const char*& p, std::int64_t& out) {
   const char* from = p;
   std::int64_t v = 0;
-  for (; p < end && is_digit(*p); ++p) {
+  for (; is_digit(*p); ++p) {
     if (p - from == 12) return false;
     v = v * 10 + (*p - '0');
   }
-  if (p == from) return false;
-  if (p < end && (*p == '.' || *p == '_' || *p == '+' || *p == '-' || *p == '*' || *p == '/')) return false;
+  if (p == from || (class_of(*p) & kNotAfterNumber)) return false;
   out = v;
   return true;
 }
@@ -103,48 +132,52 @@ bool read_plain_block(std::string_view text, BlockWords& out) {
   std::memset(line + text.size(), 0, kPadding);
   const char* p = line;
   const char* end = p + text.size();
+  // The zeros after the line are no space, value or word: only the tests of p against `end` tell
+  // them from a zero byte in the line (which leaves the line to the lexer).
   while (true) {
-    while (p < end && is_space(*p)) ++p;
+    while (class_of(*p) & kSpace) ++p;
     if (p == end || *p == ';') return true;  // NC-LEX-2: a comment to the end of the line
-    char letter = upper(*p++);               // NC-LEX-1: letters are case-insensitive
+    Word word = kChars.word[static_cast<unsigned char>(*p++)];
     // A letter of the lexer's other words (H, M, FA, X1=, …) or a space before the value
-    if (p == end || !(is_digit(*p) || *p == '.' || *p == '+' || *p == '-')) return false;
-    switch (letter) {
-      case 'N': {
+    if (!(class_of(*p) & kValueStart)) return false;
+    switch (word) {
+      case Word::kN: {
         std::int64_t n = 0;
-        if (out.number || !plain_integer(p, end, n)) return false;
+        if (out.number || !plain_integer(p, n)) return false;
         out.number = n;
         break;
       }
-      case 'G': {
+      case Word::kG: {
         std::int64_t g = 0;
-        if (out.motion || !plain_integer(p, end, g) || g > 3) return false;
+        if (out.motion || !plain_integer(p, g) || g > 3) return false;
         static constexpr Motion kMotion[] = {Motion::kRapid, Motion::kLinear, Motion::kArcCw, Motion::kArcCcw};
         out.motion = kMotion[g];
         break;
       }
-      case 'X':
-      case 'Y':
-      case 'Z':
-        if (!plain_axis(p, end, out.axis[static_cast<std::size_t>(letter - 'X')])) return false;
+      case Word::kX:
+      case Word::kY:
+      case Word::kZ:
+        if (!plain_axis(p, end, out.axis[static_cast<std::size_t>(word) - static_cast<std::size_t>(Word::kX)]))
+          return false;
         break;
-      case 'I':
-      case 'J':
-      case 'K':
-        if (!plain_axis(p, end, out.centre[static_cast<std::size_t>(letter - 'I')])) return false;
+      case Word::kI:
+      case Word::kJ:
+      case Word::kK:
+        if (!plain_axis(p, end, out.centre[static_cast<std::size_t>(word) - static_cast<std::size_t>(Word::kI)]))
+          return false;
         break;
-      case 'F': {
+      case Word::kF: {
         Decimal f;
         if (out.feed || !plain_number(p, end, f) || f.sign() < 0) return false;  // NC-LEX-5: F is not negative
         out.feed = f;
         break;
       }
-      default:
+      case Word::kNone:
         return false;
     }
     // What may follow a value: a space, a comment, the line's end or the next word's letter
     // (NC-LEX-1: words without spaces between them, G1X10Y20).
-    if (p < end && !is_space(*p) && *p != ';' && !is_letter(*p)) return false;
+    if (p < end && !(class_of(*p) & kAfterValue)) return false;
     ++out.word_count;
   }
 }
