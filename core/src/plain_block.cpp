@@ -88,12 +88,8 @@ bool plain_number(const char*& p, const char* end, Decimal& out) {
     Decimal::ParseError error;
     if (!Decimal::read(p, end, out, error)) return false;
   } else {
-    if (before == 0 && after == 0) return false;  // a sign or a point alone: the lexer's error
-    static constexpr std::int64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000,
-                                              100'000,       10'000,      1'000,      100};
-    static_assert(Decimal::kUnitsPerOne == 1'000'000'000);
-    auto units = static_cast<std::int64_t>(integer) * Decimal::kUnitsPerOne +
-                 static_cast<std::int64_t>(fraction) * kScale[after];  // below 10^16
+    if (before == 0 && after == 0) return false;                 // a sign or a point alone: the lexer's error
+    Int128 units = Decimal::units_of(integer, fraction, after);  // below 10^16: no range check
     out = Decimal::from_units(negative ? -units : units);
     p = q;
   }

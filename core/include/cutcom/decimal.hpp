@@ -27,6 +27,14 @@ class Decimal {
     return d;
   }
   static constexpr Decimal from_int(std::int64_t v) { return from_units(Int128(v) * kUnitsPerOne); }
+  // The magnitude of integer.fraction in units, where `fraction` has `places` digits (at most
+  // kFractionDigits): how a number read from text is valued (read(), the reader's plain blocks).
+  static constexpr Int128 units_of(std::uint64_t integer, std::uint64_t fraction, int places) {
+    constexpr std::uint64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
+                                        10'000,        1'000,       100,        10,        1};
+    static_assert(kFractionDigits == 9 && kUnitsPerOne == 1'000'000'000);
+    return Int128(integer) * kUnitsPerOne + Int128(fraction * kScale[places]);
+  }
 
   // Why parsing fails, for the reader's error message.
   enum class ParseError { kSyntax, kTooManyDecimals, kOutOfRange };
@@ -129,10 +137,7 @@ inline bool Decimal::read(const char*& p, const char* end, Decimal& out, ParseEr
     }
   }
   if (!any) return error = ParseError::kSyntax, false;
-  static constexpr std::uint64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
-                                             10'000,        1'000,       100,        10,        1};
-  static_assert(kFractionDigits == 9);
-  Int128 units = Int128(integer) * kUnitsPerOne + Int128(fraction * kScale[frac_digits]);
+  Int128 units = units_of(integer, fraction, frac_digits);
   if (units > kMaxUnits) return error = ParseError::kOutOfRange, false;
   out = from_units(negative ? -units : units);
   return true;
