@@ -539,8 +539,8 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, start, a
               "(`cutcom run`, lines+arcs with CDON). The SVG picture keeps every element up to "
               "20,000 of them, then polylines within a bound it states (at most 200,000 points). "
               "JSON keeps its lists after the path (here every decision, `--trace`) in memory up to "
-              "1 MB each, then in a temporary file. The reader runs up to 8 batches of 256 blocks "
-              "ahead of the engine (about 5.6 MB): a program shorter than that never fills them, so "
+              "1 MB each, then in a temporary file. The reader runs up to 4 batches of 256 blocks "
+              "ahead of the engine (about 2.8 MB): a program shorter than that never fills them, so "
               "its peak is a few MB lower.", "",
               "| blocks | peak memory, text output | peak memory, JSON with `--trace` | peak memory, SVG picture "
               "| SVG time (s) |", "|---|---|---|---|---|"]

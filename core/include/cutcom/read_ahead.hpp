@@ -43,7 +43,7 @@ class ReadAhead final : public BlockSource {
 
  private:
   static constexpr std::size_t kBatch = 256;             // blocks handed over at once
-  static constexpr std::size_t kQueued = 8;              // batches read ahead at most: the memory bound (5.6 MB)
+  static constexpr std::size_t kQueued = 4;              // batches read ahead at most: the memory bound (2.8 MB)
   static constexpr std::size_t kLowWater = kQueued / 2;  // a full queue wakes the reader again here
   struct Batch {
     std::vector<Block> blocks;  // kBatch of them once used; reused, so their text keeps its room
