@@ -93,7 +93,7 @@ struct BlockCopy : BlockFacts {
     c.cr_units = b.words.cr ? b.words.cr->units() : 0;
     // Differences of two values within Decimal's limits: far inside Int128, no check needed. Set
     // one by one: a braced array was built aside and copied, a 16-byte load of two 8-byte stores
-    // that the CPU cannot forward (a sixth of this conversion's time).
+    // that the CPU cannot forward (a sixth of compensation_active's samples waited there).
     auto set_between = [](std::array<Int128, 3>& out, const Point3& from, const Point3& to) {
       out[0] = to.x.units() - from.x.units();
       out[1] = to.y.units() - from.y.units();
