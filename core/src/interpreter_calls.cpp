@@ -381,7 +381,7 @@ void Interpreter::arguments(std::string_view s, std::size_t& i, std::vector<std:
 
 // NC-PARAM-SUB-5: a subprogram file run on its own takes these arguments as if called with them.
 void Interpreter::set_arguments(std::string_view list) {
-  std::string text = "(" + std::string(list) + ")";
+  std::string text = fmt::format("({})", list);
   std::size_t i = 1;
   std::vector<std::string> names;
   cx().args.clear();

@@ -406,7 +406,7 @@ void WordLexer::word() {
       break;
     case 'L':
       if (is_digit(peek())) {
-        std::string call = "L" + rest_of_word();
+        std::string call = fmt::format("L{}", rest_of_word());
         if (!machine_cycle(call)) fail(unsupported_message(call, "subprogram calls"), at);
         i_ += call.size() - 1;  // NC-CYCLE-3: Ln of the machine, as a standard cycle
         return not_simulated_cycle(call, at);
