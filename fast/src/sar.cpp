@@ -16,12 +16,9 @@ Vec2 plane_of(const Point3& p, PlaneAxes a) {
 }  // namespace
 
 void SarExpansion::keep_last_contour(const Block& b) {
-  last_contour_.words.line = b.words.line, last_contour_.words.number = b.words.number;
-  last_contour_.words.source = b.words.source;
-  last_contour_.words.cr = b.words.cr;
-  last_contour_.index = b.index, last_contour_.state = b.state;
-  last_contour_.start = b.start, last_contour_.end = b.end, last_contour_.centre = b.centre;
-  last_contour_.circle = b.circle, last_contour_.sar = b.sar, last_contour_.insert = b.insert;
+  copy_by_words(last_contour_.start, b.start), copy_by_words(last_contour_.end, b.end);
+  copy_by_words(last_contour_.centre, b.centre), copy_by_words(last_contour_.words.cr, b.words.cr);
+  last_contour_.circle = b.circle, last_contour_.state.motion = b.state.motion, last_contour_.sar = b.sar;
 }
 
 void SarExpansion::forward(const Block& b, const PlaneOverride* o) {

@@ -55,8 +55,9 @@ class SarExpansion {
   SarSequence sequence_;
   SarSubBlocks subs_;  // reused: nothing allocated per SAR block
   // The last programmed block moving in the plane, as run (SAR-TANGENT-1 at a retraction): only
-  // what BlockCopy::of reads of its geometry, since a whole Block (its words and actions) or a
-  // BlockCopy per block would cost more than the reader (converted only at a retraction).
+  // what element_in reads of its BlockCopy, its geometry, since a whole Block (its words, actions
+  // and modal state) or a BlockCopy per block would cost more than the reader (converted only at
+  // a retraction).
   Block last_contour_;
   void keep_last_contour(const Block& b);
   PlaneOverride last_contour_over_;
