@@ -376,7 +376,9 @@ void Compensation::blend_radius(const Block& b, const BlockCopy& copy) {
 }
 
 void Compensation::corner(const Block& b, const BlockCopy& copy) {
-  Element next = element_of(copy);
+  // Not copied: `copy` is in a slot (compensation_active's current block), whose element stays
+  // while the corner is decided; a copy would wait for the element's stores (element_of).
+  const Element& next = element_of(copy);
   double next_radius = 0;
   if (!equidistant_exists(b, copy, next, next_radius)) return start_look_ahead(b);
   Vec2 v = open_el.end;
