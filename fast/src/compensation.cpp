@@ -562,7 +562,9 @@ void Compensation::transition_circle(const BlockCopy& b, const Element& next, do
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
   Origin corner = origin(open, OriginKind::kTransitionCircle);
   open_element(b, next, to, next_radius, Placed::kNormal);
-  corner.next_line = open.line, corner.next_block = open.number, corner.next_insert = open.insert;
+  // From b, which open now copies: open's just-written fields would be read back by loads the CPU
+  // cannot forward from the copy's stores (a fifth of this function's samples).
+  corner.next_line = b.line, corner.next_block = b.number, corner.next_insert = b.insert;
   if (r > 0) {  // TRC-G450-2: no circle for a zero radius
     double hv = h(open.start);
     // Around the outside: clockwise on the left, counter-clockwise on the right.
