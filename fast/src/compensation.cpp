@@ -50,7 +50,8 @@ void Compensation::compensation_off(const Block& b) {
       return select(b);
     }
   }
-  BlockCopy c = copy_of(b);
+  BlockCopy& c = uncompensated;
+  copy_into(c, b);
   if (!c.arc) return line(c, c.start, c.end, OriginKind::kProgrammed, c.rapid);
   // A programmed circle about its (corrected, ARC-CENTRE-1) centre.
   axes = plane_axes(b.state.plane);
@@ -90,7 +91,7 @@ void Compensation::select(const Block& b) {
   s = cs.s;
   r = cs.r.to_double();
   r_units = cs.r.units();
-  selection = copy_of(b);
+  copy_into(selection, b);
   selection_from_tool = false;
   has_prev = false;
   approach_until = -1;
@@ -118,7 +119,7 @@ bool Compensation::still_compensable(const Block& b, bool* radius_changes) {
 
 void Compensation::hold_back(const Block& b) {
   if (dummy_count == md.cutcom_maxnum_dummy_blocks) return raise(10762, b.words);
-  dummies[static_cast<std::size_t>(dummy_count++)] = copy_of(b);
+  copy_into(dummies[static_cast<std::size_t>(dummy_count++)], b);  // in place: no action strings made
 }
 
 void Compensation::run_held_back(Vec2 at) {

@@ -86,6 +86,9 @@ class Compensation {
   Int128 r_units = 0;                // the same, exactly, in 10^-9 mm (TRC-KONT-2 decides on it)
   ActiveEdge edge;
 
+  // A block without compensation, converted in place: a BlockCopy made per block makes and
+  // destroys its sixteen actions' strings.
+  BlockCopy uncompensated;
   BlockCopy selection;  // kApproach: the selection block
   // Its start is the tool off the programmed contour after a side change (TRC-SIDE-1); with
   // radius 0 the tool is the programmed point, so TRC-KONT-1/2 stay exact on programmed decimals.
