@@ -21,16 +21,19 @@ inline Vec2 left_normal(Vec2 unit) { return {-unit.b, unit.a}; }
 inline double norm(Vec2 p) { return std::sqrt(p.a * p.a + p.b * p.b); }
 
 // A compensated block in plane coordinates: a straight line or a circle (I/J/K).
+// The points first, each a multiple of 16 bytes from the start: an element is copied 16 bytes at a
+// time, and a point read back soon after from a copy must lie within one of its stores to be
+// forwarded (a point at 8 bytes past a boundary waited in a fifth of entry_corner's samples).
 struct Element {
-  bool arc = false;
   Vec2 start, end;
   Vec2 unit;          // lines: direction of travel
-  double length = 0;  // lines: > 0
   Vec2 centre;        // arcs: centre on the chord's bisector (ARC-CENTRE-1)
+  double length = 0;  // lines: > 0
   double radius = 0;  // arcs
-  int sense = 1;      // arcs: +1 ccw (G3), -1 cw (G2)
-  bool full = false;  // arcs: start = end
   double turn = 0;    // arcs: the sweep in (0, 2 pi], computed once with the element (an atan2)
+  int sense = 1;      // arcs: +1 ccw (G3), -1 cw (G2)
+  bool arc = false;
+  bool full = false;  // arcs: start = end
 
   static Element line(Vec2 s, Vec2 e);
   static Element circle(Vec2 s, Vec2 e, Vec2 programmed_centre, int sense);
