@@ -580,7 +580,10 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, start, a
                   "process taken out): the reader alone, then the reader and the fast engine on one thread, "
                   "without output; the writers' share is what writing the text or the JSON document (to a "
                   "stream that drops it) adds on the same thread. Unlike times, these counts do not move with "
-                  "the machine's load, so they measure small changes.", "",
+                  "the machine's load, so they measure small changes. They do not weigh instructions: "
+                  "valgrind counts each pass of a `rep movsq` as one, and core and fast copy blocks in loops "
+                  "of 16-byte moves instead (the top CMakeLists.txt says why), which count more instructions "
+                  "and take less time.", "",
                   "| contour | blocks | reader | fast engine | together | text writer | JSON writer |",
                   "|---|---|---|---|---|---|---|"]
         lines += [f"| {label} | {n} | {r:.0f} | {e:.0f} | {t:.0f} | {tw:.0f} | {jw:.0f} |"
