@@ -18,7 +18,8 @@ Vec2 plane_of(const Point3& p, PlaneAxes a) {
 void SarExpansion::keep_last_contour(const Block& b) {
   copy_by_words(last_contour_.start, b.start), copy_by_words(last_contour_.end, b.end);
   copy_by_words(last_contour_.centre, b.centre), copy_by_words(last_contour_.words.cr, b.words.cr);
-  last_contour_.circle = b.circle, last_contour_.state.motion = b.state.motion, last_contour_.sar = b.sar;
+  last_contour_.circle = b.circle, last_contour_.state.motion = b.state.motion;
+  // Its SarTag stays the default: forward keeps programmed blocks only.
 }
 
 void SarExpansion::forward(const Block& b, const PlaneOverride* o) {
