@@ -590,9 +590,8 @@ void Compensation::arc(BlockCopy& owner, const PathPoint& from, const PathPoint&
     e.feed = owner.feed, e.feed_type = owner.feed_type, e.origin = from_what;
   };
   if (direct()) {
-    PathElement e;
-    fill(e);
-    return sink.element(e);
+    fill(outgoing);
+    return sink.element(outgoing);
   }
   HeldRecord& rec = hold_record_of(owner);
   rec.is_element = true, rec.radius = norm(ab(from) - ab(centre));
