@@ -14,6 +14,7 @@
 #include "../core/src/word_lexer.hpp"
 #include "cutcom/input_error.hpp"
 #include "cutcom/interpreter.hpp"
+#include "cutcom/line_buffer.hpp"
 #include "cutcom/reader.hpp"
 
 namespace {
@@ -36,15 +37,33 @@ Reading general(const std::string& line) {
   return r;
 }
 
-// Returns whether the one pass took the line.
+// The one pass over `line` as it lies in a LineBuffer: its '\n', then the next line's text (digits
+// that must not be read as the line's), then the buffer's padding.
+bool read_in_line_buffer(const std::string& line, BlockWords& out) {
+  std::string buffer = line + "\n123456789.5 X1" + std::string(cutcom::LineBuffer::kPadding, '\0');
+  return cutcom::lexer::read_plain_block(std::string_view(buffer.data(), line.size()), out, true);
+}
+
+// The lexer's reading of a line the one pass took, compared.
+void expect_lexer_reads(const std::string& line, const BlockWords& plain);
+
+// Returns whether the one pass took the line, copied or where it lies in a LineBuffer (the same
+// lines, but for those longer than the copy holds, which only the second takes).
 bool expect_same_reading(const std::string& line) {
-  BlockWords plain;
-  plain.reset(7);
+  BlockWords plain, in_place;
+  plain.reset(7), in_place.reset(7);
   bool taken = cutcom::lexer::read_plain_block(line, plain);
-  if (!taken) return false;
+  bool taken_in_place = read_in_line_buffer(line, in_place);
+  if (line.size() <= 256) EXPECT_EQ(taken, taken_in_place) << line;
+  if (taken) expect_lexer_reads(line, plain);
+  if (taken_in_place) expect_lexer_reads(line, in_place);
+  return taken || taken_in_place;
+}
+
+void expect_lexer_reads(const std::string& line, const BlockWords& plain) {
   Reading g = general(line);
   EXPECT_FALSE(g.rejected) << "taken, but the lexer rejects: " << line;
-  if (g.rejected) return true;
+  if (g.rejected) return;
   EXPECT_TRUE(static_cast<const cutcom::BlockWordFields&>(plain) ==
               static_cast<const cutcom::BlockWordFields&>(g.words))
       << line;
@@ -54,7 +73,6 @@ bool expect_same_reading(const std::string& line) {
   EXPECT_FALSE(g.words.contour.has_value()) << line;
   EXPECT_FALSE(g.words.tool_name.has_value()) << line;
   EXPECT_TRUE(g.words.not_simulated.empty()) << line;
-  return true;
 }
 
 std::string pick(std::mt19937_64& random, const std::vector<std::string>& from) {
@@ -120,10 +138,17 @@ TEST(PlainBlock, TakesTheCommonBlocks) {
   // place, a 13th integer digit, a negative feed, an expression, a label.
   for (const char* line : {"G4 F2", "X 10", "X1 X2", "X1.1234567891", "X1234567890123", "F-5", "X1+2", "G1 X=5",
                            "LABEL: X1", "X1 M3", "G1.0 X1", "N1.5", "X1.2.3", "X1_", "X.", "X"}) {
-    BlockWords out;
-    out.reset(1);
+    BlockWords out, in_place;
+    out.reset(1), in_place.reset(1);
     EXPECT_FALSE(cutcom::lexer::read_plain_block(line, out)) << line;
+    EXPECT_FALSE(read_in_line_buffer(line, in_place)) << line;
   }
+  // A line longer than the copy holds is read where it lies in a LineBuffer.
+  std::string longer = "G1 X1.5" + std::string(300, ' ') + "Y-2 ; a long gap";
+  BlockWords in_place;
+  in_place.reset(7);
+  EXPECT_TRUE(read_in_line_buffer(longer, in_place));
+  EXPECT_TRUE(expect_same_reading(longer));
 }
 
 // covers: NC-LEX-1

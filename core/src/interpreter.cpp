@@ -136,7 +136,8 @@ bool Interpreter::next(std::string& text, int& line, BlockWords* plain) {
       }
       if (stack_.size() == 1 && plain) {
         plain->reset(cx().line);
-        if (lexer::read_plain_block(view, *plain)) {  // no name, '=' or ':': not parametric
+        // no name, '=' or ':': not parametric
+        if (lexer::read_plain_block(view, *plain, !copied && line_padded_)) {
           plain->plain = true;
           line = cx().line;
           return true;

@@ -25,6 +25,7 @@ bool Interpreter::getline(std::string_view& text) {
   text = {};
   Context& c = cx();
   last_cached_ = nullptr;
+  line_padded_ = false;
   c.line_start = c.offset;
   if (!c.cache->lines.empty()) {
     auto hit = c.cache->lines.find(c.offset);
@@ -52,6 +53,7 @@ bool Interpreter::getline(std::string_view& text) {
     c.stream_at = -1;
     return false;
   }
+  line_padded_ = true;
   c.offset += static_cast<std::streamoff>(text.size()) + 1;
   c.stream_at = c.offset;
   ++c.line;

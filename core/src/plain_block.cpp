@@ -10,15 +10,18 @@
 #include <cstring>
 #include <utility>
 
+#include "cutcom/line_buffer.hpp"
 #include "word_lexer.hpp"
 
 namespace cutcom::lexer {
 
 namespace {
-// The line is read from a copy with eight zero bytes after it, so that a number's digits are
-// taken eight at a time (issue "Performance": digit by digit, a sixth of the reader's work).
-constexpr std::size_t kLongestCopied = 256;  // a longer line goes to the lexer
+// A number's digits are taken eight at a time (issue "Performance": digit by digit, a sixth of
+// the reader's work), so eight bytes after the line must be readable: a LineBuffer's line has
+// them; other text is read from a copy with eight zero bytes after it.
+constexpr std::size_t kLongestCopied = 256;  // a longer line (not in a LineBuffer) goes to the lexer
 constexpr std::size_t kPadding = 8;
+static_assert(LineBuffer::kPadding >= kPadding);
 
 // What a character is to the one pass, from a table (chains of comparisons per character cost 80
 // instructions a block more): bits of the classes below, and the word a letter begins.
@@ -120,17 +123,25 @@ bool plain_axis(const char*& p, const char* end, AxisWord& slot) {
   slot.present = true;
   return true;
 }
+bool read_plain(const char* p, const char* end, BlockWords& out);
 }  // namespace
 
-bool read_plain_block(std::string_view text, BlockWords& out) {
+bool read_plain_block(std::string_view text, BlockWords& out, bool in_line_buffer) {
+  if (in_line_buffer) return read_plain(text.data(), text.data() + text.size(), out);
   if (text.size() > kLongestCopied) return false;
   char line[kLongestCopied + kPadding];
   std::memcpy(line, text.data(), text.size());
   std::memset(line + text.size(), 0, kPadding);
-  const char* p = line;
-  const char* end = p + text.size();
-  // The zeros after the line are no space, value or word: only the tests of p against `end` tell
-  // them from a zero byte in the line (which leaves the line to the lexer).
+  return read_plain(line, line + text.size(), out);
+}
+
+namespace {
+// [p, end) followed by a '\n' or a zero and at least kPadding readable bytes. The text is read
+// where it lies when it can be: eight digits loaded from a copy just written a byte or a word at
+// a time wait until those stores are written (the CPU forwards no load from several stores).
+bool read_plain(const char* p, const char* end, BlockWords& out) {
+  // The '\n' or zeros after the line are no space, value or word: only the tests of p against
+  // `end` tell them from such a byte in the line (which leaves the line to the lexer).
   while (true) {
     while (class_of(*p) & kSpace) ++p;
     if (p == end || *p == ';') return true;  // NC-LEX-2: a comment to the end of the line
@@ -175,5 +186,6 @@ bool read_plain_block(std::string_view text, BlockWords& out) {
     ++out.word_count;
   }
 }
+}  // namespace
 
 }  // namespace cutcom::lexer

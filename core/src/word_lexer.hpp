@@ -39,8 +39,10 @@ enum GGroup : unsigned {
 
 // The common block (N, G0…G3, X Y Z, I J K, F with plain decimals) in one pass, into `out` as
 // reset: true when the whole line was read so, as WordLexer would read it; false leaves the line
-// to WordLexer (`out` partly written). plain_block.cpp.
-bool read_plain_block(std::string_view text, BlockWords& out);
+// to WordLexer (`out` partly written). `in_line_buffer`: the text is a line of a LineBuffer,
+// followed by its '\n' or a zero and the buffer's padding, and is read where it lies; other text
+// is copied first. plain_block.cpp.
+bool read_plain_block(std::string_view text, BlockWords& out, bool in_line_buffer = false);
 
 class WordLexer {
  public:

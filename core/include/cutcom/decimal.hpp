@@ -29,11 +29,13 @@ class Decimal {
   static constexpr Decimal from_int(std::int64_t v) { return from_units(Int128(v) * kUnitsPerOne); }
   // The magnitude of integer.fraction in units, where `fraction` has `places` digits (at most
   // kFractionDigits): how a number read from text is valued (read(), the reader's plain blocks).
+  // (The scales are a static table: one local to the function was written to the stack at each
+  // call, eight stores per number read.)
+  static constexpr std::uint64_t kFractionScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
+                                                     10'000,        1'000,       100,        10,        1};
   static constexpr Int128 units_of(std::uint64_t integer, std::uint64_t fraction, int places) {
-    constexpr std::uint64_t kScale[] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
-                                        10'000,        1'000,       100,        10,        1};
     static_assert(kFractionDigits == 9 && kUnitsPerOne == 1'000'000'000);
-    return Int128(integer) * kUnitsPerOne + Int128(fraction * kScale[places]);
+    return Int128(integer) * kUnitsPerOne + Int128(fraction * kFractionScale[places]);
   }
 
   // Why parsing fails, for the reader's error message.

@@ -181,6 +181,7 @@ class Interpreter {
     std::unique_ptr<LineRecord, LineRecordDeleter> record;
   };
   CachedLine* last_cached_ = nullptr;     // the cached line getline() returned last (or null)
+  bool line_padded_ = false;              // getline()'s last line lies in a LineBuffer (its padding)
   CachedLine* current_cached_ = nullptr;  // the line next() runs, if it is cached
   LineRecord& record_of(CachedLine& line);
   // An expression of the line being run, from `from`: evaluated from its record when the line

@@ -25,7 +25,10 @@ class LineBuffer {
     text.assign(line);
     return true;
   }
-  // The same without a copy: `line` points into the buffer and holds until the next call.
+  // The same without a copy: `line` points into the buffer and holds until the next call. The
+  // line is followed in the buffer by its '\n', or by a zero after the last line, and at least
+  // kPadding readable bytes (read_plain_block reads the digits of a number eight at a time).
+  static constexpr std::size_t kPadding = 16;
   bool next(std::istream& in, std::string_view& line) {
     std::size_t searched = begin_;  // what holds no '\n' is not searched again
     while (true) {
@@ -47,10 +50,12 @@ class LineBuffer {
       std::size_t kept = end_ - begin_;
       if (begin_ > 0) std::memmove(data_.data(), data + begin_, kept);
       begin_ = 0, end_ = kept, searched = kept;
-      if (data_.size() < kRead || data_.size() - end_ < kRead / 2) data_.resize(std::max(kRead, 2 * data_.size()));
-      in.read(data_.data() + end_, static_cast<std::streamsize>(data_.size() - end_));
+      if (data_.size() < kRead || data_.size() - end_ < kRead / 2)
+        data_.resize(std::max(kRead, 2 * data_.size()) + kPadding);
+      in.read(data_.data() + end_, static_cast<std::streamsize>(data_.size() - kPadding - end_));
       auto got = static_cast<std::size_t>(in.gcount());
       end_ += got;
+      std::memset(data_.data() + end_, 0, kPadding);
       if (!in) at_end_ = true;  // the end, or an error: the caller sees the stream's state
     }
   }
