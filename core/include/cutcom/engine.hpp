@@ -24,11 +24,6 @@ struct ActiveEdge {
     return {s.tool, s.edge, s.sum_offset, s.edge_radius, s.edge_wear, s.offn, s.edge_position};
   }
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
-  // The same as `of(s) == *this`, read where the fields are (once per block: not built aside).
-  bool in_force(const ModalState& s) const {
-    return s.tool == tool && s.edge == edge && s.sum_offset == sum_offset && s.edge_radius == radius &&
-           s.edge_wear == wear && s.offn == offn && s.edge_position == position;
-  }
 };
 
 // TRC-UNSUP-1: KONTC/KONTT need polynomial output; the block is rejected, naming it.
@@ -52,8 +47,8 @@ inline bool selects_anew(const ModalState& s, Side side, std::uint32_t selection
 // the plane (each engine, at that block); anything else is not supported (TRC-UNSUP-1).
 inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_side) {
   const ModalState& s = b.state;
-  if (active.in_force(s)) return false;
   ActiveEdge now = ActiveEdge::of(s);
+  if (now == active) return false;
   if (s.edge == 0 || !s.edge_defined)
     throw UnsupportedError(b.words.line, "a change to D0 or to an undefined edge while compensation is active");
   // NC-WORD-13: under a transformation the control changes tools only with G40 (JOB06 §7.10).
