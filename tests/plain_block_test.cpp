@@ -45,21 +45,6 @@ bool read_in_line_buffer(const std::string& line, BlockWords& out) {
 }
 
 // The lexer's reading of a line the one pass took, compared.
-void expect_lexer_reads(const std::string& line, const BlockWords& plain);
-
-// Returns whether the one pass took the line, copied or where it lies in a LineBuffer (the same
-// lines, but for those longer than the copy holds, which only the second takes).
-bool expect_same_reading(const std::string& line) {
-  BlockWords plain, in_place;
-  plain.reset(7), in_place.reset(7);
-  bool taken = cutcom::lexer::read_plain_block(line, plain);
-  bool taken_in_place = read_in_line_buffer(line, in_place);
-  if (line.size() <= 256) EXPECT_EQ(taken, taken_in_place) << line;
-  if (taken) expect_lexer_reads(line, plain);
-  if (taken_in_place) expect_lexer_reads(line, in_place);
-  return taken || taken_in_place;
-}
-
 void expect_lexer_reads(const std::string& line, const BlockWords& plain) {
   Reading g = general(line);
   EXPECT_FALSE(g.rejected) << "taken, but the lexer rejects: " << line;
@@ -73,6 +58,21 @@ void expect_lexer_reads(const std::string& line, const BlockWords& plain) {
   EXPECT_FALSE(g.words.contour.has_value()) << line;
   EXPECT_FALSE(g.words.tool_name.has_value()) << line;
   EXPECT_TRUE(g.words.not_simulated.empty()) << line;
+}
+
+// Returns whether the one pass took the line, copied or where it lies in a LineBuffer (the same
+// lines, but for those longer than the copy holds, which only the second takes).
+bool expect_same_reading(const std::string& line) {
+  BlockWords plain, in_place;
+  plain.reset(7), in_place.reset(7);
+  bool taken = cutcom::lexer::read_plain_block(line, plain);
+  bool taken_in_place = read_in_line_buffer(line, in_place);
+  if (line.size() <= 256) {
+    EXPECT_EQ(taken, taken_in_place) << line;
+  }
+  if (taken) expect_lexer_reads(line, plain);
+  if (taken_in_place) expect_lexer_reads(line, in_place);
+  return taken || taken_in_place;
 }
 
 std::string pick(std::mt19937_64& random, const std::vector<std::string>& from) {

@@ -123,19 +123,7 @@ bool plain_axis(const char*& p, const char* end, AxisWord& slot) {
   slot.present = true;
   return true;
 }
-bool read_plain(const char* p, const char* end, BlockWords& out);
-}  // namespace
 
-bool read_plain_block(std::string_view text, BlockWords& out, bool in_line_buffer) {
-  if (in_line_buffer) return read_plain(text.data(), text.data() + text.size(), out);
-  if (text.size() > kLongestCopied) return false;
-  char line[kLongestCopied + kPadding];
-  std::memcpy(line, text.data(), text.size());
-  std::memset(line + text.size(), 0, kPadding);
-  return read_plain(line, line + text.size(), out);
-}
-
-namespace {
 // [p, end) followed by a '\n' or a zero and at least kPadding readable bytes. The text is read
 // where it lies when it can be: eight digits loaded from a copy just written a byte or a word at
 // a time wait until those stores are written (the CPU forwards no load from several stores).
@@ -187,5 +175,14 @@ bool read_plain(const char* p, const char* end, BlockWords& out) {
   }
 }
 }  // namespace
+
+bool read_plain_block(std::string_view text, BlockWords& out, bool in_line_buffer) {
+  if (in_line_buffer) return read_plain(text.data(), text.data() + text.size(), out);
+  if (text.size() > kLongestCopied) return false;
+  char line[kLongestCopied + kPadding];
+  std::memcpy(line, text.data(), text.size());
+  std::memset(line + text.size(), 0, kPadding);
+  return read_plain(line, line + text.size(), out);
+}
 
 }  // namespace cutcom::lexer
