@@ -75,11 +75,18 @@ int digit_run(const char* p, std::uint64_t& value) {
   return count;
 }
 
+// A number of eight digits or more before or after the point, by Decimal::read: out of line, so
+// that the common number's few instructions are inlined where a word is read.
+[[gnu::noinline]] bool long_number(const char*& p, const char* end, Decimal& out) {
+  Decimal::ParseError error;
+  return Decimal::read(p, end, out, error);
+}
+
 // A number at p as WordLexer::number takes it (a sign, then digits and points, valued as
 // Decimal::parse values them), its end a word's (not '_', a sign, '*' or '/'); false leaves it to
 // the lexer. Up to 7 digits before and after the point from digit runs (p padded), longer ones
 // by Decimal::read.
-bool plain_number(const char*& p, const char* end, Decimal& out) {
+inline bool plain_number(const char*& p, const char* end, Decimal& out) {
   const char* q = p;
   bool negative = *q == '-';
   if (*q == '+' || *q == '-') ++q;
@@ -88,8 +95,7 @@ bool plain_number(const char*& p, const char* end, Decimal& out) {
   q += before;
   if (before < 8 && *q == '.') after = digit_run(++q, fraction), q += after;
   if (before == 8 || after == 8) {  // a long number (but a plain one still)
-    Decimal::ParseError error;
-    if (!Decimal::read(p, end, out, error)) return false;
+    if (!long_number(p, end, out)) return false;
   } else {
     if (before == 0 && after == 0) return false;                 // a sign or a point alone: the lexer's error
     Int128 units = Decimal::units_of(integer, fraction, after);  // below 10^16: no range check
