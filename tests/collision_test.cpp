@@ -46,7 +46,9 @@ TEST(Collision, ARecessExactly2rWideIsCutWhereItsMouthCirclesEnd) {
     for (int k : {1, 2}) {
       EXPECT_EQ(c[k].branch, "cut");
       EXPECT_EQ(c[k].margin, 0.0);
-      if (x == &r.ref) EXPECT_EQ(c[k].margin_exact, "0");
+      if (x == &r.ref) {
+        EXPECT_EQ(c[k].margin_exact, "0");
+      }
     }
   }
 }
