@@ -91,6 +91,7 @@ bool Interpreter::skipped(const std::string& s) {
 
 bool Interpreter::next(std::string& text, int& line, BlockWords* plain) {
   if (plain) plain->plain = false;
+  plain_refused_ = false;
   while (true) {
     if (pending_next_ < pending_.size()) {  // NC-PARAM-FRAME-1: the blocks of a frame assignment
       text = pending_[pending_next_++];
@@ -147,6 +148,7 @@ bool Interpreter::next(std::string& text, int& line, BlockWords* plain) {
       if (stack_.size() == 1 && !maybe_parametric(raw_)) {
         text.swap(raw_);
         line = cx().line;
+        plain_refused_ = plain != nullptr;  // the text read_plain_block was given just now
         return true;
       }
       run_line(raw_, text);

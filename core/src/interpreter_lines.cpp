@@ -82,7 +82,7 @@ std::string_view unit_header(std::string_view text) {
 
 // NC-PARAM-SUB-8: the header of another unit ends the text of the one being read (the line is
 // given back); the unit's own header, before its first block, does not.
-bool Interpreter::unit_ends(Context& c, std::string_view text) const {
+bool Interpreter::header_ends_unit(Context& c, std::string_view text) const {
   if (!c.begun) {
     std::size_t k = text.find_first_not_of(" \t\r");
     if (k == std::string::npos || text[k] == ';') return false;

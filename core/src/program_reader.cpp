@@ -40,7 +40,7 @@ void ProgramReader::out_of_range_is_an_error(int line, Stage&& stage) {
 
 bool ProgramReader::next(Block& out) {
   for (;;) {
-    if (pop_ready(out)) {
+    if (!ready_.empty() && pop_ready(out)) {  // asked here first: most blocks come straight from the text
       tool_tip_offset(out);
       return true;
     }
@@ -81,7 +81,8 @@ bool ProgramReader::read_block(Block& out) {
 }
 
 bool ProgramReader::take_block(Block& out, int line) {
-  if (!out.words.plain) parse_block_words(text_, line, out.words, machine_cycles_);  // else read by next()
+  if (!out.words.plain)  // else read by next()
+    parse_block_words(text_, line, out.words, machine_cycles_, interpreter_.plain_refused());
   const BlockWords& w = out.words;
   if (w.word_count == 0) return false;  // blank, comment-only, header or label-only line
   if (end_line_ != 0 && interpreter_.uses_control_flow()) {
@@ -333,8 +334,10 @@ void ProgramReader::resolve(Block& b) {
   ModalState& eff = b.state;  // built in place: the block's own copy is the one kept
   eff = s;
   if (tapping_block) eff.motion = Motion::kLinear;  // NC-WORD-12: G63 moves this block in a line
+  // NC-POS-1/2: values as written (no frame, offset or unit conversion) also mirror nothing.
+  as_written_ = values_as_written();
   {
-    if (mirrors_plane(s.plane)) {
+    if (!as_written_ && mirrors_plane(s.plane)) {
       if (eff.motion == Motion::kArcCw)
         eff.motion = Motion::kArcCcw;
       else if (eff.motion == Motion::kArcCcw)
@@ -352,7 +355,6 @@ void ProgramReader::resolve(Block& b) {
   effective_ = eff;
 
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
-  as_written_ = values_as_written();
   b.start = position_;
   Point3 end = position_;
   bool frame_values = w.frame.has_value() || w.cw().pole.has_value();  // the frame's or pole's values

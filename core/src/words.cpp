@@ -528,9 +528,13 @@ void reset_fields(BlockWordFields& fields) {
   std::memcpy(to + kFirst, from + kFirst, sizeof kEmpty - kFirst);
 }
 
-void parse_block_words(std::string_view text, int line, BlockWords& out,
-                       const std::vector<std::string>& machine_cycles) {
-  lexer::WordLexer(text, line, out, machine_cycles).run();
+void parse_block_words(std::string_view text, int line, BlockWords& out, const std::vector<std::string>& machine_cycles,
+                       bool plain_refused) {
+  lexer::WordLexer lexer(text, line, out, machine_cycles);
+  if (plain_refused)
+    lexer.general();  // not read plain a second time
+  else
+    lexer.run();
 }
 
 }  // namespace cutcom

@@ -100,6 +100,9 @@ class Interpreter {
   // line holds no name, '=' or ':', so it has nothing for the interpreter to do and is not
   // scanned for it, nor copied (issue "Performance": one pass over the line).
   bool next(std::string& text, int& line, BlockWords* plain = nullptr);
+  // After next() gave `text`: read_plain_block has refused that very text (a line of other
+  // words, returned as it stands), so the word lexer need not try it again.
+  bool plain_refused() const { return plain_refused_; }
 
   void set_limits(InterpreterLimits limits) { limits_ = limits; }
   // NC-WORD-2: the skip levels the operator has switched on, bit n for `/n` (`/` is `/0`).
@@ -182,6 +185,7 @@ class Interpreter {
   };
   CachedLine* last_cached_ = nullptr;     // the cached line getline() returned last (or null)
   bool line_padded_ = false;              // getline()'s last line lies in a LineBuffer (its padding)
+  bool plain_refused_ = false;            // plain_refused()
   CachedLine* current_cached_ = nullptr;  // the line next() runs, if it is cached
   LineRecord& record_of(CachedLine& line);
   // An expression of the line being run, from `from`: evaluated from its record when the line
@@ -303,7 +307,13 @@ class Interpreter {
   // NC-PARAM-SUB-8: the units after the first in the main program's text, by name; read once, when
   // a subprogram is first looked for.
   void scan_units() const;
-  bool unit_ends(Context& c, std::string_view text) const;
+  bool unit_ends(Context& c, std::string_view text) const {
+    // A line of the unit's text that begins with neither '%' nor a blank is no header: most lines
+    // are answered here, without a call (issue "Performance": every line of a program asks).
+    if (c.begun && !text.empty() && text[0] != '%' && text[0] != ' ' && text[0] != '\t') return false;
+    return header_ends_unit(c, text);
+  }
+  bool header_ends_unit(Context& c, std::string_view text) const;
   mutable std::map<std::string, SubprogramText> units_;
   mutable std::map<std::string, int> duplicate_units_;  // a name's second header: its line
   mutable bool units_scanned_ = false;

@@ -24,8 +24,9 @@ namespace cutcom {
 
 // Parses the words of one line (NC-LEX-*). Throws InputError. `machine_cycles`: names the
 // machine runs as its own cycles or subprograms (NC-CYCLE-3), not simulated as the standard ones.
+// `plain_refused`: read_plain_block has already refused this text (Interpreter::plain_refused).
 void parse_block_words(std::string_view text, int line, BlockWords& out,
-                       const std::vector<std::string>& machine_cycles = {});
+                       const std::vector<std::string>& machine_cycles = {}, bool plain_refused = false);
 
 // Tool data set by $TC_DPn (TOOL-DATA-1).
 struct EdgeData {
