@@ -45,12 +45,10 @@ void ProgramReader::set_position(const Point3& p) {
   refresh_programmed();
 }
 
-bool ProgramReader::pop_ready(Block& out) {
-  if (ready_.empty()) return false;
+void ProgramReader::pop_ready(Block& out) {
   out = std::move(ready_.front());
   ready_.pop_front();
   out.index = index_++;
-  return true;
 }
 
 void ProgramReader::contour_stage(Block& b) {

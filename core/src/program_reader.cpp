@@ -40,7 +40,8 @@ void ProgramReader::out_of_range_is_an_error(int line, Stage&& stage) {
 
 bool ProgramReader::next(Block& out) {
   for (;;) {
-    if (!ready_.empty() && pop_ready(out)) {  // asked here first: most blocks come straight from the text
+    if (!ready_.empty()) {  // most blocks come straight from the text, not from here
+      pop_ready(out);
       tool_tip_offset(out);
       return true;
     }

@@ -190,7 +190,7 @@ class ProgramReader final : public BlockSource, private SystemValues {
   template <typename Stage>
   void out_of_range_is_an_error(int line, Stage&& stage);
   void push_ready(Block&& b);
-  bool pop_ready(Block& out);
+  void pop_ready(Block& out);  // the first of ready_, which is not empty
   // TOOL-TURN-1: the compensated contour moved to where a turning tool's tip runs; the cutting
   // edge position of an edge (0 unless a turning tool's 1 … 8).
   void tool_tip_offset(Block& b);
