@@ -13,10 +13,10 @@ SarSequence::Step SarSequence::fail(int number, const Block& at) {
   return Step::kAlarm;
 }
 
-SarSequence::Step SarSequence::take(const Block& b) {
+SarSequence::Step SarSequence::take(const Block& b, bool moves) {
   if (count_ == 0) {
     if (!b.is_sar_block()) {
-      if (b.moves_in_plane()) has_traversing_ = true, traversing_plane_ = b.state.plane;
+      if (moves) has_traversing_ = true, traversing_plane_ = b.state.plane;
       return Step::kPass;
     }
     if (!is_approach(b)) {
@@ -37,10 +37,10 @@ SarSequence::Step SarSequence::take(const Block& b) {
   // An approach is waiting for its direction block.
   if (b.is_sar_block()) return fail(10743, b);  // SAR-AGAIN-1
   if (b.words.stopre) return fail(10746, b);    // SAR-STOP-1
-  if (p4_index_ < 0 && !b.moves_in_plane() && b.words.programs_any_axis())
+  if (p4_index_ < 0 && !moves && b.words.programs_any_axis())
     throw UnsupportedError(b.words.line, "axis motion between a SAR block and the block that gives P4");
   held_[static_cast<std::size_t>(count_++)] = b;
-  if (!b.moves_in_plane()) {
+  if (!moves) {
     if (++dummies_ > md_.wab_maxnum_dummy_blocks) return fail(10740, b);  // SAR-P4-1
     return Step::kHold;
   }

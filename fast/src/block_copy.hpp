@@ -89,12 +89,13 @@ struct BlockCopy : BlockFacts {
 
   static BlockCopy of(const Block& b) {
     BlockCopy c;
-    c.assign(b);
+    c.assign(b, b.moves_in_plane());
     return c;
   }
   // The same in place: a slot kept from block to block reuses its actions' text (no allocation
   // and no string destruction per block); actions past aux_count are stale and never read.
-  void assign(const Block& b) {
+  // `in_plane` is b.moves_in_plane(), which the caller has asked already.
+  void assign(const Block& b, bool in_plane) {
     BlockCopy& c = *this;
     c.line = b.words.line;
     c.source = b.words.source;
@@ -130,7 +131,7 @@ struct BlockCopy : BlockFacts {
     c.feed_type = b.state.feed_type;
     c.sar = b.sar.move;
     c.insert = b.insert;
-    c.moves = b.moves_in_plane();
+    c.moves = in_plane;
     c.exact = b.sar.move == SarMove::kNone;
     c.seq = 0, c.actions_done = false, c.tangent_after = c.tangent_before = false;
     c.scale_over_size = -1;

@@ -53,9 +53,9 @@ class CollisionWindow {
   }
 
   // A block enters the compensation: it counts if it moves in the plane (TRC-CD-1 counts
-  // traversing blocks); under CDON its output waits.
-  void begin_block(const Block& b) {
-    if (b.moves_in_plane()) ++traversing_;
+  // traversing blocks); under CDON its output waits. `moves`: b.moves_in_plane().
+  void begin_block(const Block& b, bool moves) {
+    if (moves) ++traversing_;
     holding_ = b.state.collision == CollisionMode::kCdon;
   }
   // The ordinal of the last traversing block so far: the seq of what the block puts out.

@@ -327,7 +327,7 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
 void Compensation::compensation_active(const Block& b) {
   bool radius_changes = false;
   if (!still_compensable(b, &radius_changes)) return;
-  bool traversing = b.state.side == side && !anew(b) && b.moves_in_plane();
+  bool traversing = b.state.side == side && !anew(b) && moves_in_plane(b);
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
   bool blend = traversing && radius_changes;
   if (blend) reject_blend_here(b, looking || approach_until >= 0);
@@ -348,7 +348,7 @@ void Compensation::compensation_active(const Block& b) {
     if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
   }
-  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3
+  if (!moves_in_plane(b)) return hold_back(b);  // TRC-DUMMY-3
   corner(b, *current);
   if (blend && !trace.stopped()) blend_radius(b, *current);
 }
@@ -616,7 +616,7 @@ void Compensation::release_window(const Block& b) {
   held.end_block(phase == Phase::kActive && b.state.collision == CollisionMode::kCdon);
 }
 
-void Compensation::step(const Block& b, const PlaneOverride* o) {
+void Compensation::step(const Block& b, const PlaneOverride* o, bool moves) {
   if (trace.stopped()) return;
   if (b.words.disc && b.words.disc->sign() > 0)  // TRC-DISC-1
     throw UnsupportedError(b.words.line, "DISC greater than 0 (a distorted transition circle)");
@@ -624,7 +624,8 @@ void Compensation::step(const Block& b, const PlaneOverride* o) {
   // Off, the compensation has no plane of its own yet: that of the block's overridden points.
   if (o && phase == Phase::kOff) axes = o->axes;
   over_block = o ? &b : nullptr;
-  held.begin_block(b);
+  stepped = &b, stepped_moves = moves;
+  held.begin_block(b, moves);
   if (!(b.is_arc() && b.sar.move == SarMove::kNone && !arc_is_consistent(b, md, trace))) {
     switch (phase) {
       case Phase::kOff:
@@ -642,7 +643,7 @@ void Compensation::step(const Block& b, const PlaneOverride* o) {
     }
     release_window(b);
   }
-  over_block = nullptr;
+  over_block = nullptr, stepped = nullptr;
 }
 
 }  // namespace cutcom::fast

@@ -50,8 +50,9 @@ class Compensation {
         corner_limit_cosine(limit_cosine(m.cutcom_corner_limit)),
         insert_limit_cosine(limit_cosine(m.cutcom_curve_insert_limit)) {}
 
-  // A block from the SAR expansion; `o` gives its in-plane points where they are not its decimals.
-  void step(const Block& b, const PlaneOverride* o = nullptr);
+  // A block from the SAR expansion; `o` gives its in-plane points where they are not its decimals;
+  // `moves` is b.moves_in_plane(), asked once for all stages (it was asked five times a block).
+  void step(const Block& b, const PlaneOverride* o, bool moves);
   // TRC-END-1 at the program's end.
   void end_of_program();
   // ALARM-1: the approach line decided before an alarm is output.
@@ -150,7 +151,7 @@ class Compensation {
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
     for (std::size_t k = 0; k < 2; ++k)
       if (&c == &prev_blocks[k]) slot_elements[k].valid = false;
-    c.assign(b);
+    c.assign(b, moves_in_plane(b));
     c.seq = held.seq();
     if (&b == over_block) over.apply(c);
   }
@@ -158,6 +159,10 @@ class Compensation {
   // The block being stepped and its override (SAR-SUB-1, SAR-END-3), as the SAR expansion gave it.
   PlaneOverride over;
   const Block* over_block = nullptr;
+  // The block being stepped and whether it moves in the plane, as step was told.
+  const Block* stepped = nullptr;
+  bool stepped_moves = false;
+  bool moves_in_plane(const Block& b) const { return &b == stepped ? stepped_moves : b.moves_in_plane(); }
   // The element handed to the sink directly: each one writes every field (fill), so that it is
   // not cleared first (a local one was 240 bytes of `rep stos` before each line and arc).
   PathElement outgoing;

@@ -26,7 +26,7 @@ void Compensation::approach(const Block& b) {
     phase = Phase::kOff;
     return compensation_off(b);
   }
-  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
+  if (!moves_in_plane(b)) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
   if (!(ActiveEdge::of(b.state) == edge))        // TRC-RADIUS-3: the approach has one radius
     throw UnsupportedError(b.words.line, "a D, DL or OFFN change in the first contour block");
   prev_slot ^= 1;

@@ -22,13 +22,13 @@ void SarExpansion::keep_last_contour(const Block& b) {
   // Its SarTag stays the default: forward keeps programmed blocks only.
 }
 
-void SarExpansion::forward(const Block& b, const PlaneOverride* o) {
+void SarExpansion::forward(const Block& b, const PlaneOverride* o, bool moves) {
   if (trace_.stopped()) return;
-  if (b.sar.move == SarMove::kNone && b.moves_in_plane()) {
+  if (b.sar.move == SarMove::kNone && moves) {
     keep_last_contour(b), has_last_contour_ = true, last_contour_overridden_ = o != nullptr;
     if (o) last_contour_over_ = *o;
   }
-  next_.step(b, o);
+  next_.step(b, o, moves);
 }
 
 void SarExpansion::finish() {
@@ -49,9 +49,10 @@ void SarExpansion::take(const Block& b) {
       at_sar_end_ = false;
     end_over = &end_over_;
   }
-  switch (sequence_.take(b)) {
+  bool moves = b.moves_in_plane();  // asked once for every stage
+  switch (sequence_.take(b, moves)) {
     case SarSequence::Step::kPass:
-      return forward(b, end_over);
+      return forward(b, end_over, moves);
     case SarSequence::Step::kHold:
       return;
     case SarSequence::Step::kApproach:

@@ -33,7 +33,8 @@ class SarExpansion {
 
  private:
   // Hands a block on; keeps the last programmed block moving in the plane (SAR-TANGENT-1).
-  void forward(const Block& b, const PlaneOverride* o = nullptr);
+  void forward(const Block& b, const PlaneOverride* o = nullptr) { forward(b, o, b.moves_in_plane()); }
+  void forward(const Block& b, const PlaneOverride* o, bool moves);  // moves: b.moves_in_plane()
   void approach(std::span<const Block> gathered, int p4_index);
   void retraction(const Block& block);
   // The compensation in force at a SAR block, side and radius as decided in core (empty: none).

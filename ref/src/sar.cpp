@@ -8,7 +8,7 @@ namespace cutcom::ref::detail {
 
 void SarExpansion::take(const Block& b) {
   std::optional<PlaneOverride> over = after_sar_end(b);
-  switch (sequence_.take(b)) {
+  switch (sequence_.take(b, b.moves_in_plane())) {
     case SarSequence::Step::kPass:
       return forward(b, over);
     case SarSequence::Step::kHold:

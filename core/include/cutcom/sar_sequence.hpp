@@ -25,7 +25,8 @@ class SarSequence {
     kAlarm,       // alarm() at alarm_block()
   };
 
-  Step take(const Block& b);
+  // `moves` is b.moves_in_plane(), which the engines ask once a block for all their stages.
+  Step take(const Block& b, bool moves);
   // The program ends (M30 or end of text): kAlarm 10744 if an approach still waits.
   Step finish();
 
