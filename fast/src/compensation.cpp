@@ -327,7 +327,8 @@ void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start
 void Compensation::compensation_active(const Block& b) {
   bool radius_changes = false;
   if (!still_compensable(b, &radius_changes)) return;
-  bool traversing = b.state.side == side && !anew(b) && moves_in_plane(b);
+  bool again = anew(b);  // TRC-SIDE-1/2
+  bool traversing = b.state.side == side && !again && moves_in_plane(b);
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
   bool blend = traversing && radius_changes;
   if (blend) reject_blend_here(b, looking || approach_until >= 0);
@@ -343,7 +344,7 @@ void Compensation::compensation_active(const Block& b) {
     if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(*current, before)) return;
   }
   if (looking) return look_ahead(b, current);
-  if (anew(b)) return change_side(b);
+  if (again) return change_side(b);
   if (b.state.side == Side::kOff) {
     if (!b.programs_plane_axis()) return deselect_in_place(b);  // TRC-DESEL-3
     return deselect(b);
