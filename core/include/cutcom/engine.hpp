@@ -24,6 +24,11 @@ struct ActiveEdge {
     return {s.tool, s.edge, s.sum_offset, s.edge_radius, s.edge_wear, s.offn, s.edge_position};
   }
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
+  // *this == of(s), without building it: asked for every block while compensation is active.
+  bool in_force(const ModalState& s) const {
+    return tool == s.tool && edge == s.edge && sum_offset == s.sum_offset && radius == s.edge_radius &&
+           wear == s.edge_wear && offn == s.offn && position == s.edge_position;
+  }
 };
 
 // TRC-UNSUP-1: KONTC/KONTT need polynomial output; the block is rejected, naming it.
@@ -39,13 +44,8 @@ inline bool selects_anew(const ModalState& s, Side side, std::uint32_t selection
   return s.side != Side::kOff && (s.side != side || s.selection != selection);
 }
 
-// TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
-// (decision 30): change the tool edge, or ask for KONTC/KONTT.
-// TRC-RADIUS-3: the edge data in force changed while compensation is active, without a new
-// selection: a T, D, DL or OFFN change (or the edge's data), to an edge that is
-// defined, on the same side with a radius above 0, is blended over the next block that moves in
-// the plane (each engine, at that block); anything else is not supported (TRC-UNSUP-1).
-inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_side) {
+// radius_changes' checks of a change, out of line (the rare case).
+[[gnu::noinline]] inline bool edge_data_change(const Block& b, const ActiveEdge& active, int active_side) {
   const ModalState& s = b.state;
   ActiveEdge now = ActiveEdge::of(s);
   if (now == active) return false;
@@ -69,6 +69,16 @@ inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_
                            "a D, DL or OFFN change that swaps the side or makes the radius 0 while compensation is "
                            "active (select anew with G41/G42)");
   return true;
+}
+
+// TRC-UNSUP-1: what a block on the active side may not do while compensation is selected
+// (decision 30): change the tool edge, or ask for KONTC/KONTT.
+// TRC-RADIUS-3: the edge data in force changed while compensation is active, without a new
+// selection: a T, D, DL or OFFN change (or the edge's data), to an edge that is
+// defined, on the same side with a radius above 0, is blended over the next block that moves in
+// the plane (each engine, at that block); anything else is not supported (TRC-UNSUP-1).
+inline bool radius_changes(const Block& b, const ActiveEdge& active, int active_side) {
+  return !active.in_force(b.state) && edge_data_change(b, active, active_side);
 }
 
 // True when the block changes the radius (a blend follows, TRC-RADIUS-3).
