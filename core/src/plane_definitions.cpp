@@ -78,12 +78,8 @@ void ProgramReader::set_pole(const BlockWords& w, Plane plane) {
   }
 }
 
-bool ProgramReader::plane_definition(Block& b, ModalState& eff) {
+bool ProgramReader::define_in_plane(Block& b, ModalState& eff) {
   BlockWords& w = b.words;
-  ang_open_ = false;
-  // Without contour words, CIP/CT or a rotation there is nothing to define (the test below, taken
-  // first: every block passes here).
-  if (!w.contour && !circle_definition_ && !frame_.rotated()) return false;
   auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
   const ModalState& s = state_;
   PlaneAxes pa = plane_axes(s.plane);

@@ -357,7 +357,8 @@ void ProgramReader::resolve(Block& b) {
 
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
   b.start = position_;
-  Point3 end = position_;
+  b.end = position_;
+  Point3& end = b.end;  // written in place
   bool frame_values = w.frame.has_value() || w.cw().pole.has_value();  // the frame's or pole's values
   std::string unknown_used;
   for (int a = 0; a < 3; ++a) {
@@ -402,7 +403,6 @@ void ProgramReader::resolve(Block& b) {
       unknown_line_ = 0;  // said once per unknown stretch
     }
   }
-  b.end = end;
   if (transmit_switched) {  // NC-WORD-13: the rotary axis' angle turns X into X and Y
     unknown_[0] = unknown_[1] = true;
     unknown_after_ = transformation_name(*w.transformation);

@@ -180,7 +180,14 @@ class ProgramReader final : public BlockSource, private SystemValues {
   void refresh_programmed();              // programmed_ from position_ after a frame or offset change
   void update_programmed(const BlockWords& w, bool absolute_mode);
   void set_pole(const BlockWords& w, Plane plane);
-  bool plane_definition(Block& b, ModalState& eff);  // NC-POLAR-*, NC-CONTOUR-3..5, NC-FRAME-4
+  // NC-POLAR-*, NC-CONTOUR-3..5, NC-FRAME-4: without contour words, CIP/CT or a rotation (every
+  // other block) there is nothing to define: that test inline, the definition out of line.
+  bool plane_definition(Block& b, ModalState& eff) {
+    ang_open_ = false;
+    if (!b.words.contour && !circle_definition_ && !frame_.rotated()) return false;
+    return define_in_plane(b, eff);
+  }
+  bool define_in_plane(Block& b, ModalState& eff);
   static void note(Block& b, std::string_view clause, std::string text);
 
   // NC-CONTOUR-1/2/3/6: the stage that holds a block until the element after it is known.
