@@ -357,8 +357,8 @@ void ProgramReader::resolve(Block& b) {
 
   // NC-POS-1/2: G90/G91 modal, AC()/IC() per word; unprogrammed axes keep their position.
   b.start = position_;
-  b.end = position_;
-  Point3& end = b.end;  // written in place
+  b.end = position_;  // then written in place
+  Point3& end = b.end;
   bool frame_values = w.frame.has_value() || w.cw().pole.has_value();  // the frame's or pole's values
   std::string unknown_used;
   for (int a = 0; a < 3; ++a) {

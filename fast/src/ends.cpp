@@ -27,7 +27,7 @@ void Compensation::approach(const Block& b) {
     return compensation_off(b);
   }
   if (!moves_in_plane(b)) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
-  if (!(ActiveEdge::of(b.state) == edge))        // TRC-RADIUS-3: the approach has one radius
+  if (!edge.in_force(b.state))                  // TRC-RADIUS-3: the approach has one radius
     throw UnsupportedError(b.words.line, "a D, DL or OFFN change in the first contour block");
   prev_slot ^= 1;
   copy_into(prev_blocks[static_cast<std::size_t>(prev_slot)], b);
