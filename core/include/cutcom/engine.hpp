@@ -44,11 +44,10 @@ inline bool selects_anew(const ModalState& s, Side side, std::uint32_t selection
   return s.side != Side::kOff && (s.side != side || s.selection != selection);
 }
 
-// radius_changes' checks of a change, out of line (the rare case).
+// radius_changes' checks of a change (the edge data differ from `active`), out of line: the rare case.
 [[gnu::noinline]] inline bool edge_data_change(const Block& b, const ActiveEdge& active, int active_side) {
   const ModalState& s = b.state;
   ActiveEdge now = ActiveEdge::of(s);
-  if (now == active) return false;
   if (s.edge == 0 || !s.edge_defined)
     throw UnsupportedError(b.words.line, "a change to D0 or to an undefined edge while compensation is active");
   // NC-WORD-13: under a transformation the control changes tools only with G40 (JOB06 §7.10).
