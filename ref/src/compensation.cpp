@@ -178,8 +178,8 @@ void Compensation::waiting_for_contour(const Block& b) {
     comp_.reset();
     return compensation_off(b);
   }
-  if (!b.moves_in_plane()) return hold_back(b);   // TRC-DUMMY-3: no in-plane displacement
-  if (!(ActiveEdge::of(b.state) == comp_->edge))  // TRC-RADIUS-3: the approach has one radius
+  if (!b.moves_in_plane()) return hold_back(b);  // TRC-DUMMY-3: no in-plane displacement
+  if (!comp_->edge.in_force(b.state))            // TRC-RADIUS-3: the approach has one radius
     throw UnsupportedError(b.words.line, "a D, DL or OFFN change in the first contour block");
   approach(b);
 }
@@ -188,7 +188,7 @@ void Compensation::compensation_active(const Block& b) {
   if (!still_compensable(b)) return;
   bool traversing = b.state.side == comp_->side && !anew(b) && b.moves_in_plane();
   // TRC-RADIUS-3: a new radius (D, DL, OFFN) is blended over the block that moves in the plane.
-  bool blend = traversing && !(ActiveEdge::of(b.state) == comp_->edge);
+  bool blend = traversing && !comp_->edge.in_force(b.state);
   if (blend) reject_blend_here(b, looking_ || approach_search_.has_value());
   if (traversing) {
     const Block* before = prev_block_;
