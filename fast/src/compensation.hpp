@@ -51,7 +51,7 @@ class Compensation {
         insert_limit_cosine(limit_cosine(m.cutcom_curve_insert_limit)) {}
 
   // A block from the SAR expansion; `o` gives its in-plane points where they are not its decimals;
-  // `moves` is b.moves_in_plane(), asked once for all stages (it was asked five times a block).
+  // `moves` is b.moves_in_plane(), asked once by the SAR expansion for all the stages.
   void step(const Block& b, const PlaneOverride* o, bool moves);
   // TRC-END-1 at the program's end.
   void end_of_program();
