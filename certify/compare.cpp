@@ -269,8 +269,8 @@ std::optional<std::string> untraced_difference(const RunResult& traced, const Ru
     const PathElement &a = traced.path[i], &b = untraced.path[i];
     bool arc = a.type == ElementType::kArc;
     if (a.type != b.type || a.rapid != b.rapid || !same(a.start, b.start) || !same(a.end, b.end) ||
-        (arc && (!same(a.center, b.center) || a.ccw != b.ccw)) || a.origin.kind != b.origin.kind ||
-        a.origin.line != b.origin.line)
+        (arc && (!same(a.center, b.center) || a.ccw != b.ccw)) || a.origin != b.origin || a.feed != b.feed ||
+        a.feed_type != b.feed_type)
       return fmt::format("{} without its trace: element {} ({}) differs", engine, i, describe(a.origin));
   }
   if (traced.actions.size() != untraced.actions.size())
@@ -527,8 +527,9 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
     };
     if (r.feed != f.feed || r.feed_type != f.feed_type)
       return diverge(fmt::format("element {} ({}): feed {} vs {}", i, describe(r.origin), feed(r), feed(f)));
-    if (r.origin.sar != f.origin.sar || r.origin.insert.kind != f.origin.insert.kind ||
-        r.origin.block != f.origin.block || r.origin.next_line != f.origin.next_line)
+    // The whole origin, as the output names it: the block's number and place, the inserted element
+    // it is, a transition circle's second corner block (its line, number and insert), the SAR move.
+    if (r.origin != f.origin)
       return diverge(
           fmt::format("element {}: {} vs {} (what it belongs to)", i, describe(r.origin), describe(f.origin)));
     double e = std::max(distance(r.start, f.start), distance(r.end, f.end));

@@ -50,6 +50,13 @@ TEST(Comparison, FastWithoutItsTraceMustTakeTheSamePathBitForBit) {
   untraced = traced;
   untraced.path.pop_back();
   EXPECT_TRUE(untraced_difference(traced, untraced));
+  // The same geometry named after another block, or at another feed, is another path too.
+  untraced = traced;
+  untraced.path[1].origin.next_block = 50;
+  EXPECT_TRUE(untraced_difference(traced, untraced));
+  untraced = traced;
+  untraced.path[0].feed = Decimal::from_int(300);
+  EXPECT_TRUE(untraced_difference(traced, untraced));
   untraced = traced;
   untraced.alarms.push_back(Alarm{});
   EXPECT_TRUE(untraced_difference(traced, untraced));
@@ -395,6 +402,24 @@ TEST(Comparison, FeedsActionsSarVariablesAndNoticesAreCompared) {
   expect_diverges(fast, "line offset of line 6 vs line rapid offset of line 6");
   fast = ref;
   fast.path[0].origin.sar = SarMove::kElement;
+  expect_diverges(fast, "what it belongs to");
+  // A transition circle's second corner named without its insert (mutant 92: "N30/N30" for
+  // "N30/(chamfer of N30/N40)"), or with another number: the same lines, another name.
+  RunResult circle = ref;
+  circle.path[0].type = ElementType::kArc, circle.path[0].center = {5, 0, 0}, circle.path[0].ccw = true;
+  circle.path[0].origin.kind = OriginKind::kTransitionCircle, circle.path[0].origin.next_line = 7;
+  circle.path[0].origin.next_insert.kind = InsertKind::kChamfer, circle.path[0].origin.next_insert.next_line = 8;
+  EXPECT_EQ(compare(circle, circle, tolerance()).kind, Verdict::Kind::kAgree);
+  fast = circle;
+  fast.path[0].origin.next_insert = ContourInsert{};
+  Verdict v = compare(circle, fast, tolerance());
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge);
+  EXPECT_NE(v.explanation.find("what it belongs to"), std::string::npos) << v.explanation;
+  fast = circle;
+  fast.path[0].origin.next_block = 70;
+  EXPECT_EQ(compare(circle, fast, tolerance()).kind, Verdict::Kind::kDiverge);
+  fast = ref;
+  fast.path[0].origin.source = 3;  // another subprogram's line of the same number
   expect_diverges(fast, "what it belongs to");
   fast = ref;
   fast.actions[0].at = {10, 1e-3, 0};  // M8 one micrometre off where the tool is

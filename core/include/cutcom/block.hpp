@@ -60,6 +60,7 @@ struct ContourInsert {
   int next_line = 0;  // rounding / chamfer: the second block of the corner
   std::optional<std::int64_t> next_block;
   int turn = 0;  // kTurn: 1 … TURN
+  friend bool operator==(const ContourInsert&, const ContourInsert&) = default;
 };
 
 // How an axis value is to be read: modal G90/G91, or forced by AC()/IC().

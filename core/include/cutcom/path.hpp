@@ -37,6 +37,7 @@ struct Origin {
   ContourInsert next_insert;     // transition circle: the second corner block is an inserted one
   SarMove sar = SarMove::kNone;  // the element belongs to this movement of a SAR block
   ContourInsert insert;          // the block is a rounding, chamfer or turn the reader inserted
+  friend bool operator==(const Origin&, const Origin&) = default;
 };
 
 struct PathElement {
