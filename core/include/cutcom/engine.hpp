@@ -24,11 +24,9 @@ struct ActiveEdge {
     return {s.tool, s.edge, s.sum_offset, s.edge_radius, s.edge_wear, s.offn, s.edge_position};
   }
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
-  // *this == of(s), without building it: asked for every block while compensation is active.
-  bool in_force(const ModalState& s) const {
-    return tool == s.tool && edge == s.edge && sum_offset == s.sum_offset && radius == s.edge_radius &&
-           wear == s.edge_wear && offn == s.offn && position == s.edge_position;
-  }
+  // Whether these are the edge data in force in `s` (asked for every block while compensation is
+  // active; inline, the compiler compares the fields without building the copy).
+  bool in_force(const ModalState& s) const { return *this == of(s); }
 };
 
 // TRC-UNSUP-1: KONTC/KONTT need polynomial output; the block is rejected, naming it.
