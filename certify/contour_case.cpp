@@ -281,12 +281,17 @@ std::string to_program(const ContourCase& c) {
   } else {
     // SAR-END-1: the three ways the retraction block gives (or does not give) its end point.
     std::string axes = sar.end_case == 3   ? end + " " + h + fixed(sar.end_h, c.decimals)
+                       : sar.end_case == 4 ? end
                        : sar.end_case == 2 ? h + fixed(sar.end_h, c.decimals)
                                            : "";
     p += fmt::format("N{} G1 {} G{} {} {} {}\n", n, sar.deselect ? "G40" : "", sar.contour_out,
                      sar_words(sar.side_out, sar.seg_out, sar.disr_out, sar.discl_out, sar.discl_out_ac,
                                sar.discl_out_v, false, c.decimals),
                      modes_out, axes);
+    if (sar.follow) {  // SAR-END-1/3: the next block starts where the retraction ended (P2's level, P3 or P0)
+      n += 10;
+      p += fmt::format("N{} G0 {}{}\n", n, h, fixed(40000, c.decimals));
+    }
   }
   p += fmt::format("N{} M30\n", n + 10);
   return p;
@@ -315,7 +320,8 @@ ContourCase reversed_contour(const ContourCase& c) {
 }
 
 void showValue(const ContourCase& c, std::ostream& os) {
-  os << "style " << c.style << ", MD20210=" << c.md20210 << " MD20230=" << c.md20230 << " MD20240=" << c.md20240 << "\n"
+  os << "style " << c.style << ", MD20210=" << c.md20210 << " MD20230=" << c.md20230 << " MD20240=" << c.md20240
+     << (c.md20250 == 5 ? "" : " MD20250=" + std::to_string(c.md20250)) << "\n"
      << to_program(c);
 }
 

@@ -40,8 +40,9 @@ struct SarEnds {
   std::int64_t start_h = 0;  // applicate of the start position (P0 of the approach)
   std::int64_t end_h = 0;    // applicate programmed in the retraction block (case 3)
   int p4_mode = 0;           // approach: 0 P4 in the SAR block; 1 its Z there, X Y next block; 2 all next block
-  int end_case = 3;          // retraction: 1 no axis, 2 applicate only, 3 plane axes and applicate
+  int end_case = 3;          // retraction: 1 no axis, 2 applicate only, 3 plane axes and applicate, 4 plane axes only
   bool deselect = true;      // G40 in the retraction block
+  bool follow = false;       // a rapid move of the applicate after the retraction (SAR-END-1/3: where it starts)
 };
 
 struct ContourCase {
@@ -59,6 +60,7 @@ struct ContourCase {
   int edge_select = 462, edge_deselect = 462;       // G460 / G461 / G462 in those blocks
   bool cdon = false;                                // CDON instead of CDOF in the G41/G42 block
   int md20240 = 3;                                  // blocks in the look-ahead / collision window
+  int md20250 = 5;                                  // blocks without plane motion in a row (TRC-DUMMY-2)
   std::string style;                                // which generator made it (for RC_TAG)
   SarEnds sar;                                      // smooth approach / retraction (SAR-*)
   // A variant of the program for the rules of selection, deselection and the blocks between

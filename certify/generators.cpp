@@ -329,13 +329,14 @@ rc::Gen<ContourCase> around_ends() {
   });
 }
 
-// TRC-CD-*: a straight wall with one or two recesses (U: down, across, up; V: down, up; leaning
-// walls) whose width is narrower than, exactly, about or wider than 2r, in any direction; CDON
-// with a window that reaches across each recess.
-rc::Gen<ContourCase> bottleneck() {
-  return rc::gen::exec([] {
+namespace {
+// TRC-CD-*: a straight wall with recesses (U: down, across, up; V: down, up; leaning walls) whose
+// width is narrower than, exactly, about or wider than 2r, in any direction; CDON with a window
+// that reaches across each recess. `fewest` to `most_recesses` recesses.
+rc::Gen<ContourCase> wall_with_recesses(const char* style, int fewest, int most_recesses) {
+  return rc::gen::exec([=] {
     ContourCase c;
-    c.style = "bottleneck";
+    c.style = style;
     std::int64_t r = *inRange<std::int64_t>(300, 5001);
     c.radius_um = r;
     // Wall direction u (integer, length l) and the tool side n = left normal of u (G41).
@@ -348,7 +349,8 @@ rc::Gen<ContourCase> bottleneck() {
       nonzero(s);
       return s;
     };
-    int recesses = *inRange(1, 3), most = 2;
+    int recesses = *inRange(fewest, most_recesses + 1), most = 2;
+    const bool long_wall = fewest > 2;
     c.steps.push_back(step(*inRange<std::int64_t>(3, 9) * r, 0));
     for (int k = 0; k < recesses; ++k) {
       std::int64_t w;
@@ -367,7 +369,10 @@ rc::Gen<ContourCase> bottleneck() {
           break;  // narrower: a bottleneck
       }
       std::int64_t depth = *inRange<std::int64_t>(r / 3, 4 * r), lean = *element<std::int64_t>(0, 0, r / 4, -r / 4);
-      if (*inRange(0, 3) == 0) {  // V
+      if (long_wall)  // U recesses deep enough, and narrower than r (cut, TRC-CD-4) or at least 2r wide
+        depth = std::max(depth, 2 * r), lean = 0, w = w < 2 * r ? std::min(w, r * 9 / 10) : w;
+      bool v_shape = *inRange(0, 3) == 0;
+      if (v_shape && !long_wall) {  // V
         c.steps.push_back(step(w / 2, -depth));
         c.steps.push_back(step(w - w / 2, depth));
       } else {
@@ -380,6 +385,14 @@ rc::Gen<ContourCase> bottleneck() {
     }
     common(c);
     for (Step& s : c.steps) s.flip = s.again = false;
+    if (long_wall) {  // the window's reserve (MD20250 + 1 blocks per traversing one) fills
+      c.md20250 = 0;
+      // No alarm on the way: at most MD20250 blocks without plane motion (10762), and G450 circles
+      // at every corner, so that a recess narrower than 2r is cut by CDON (TRC-CD-4) rather than
+      // stopped by its bottom's equidistant running backwards at a G451 corner (TRC-ELEMENT-1).
+      for (Step& s : c.steps) s.dummies = 0, s.g451 = false;
+      c.g451_select = false;
+    }
     c.right = *inRange(0, 4) == 0;  // G42: the recesses are bumps for the tool
     c.cdon = true;
     c.md20240 = most + *inRange(2, 4);
@@ -394,6 +407,11 @@ rc::Gen<ContourCase> bottleneck() {
     return c;
   });
 }
+}  // namespace
+
+rc::Gen<ContourCase> bottleneck() { return wall_with_recesses("bottleneck", 1, 2); }
+
+rc::Gen<ContourCase> long_bottleneck() { return wall_with_recesses("long-bottleneck", 60, 90); }
 
 namespace {
 // SAR-DISCL-3: a level for P2 inside, exactly on, or just outside MD20204 (0.01 mm) beyond P1
@@ -437,11 +455,12 @@ void add_sar(ContourCase& c, bool approach, bool retraction) {
   s.discl_in_v = p2_level(s.start_h, c.decimals);
   s.fad_in = *inRange(0, 3) == 0;
   s.p4_mode = *inRange(0, 3);
-  s.end_case = *element(1, 2, 3, 3);
+  s.end_case = *element(1, 2, 3, 3, 4);
   s.end_h = *inRange<std::int64_t>(0, 30001);
   s.discl_out = *inRange(0, 4) != 0, s.discl_out_ac = *inRange(0, 4) == 0;
-  s.discl_out_v = p2_level(s.end_case == 1 ? 30000 : s.end_h, c.decimals);
+  s.discl_out_v = p2_level(s.end_case == 1 || s.end_case == 4 ? 30000 : s.end_h, c.decimals);
   s.deselect = *inRange(0, 4) != 0;
+  s.follow = *inRange(0, 2) == 0;
 }
 }  // namespace
 

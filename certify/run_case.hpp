@@ -33,6 +33,7 @@ inline MachineData machine_data_of(const ContourCase& c) {
   md.set("MD20210", std::to_string(c.md20210));
   md.set("MD20230", std::to_string(c.md20230));
   md.set("MD20240", std::to_string(c.md20240));
+  md.set("MD20250", std::to_string(c.md20250));
   return md;
 }
 

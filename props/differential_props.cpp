@@ -98,6 +98,13 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefAtApproachAndRetraction, ()) {
   check_agreement(c);
 }
 
+// covers: PROP-DIFF-1 TRC-CD-1 TRC-CD-3 TRC-CD-4
+RC_GTEST_PROP(Differential, FastAgreesWithRefOnLongCdonWalls, ()) {
+  ContourCase c = *long_bottleneck();
+  RC_TAG(std::to_string(c.steps.size() / 100 * 100) + "+ blocks");
+  check_agreement(c);
+}
+
 // covers: PROP-DIFF-1 PROP-SAR-5 SAR-TANGENT-1 SAR-SIDE-1 SAR-SIDE-2 SAR-SIDE-3 SAR-DISR-1 SAR-DISR-2
 // covers: SAR-DISCL-3 SAR-DISRP-2 SAR-SUB-1 SAR-END-1 SAR-END-2 SAR-END-3 SAR-TRC-1 SAR-FEED-1 SAR-FEED-2
 RC_GTEST_PROP(Differential, FastAgreesWithRefOnSarContours, ()) {
