@@ -279,7 +279,7 @@ std::string to_program(const ContourCase& c) {
   if (!sar.retraction) {
     p += fmt::format("N{} {} G40 {} {}\n", n, rapid_ends ? "G0" : "G1", modes_out, end);
   } else {
-    // SAR-END-1: the three ways the retraction block gives (or does not give) its end point.
+    // SAR-END-1: the ways the retraction block gives (or does not give) its end point.
     std::string axes = sar.end_case == 3   ? end + " " + h + fixed(sar.end_h, c.decimals)
                        : sar.end_case == 4 ? end
                        : sar.end_case == 2 ? h + fixed(sar.end_h, c.decimals)

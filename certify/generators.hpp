@@ -21,9 +21,9 @@ rc::Gen<ContourCase> notch();
 rc::Gen<ContourCase> tiny_blocks();  // many blocks shorter than the radius: look-ahead and its window
 rc::Gen<ContourCase> around_ends();  // start/end in front of, behind, on the tangent line, near the circle r
 rc::Gen<ContourCase> bottleneck();   // walls with recesses narrower/wider than 2r, CDON (TRC-CD-*)
-// The same wall with 60 to 90 recesses, MD20250 = 0 and only cut recesses (G450, narrower than r
-// or wider than 2r): several times more held records than the collision window reserves, so that
-// its records are filled again in place (fast's collision_window.hpp).
+// The same wall with 60 to 90 recesses, MD20250 = 0 and only recesses CDON cuts or passes (G450,
+// narrower than r or at least 2r wide): several times more held records than the collision window
+// reserves, so that its records are filled again in place (fast's collision_window.hpp).
 rc::Gen<ContourCase> long_bottleneck();
 rc::Gen<ContourCase> sar_contour();          // SAR approach/retraction on any contour (SAR-*)
 rc::Gen<ContourCase> sar_approach_only();    // a SAR approach, its DISCL at the MD20204 boundary in half of them

@@ -98,7 +98,7 @@ RC_GTEST_PROP(Differential, FastAgreesWithRefAtApproachAndRetraction, ()) {
   check_agreement(c);
 }
 
-// covers: PROP-DIFF-1 TRC-CD-1 TRC-CD-3 TRC-CD-4
+// covers: PROP-DIFF-1 PROP-TRACE-1 TRC-CD-1 TRC-CD-3 TRC-CD-4
 RC_GTEST_PROP(Differential, FastAgreesWithRefOnLongCdonWalls, ()) {
   ContourCase c = *long_bottleneck();
   RC_TAG(std::to_string(c.steps.size() / 100 * 100) + "+ blocks");
