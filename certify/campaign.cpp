@@ -104,7 +104,7 @@ ContourCase shrink(rc::Shrinkable<ContourCase> s, int budget) {
 
 std::string machine_data_text(const ContourCase& c) {
   return fmt::format("MD20210={}\nMD20230={}\nMD20240={}\n{}", c.md20210, c.md20230, c.md20240,
-                     c.md20250 == 5 ? "" : fmt::format("MD20250={}\n", c.md20250));
+                     c.md20250 == ContourCase::kMd20250 ? "" : fmt::format("MD20250={}\n", c.md20250));
 }
 
 // tests/corpus/<name>.mpf, .md (machine data) and .ref.json (ref's output, the expected result).

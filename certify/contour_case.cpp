@@ -321,7 +321,7 @@ ContourCase reversed_contour(const ContourCase& c) {
 
 void showValue(const ContourCase& c, std::ostream& os) {
   os << "style " << c.style << ", MD20210=" << c.md20210 << " MD20230=" << c.md20230 << " MD20240=" << c.md20240
-     << (c.md20250 == 5 ? "" : " MD20250=" + std::to_string(c.md20250)) << "\n"
+     << (c.md20250 == ContourCase::kMd20250 ? "" : " MD20250=" + std::to_string(c.md20250)) << "\n"
      << to_program(c);
 }
 

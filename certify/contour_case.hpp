@@ -60,7 +60,8 @@ struct ContourCase {
   int edge_select = 462, edge_deselect = 462;       // G460 / G461 / G462 in those blocks
   bool cdon = false;                                // CDON instead of CDOF in the G41/G42 block
   int md20240 = 3;                                  // blocks in the look-ahead / collision window
-  int md20250 = 5;                                  // blocks without plane motion in a row (TRC-DUMMY-2)
+  static constexpr int kMd20250 = 5;                // MD20250's default: written only where a case differs
+  int md20250 = kMd20250;                           // blocks without plane motion in a row (TRC-DUMMY-2)
   std::string style;                                // which generator made it (for RC_TAG)
   SarEnds sar;                                      // smooth approach / retraction (SAR-*)
   // A variant of the program for the rules of selection, deselection and the blocks between
