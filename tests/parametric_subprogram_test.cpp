@@ -79,6 +79,24 @@ TEST(Parametric, SaveRestoresTheCallersModalState) {
   }
 }
 
+// covers: NC-PARAM-SUB-4 NC-FRAME-1
+TEST(Parametric, SaveBringsBackTheCallersFrameForPlainBlocks) {
+  // The caller's TRANS X100 comes back at the return, and the plain blocks after it (X, Y and F
+  // only, which change no frame themselves) are shifted again: the subprogram's own plain blocks
+  // ran without a frame.
+  std::string dir = folder_with("save_frame", {{"BARE.SPF", "PROC BARE SAVE\nN10 TRANS\nN20 G1 X5 Y5\nRET\n"}});
+  const std::string main = "N10 G0 X0 Y0 Z0\nN20 TRANS X100\nN30 G1 X1 F100\nN40 BARE\nN50 X20 Y5\nN60 X30\nM30\n";
+  const std::string plain = "N10 G0 X0 Y0 Z0\nN30 G1 X101 F100\nN20 G1 X5 Y5\nN50 X120 Y5\nN60 X130\nM30\n";
+  for (const char* engine : {"fast", "ref"}) {
+    bool ok_p = false, ok_q = false;
+    RunResult p = run_in(engine, main, dir, &ok_p), q = run_engine(engine, plain, {}, &ok_q);
+    ASSERT_TRUE(ok_p && ok_q) << engine;
+    expect_same_path(p, q);
+    ASSERT_FALSE(p.path.empty()) << engine;
+    EXPECT_EQ(p.path.back().end.x, 130) << engine;
+  }
+}
+
 // covers: NC-PARAM-SUB-6 NC-PARAM-ERR-2
 TEST(Parametric, ModalCallRunsAfterEveryMove) {
   // MCALL HOLE(2) runs HOLE after each block that moves in this level (not after its own moves,

@@ -141,6 +141,7 @@ void ProgramReader::select_offset(int index) {
     d = Point3{d.x - f.x, d.y - f.y, d.z - f.z};
   }
   offset_difference_ = d;
+  as_written_due_ = true;
 }
 
 // NC-FRAME-4: after a frame or offset change the tool stays; its position in the new frame's

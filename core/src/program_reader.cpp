@@ -178,6 +178,7 @@ void ProgramReader::restore_modal_state() {
   bool offset_changed = offset_index_ != s.offset_index;
   if (offset_changed) select_offset(s.offset_index);
   frame_ = s.frame;
+  as_written_due_ = true;
   if (frame_changed || offset_changed) refresh_programmed();
 }
 
@@ -336,7 +337,7 @@ void ProgramReader::resolve(Block& b) {
   eff = s;
   if (tapping_block) eff.motion = Motion::kLinear;  // NC-WORD-12: G63 moves this block in a line
   // NC-POS-1/2: values as written (no frame, offset or unit conversion) also mirror nothing.
-  as_written_ = values_as_written();
+  if (!w.plain || as_written_due_) as_written_ = values_as_written(), as_written_due_ = false;
   {
     if (!as_written_ && mirrors_plane(s.plane)) {
       if (eff.motion == Motion::kArcCw)

@@ -173,6 +173,10 @@ class ProgramReader final : public BlockSource, private SystemValues {
   // without scale or shift (its rotation is plane_definition's); taken once per block in resolve.
   bool values_as_written() const;
   bool as_written_ = false;
+  // The units, diameter mode, frame or offset difference may have changed since as_written_ was
+  // taken (select_offset, restore_modal_state): a plain block's words change none of them, so it
+  // takes as_written_ anew only then (37 instructions of every block otherwise).
+  bool as_written_due_ = true;
   // The translation of the settable offset in force relative to the first one, kept per change.
   const Point3& offset_difference() const { return offset_difference_; }
   void select_offset(int index);
