@@ -183,6 +183,22 @@ TEST(Reader, BlankAndCommentLinesAreNotBlocks) {
   EXPECT_EQ(b[0].words.line, 4);
 }
 
+// reset_fields clears a block's words to zero bytes: every field's empty value must be zero, and
+// a block full of words must come back empty (a default made non-zero fails here).
+TEST(Reader, AResetBlockIsAnEmptyBlock) {
+  static const BlockWordFields kEmpty{};
+  const auto* bytes = reinterpret_cast<const unsigned char*>(&kEmpty);
+  for (std::size_t i = 0; i < sizeof kEmpty; ++i) ASSERT_EQ(bytes[i], 0u) << "byte " << i << " of an empty block";
+  BlockWords w;
+  parse_block_words(
+      "N7 G91 G3 X1 Y=IC(2) Z3 I4 J5 CR=6 F7 G42 G451 CDON KONT G461 G142 G341 G248 DISR=1 DISCL=AC(2) FAD=3 "
+      "OFFN=0.5 DL=2 T2 D3 M6 G95 G54 G18 G700 DIAMON STOPRE",
+      3, w, {}, false);
+  ASSERT_FALSE(static_cast<const BlockWordFields&>(w) == kEmpty);
+  reset_fields(w);
+  EXPECT_TRUE(static_cast<const BlockWordFields&>(w) == kEmpty);
+}
+
 }  // namespace
 }  // namespace cutcom
 
