@@ -154,6 +154,14 @@ TEST(ContourDefinitions, BoundaryRulesAndWhatIsNotInserted) {
   // Tangent corner (line along +X into a cw circle about (0,-10)): nothing inserted.
   auto b = read("G0 X-20 Y0\nG1 X0 RND=2 F100\nG2 X10 Y-10 I0 J-10\n");
   EXPECT_EQ(b.size(), 3u);
+  EXPECT_NE(b[1].notice.find("meet tangentially"), std::string::npos) << b[1].notice;
+  // The same with CHF: said too; with a modal RNDM the tangent corner passes without a word.
+  b = read("G0 X-20 Y0\nG1 X0 CHF=2 F100\nG2 X10 Y-10 I0 J-10\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_NE(b[1].notice.find("chamfer of"), std::string::npos) << b[1].notice;
+  b = read("G0 X-20 Y0\nG1 X0 RNDM=2 F100\nG2 X10 Y-10 I0 J-10\nRNDM=0\n");
+  ASSERT_GE(b.size(), 3u);
+  EXPECT_EQ(b[1].notice.find("meet tangentially"), std::string::npos) << b[1].notice;
   // A reversal: error.
   EXPECT_NE(error_of("G0 X0 Y0\nG1 Y20 RND=1 F100\nY0\n").find("reverses"), std::string::npos);
   // Three blocks without plane motion between the elements: still rounded, they run after it.

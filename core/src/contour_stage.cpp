@@ -170,6 +170,7 @@ void ProgramReader::finish_pending(Block* next) {
            "differently is not simulated");
     value = value.times(fa.sign() < 0 ? -fa : fa);  // a uniform scale scales the rounding too
     std::optional<std::array<Decimal, 13>> cut;
+    bool tangent = false;  // the elements meet tangentially: no corner to cut
     try {
       // [0..1] new end of p, [2..3] new start of next, [4..5] the rounding's centre, [6..9] the
       // circles' centres, [10] 1 if there is a corner to cut (0: tangent), [11] its turn (±1),
@@ -192,7 +193,10 @@ void ProgramReader::finish_pending(Block* next) {
                                         Interval::integer(c->sense),
                                         c->reduced ? c->value : Interval()};
       });
-      if (v[10] == Decimal::from_int(1)) cut = v;
+      if (v[10] == Decimal::from_int(1))
+        cut = v;
+      else
+        tangent = true;
     } catch (const contour::ContourError& err) {
       fail(p.words.line,
            fmt::format("{} of {}/{}: {}", rounding ? "the rounding" : "the chamfer", named(p), named(*next), err.what));
@@ -201,6 +205,12 @@ void ProgramReader::finish_pending(Block* next) {
     } catch (const std::overflow_error&) {
       fail(p.words.line, "the rounding or chamfer lies out of range");
     }
+    // The block's own RND, CHF or CHR at a tangent transition: said, so that the programmer does
+    // not look for it in the path (a modal RNDM passes over such corners silently, as intended).
+    if (tangent && (!rounding || cw.rnd))
+      note(p, "NC-CONTOUR-1",
+           fmt::format("{} of {}/{} not inserted: the elements meet tangentially, there is no corner",
+                       rounding ? "rounding" : "chamfer", named(p), named(*next)));
     // A cut whose two points fall on one grid point is shorter than the grid: inserted, a rounding
     // would read as a full circle (ARC rules: start = end), so nothing is.
     if (cut && (*cut)[0] == (*cut)[2] && (*cut)[1] == (*cut)[3]) {
