@@ -141,5 +141,24 @@ TEST(TurningTool, EdgePositionsThatAreNoneOrWrong) {
   EXPECT_THROW(run_engine("fast", turning_program("3", "500", "-0.8"), {}, &ok), InputError);
 }
 
+// covers: TOOL-TURN-1 TOOL-NAME-1
+TEST(TurningTool, TheNoticeNamesANamedToolByItsName) {
+  // A tool named in the program gets a number of cutcom's own: the notice names it as written.
+  std::string named = "$TC_TP2[7]=\"FINISH 35\"\n" + turning_program("3");
+  for (std::size_t at = named.find("T1"); at != std::string::npos; at = named.find("T1", at + 1))
+    named.replace(at, 2, "T=\"FINISH 35\"");
+  for (std::size_t at = named.find("[1,1]"); at != std::string::npos; at = named.find("[1,1]", at + 1))
+    named.replace(at, 5, "[7,1]");
+  Runs r = run_both(named);
+  ASSERT_TRUE(r.fast_ok && r.ref_ok);
+  ASSERT_EQ(r.fast.notices.size(), 1u);
+  EXPECT_NE(r.fast.notices[0].text.find("T=\"FINISH 35\" D1 is a turning tool"), std::string::npos)
+      << r.fast.notices[0].text;
+  // A numbered tool keeps its number.
+  Runs numbered = run_both(turning_program("3"));
+  ASSERT_EQ(numbered.fast.notices.size(), 1u);
+  EXPECT_NE(numbered.fast.notices[0].text.find("T1 D1 is a turning tool"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace cutcom::test

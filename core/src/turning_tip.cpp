@@ -50,19 +50,24 @@ std::string direction_text(PlaneAxes ax, int position) {
 
 }  // namespace
 
-std::int8_t ProgramReader::edge_position_of(const EdgeData* e, const ModalState& s, int line) {
+std::string ProgramReader::tool_and_edge(const ModalState& s) const {
+  std::optional<std::string> name = tools_.name_of(s.tool);
+  return name ? fmt::format("T=\"{}\" D{}", *name, s.edge) : fmt::format("T{} D{}", s.tool, s.edge);
+}
+
+std::int8_t ProgramReader::edge_position_of(const EdgeData* e, const ModalState& s, int line) const {
   if (!e || e->type < Decimal::from_int(500) || e->type >= Decimal::from_int(600)) return 0;
   std::optional<std::int64_t> p = e->position.to_integer();
   if (!p || *p < 0 || *p > 9)
     throw InputError(line, 1,
-                     fmt::format("T{} D{}: cutting edge position {} ($TC_DP2) is not a whole number 0 … 9", s.tool,
-                                 s.edge, e->position.to_string()));
+                     fmt::format("{}: cutting edge position {} ($TC_DP2) is not a whole number 0 … 9", tool_and_edge(s),
+                                 e->position.to_string()));
   if (*p == 0 || *p == 9) return 0;  // the edge centre is the reference
   if (e->radius + e->wear < Decimal::from_int(0))
     throw InputError(line, 1,
-                     fmt::format("T{} D{} is a turning tool with cutting edge position {} and a negative radius "
+                     fmt::format("{} is a turning tool with cutting edge position {} and a negative radius "
                                  "($TC_DP6 + $TC_DP15): cutcom does not simulate that tool tip",
-                                 s.tool, s.edge, *p));
+                                 tool_and_edge(s), *p));
   return static_cast<std::int8_t>(*p);
 }
 
@@ -90,9 +95,9 @@ void ProgramReader::tool_tip_offset(Block& b) {
     }
     if (selects)
       note(b, "TOOL-TURN-1",
-           fmt::format("T{} D{} is a turning tool with cutting edge position {}: the path is its tip's, which runs "
+           fmt::format("{} is a turning tool with cutting edge position {}: the path is its tip's, which runs "
                        "{} mm {} of the edge centre while compensation is in force",
-                       s.tool, s.edge, edge.edge_position, r.to_string(), direction_text(ax, edge.edge_position)));
+                       tool_and_edge(s), edge.edge_position, r.to_string(), direction_text(ax, edge.edge_position)));
   }
   tip_on_contour_ = on_contour_after;
 }

@@ -205,7 +205,10 @@ class ProgramReader final : public BlockSource, private SystemValues {
   // TOOL-TURN-1: the compensated contour moved to where a turning tool's tip runs; the cutting
   // edge position of an edge (0 unless a turning tool's 1 … 8).
   void tool_tip_offset(Block& b);
-  static std::int8_t edge_position_of(const EdgeData* e, const ModalState& s, int line);
+  std::int8_t edge_position_of(const EdgeData* e, const ModalState& s, int line) const;
+  // "T3 D1", or T="NAME" D1 for a tool the program or the command line named (TOOL-NAME-1): a
+  // named tool's number is cutcom's own and means nothing to the programmer.
+  std::string tool_and_edge(const ModalState& s) const;
 
   std::istream& in_;
   Interpreter interpreter_;                  // NC-PARAM-*: variables, expressions and control flow before the words
