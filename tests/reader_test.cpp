@@ -163,6 +163,12 @@ TEST(Reader, BadInputNamesLineAndColumn) {
       {"G1 I5 X1\n", 1, 1, "without G2/G3"},
       {"X#1\n", 1, 2, "X needs a number"},
       {"N10 X1 / 2\n", 1, 8, "unexpected character '/'"},
+      // A byte no terminal shows is named by its value; a whole UTF-8 character is shown.
+      {std::string("G1 X1 \0Y2\n", 11), 1, 7, "unexpected character byte 0x00"},
+      {"G1 X1 \x01Y2\n", 1, 7, "unexpected character byte 0x01"},
+      {"G1 X1 \xC3\xA9Y2\n", 1, 7, "unexpected character '\xC3\xA9' (not ASCII)"},
+      {"G1 X1 \xC3Y2\n", 1, 7, "unexpected character byte 0xC3"},
+      {"R1=2*\x7F\n", 1, 6, "unexpected character byte 0x7F"},
       {"T1.5\n", 1, 2, "T needs a whole number"},
   };
   for (const BadLine& c : cases) {

@@ -424,7 +424,7 @@ NcValue ExpressionParser::primary() {
     emit({CompiledExpression::Code::kConstant, 0, at, 0, v});
     return v;
   }
-  if (!is_letter(c) && c != '$' && c != '_') fail(fmt::format("unexpected character '{}'", c));
+  if (!is_letter(c) && c != '$' && c != '_') fail("unexpected character " + lexer::character_text(s_.substr(i_)));
   std::string n = name();
   skip_space();
   bool call = i_ < s_.size() && s_[i_] == '(';

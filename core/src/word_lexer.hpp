@@ -23,6 +23,21 @@ constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
 constexpr bool is_name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
 constexpr char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
+// The character at the start of `at` as an error message shows it (NC-ERR-1): a printable one
+// quoted, a whole UTF-8 character quoted, any other byte (a control byte, a NUL, a stray byte of
+// another encoding) by its value, which a terminal would not show or would garble.
+inline std::string character_text(std::string_view at) {
+  if (at.empty()) return "the end of the line";
+  auto byte = [&](std::size_t k) { return static_cast<unsigned char>(at[k]); };
+  unsigned char c = byte(0);
+  if (c >= 0x20 && c < 0x7f) return fmt::format("'{}'", at[0]);
+  std::size_t length = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+  bool whole = length != 0 && at.size() >= length;
+  for (std::size_t k = 1; whole && k < length; ++k) whole = (byte(k) & 0xc0) == 0x80;
+  if (whole) return fmt::format("'{}' (not ASCII)", at.substr(0, length));
+  return fmt::format("byte 0x{:02X}", c);
+}
+
 // Modal groups of the G codes kept as actions or state, for "two of one group" (NC-LEX-3).
 enum GGroup : unsigned {
   kGroupDwell = 1u << 0,        // group 2, non-modal: G4 G74 G75
@@ -71,7 +86,7 @@ class WordLexer {
       if (peek() == '$') {
         system_variable();
       } else {
-        if (!is_letter(peek())) fail(fmt::format("unexpected character '{}'", peek()));
+        if (!is_letter(peek())) fail("unexpected character " + character_text(s_.substr(i_)));
         word();
       }
       ++out_.word_count;
