@@ -361,13 +361,16 @@ void ProgramReader::resolve(Block& b) {
   b.end = position_;  // then written in place
   Point3& end = b.end;
   bool frame_values = w.frame.has_value() || w.cw().pole.has_value();  // the frame's or pole's values
-  std::string unknown_used;
+  // The axes moved from an unknown position, as "XZ" (a fixed buffer: a string was built and
+  // destroyed for every block, nearly always empty).
+  char unknown_axes[3];
+  std::size_t unknown_count = 0;
   for (int a = 0; a < 3; ++a) {
     std::size_t i = static_cast<std::size_t>(a);
     const AxisWord& aw = w.axis[i];
     bool abs = aw.mode == ValueMode::kAbsolute || (aw.mode == ValueMode::kModal && s.absolute);
     if (!aw.present || frame_values) {
-      if (unknown_[i] && w.programs_any_axis() && !frame_values && !cycle) unknown_used += "XYZ"[a];
+      if (unknown_[i] && w.programs_any_axis() && !frame_values && !cycle) unknown_axes[unknown_count++] = "XYZ"[a];
       continue;
     }
     if (cycle) {  // a G53/G75/SUPA move: where it ends is not simulated
@@ -384,10 +387,11 @@ void ProgramReader::resolve(Block& b) {
       if (abs)
         unknown_[i] = false;
       else
-        unknown_used += "XYZ"[a];
+        unknown_axes[unknown_count++] = "XYZ"[a];
     }
   }
-  if (!unknown_used.empty()) {
+  if (unknown_count != 0) {
+    const std::string_view unknown_used(unknown_axes, unknown_count);
     PlaneAxes pa = plane_axes(s.plane);
     bool plane_unknown =
         unknown_[static_cast<std::size_t>(pa.abscissa)] || unknown_[static_cast<std::size_t>(pa.ordinate)];
