@@ -86,6 +86,11 @@ class WordLexer {
       if (peek() == '$') {
         system_variable();
       } else {
+        // NC-LEX-2: a comment in parentheses is the ISO dialect's (G291), which cutcom does not read.
+        if (peek() == '(')
+          fail(
+              "unexpected character '(': a comment in parentheses is ISO dialect (G291); in the SINUMERIK "
+              "dialect a comment starts with ';'");
         if (!is_letter(peek())) fail("unexpected character " + character_text(s_.substr(i_)));
         word();
       }
