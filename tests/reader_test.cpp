@@ -135,7 +135,7 @@ struct BadLine {
   std::string contains;
 };
 
-// covers: NC-LEX-2 NC-LEX-6 NC-ERR-1 NC-ERR-3 NC-END-1 NC-PARAM-ERR-1
+// covers: NC-LEX-2 NC-LEX-3 NC-LEX-6 NC-ERR-1 NC-ERR-3 NC-END-1 NC-PARAM-ERR-1
 TEST(Reader, BadInputNamesLineAndColumn) {
   const BadLine cases[] = {
       {"G1 X10\nG1 Q5\n", 2, 4, "'Q' is not a SINUMERIK word cutcom knows"},
@@ -164,6 +164,8 @@ TEST(Reader, BadInputNamesLineAndColumn) {
       {"X#1\n", 1, 2, "X needs a number"},
       {"N10 X1 / 2\n", 1, 8, "unexpected character '/'"},
       {"N10 G0 X0 (RAPID)\n", 1, 11, "a comment in parentheses is ISO dialect (G291)"},
+      {"G0 X0\nG43 H1 Z5\n", 2, 1, "'G43' is a G code of the ISO dialect (G291)"},
+      {"G0 G999 X0\n", 1, 4, "'G999' is SINUMERIK NC that cutcom does not simulate"},
       // A byte no terminal shows is named by its value; a whole UTF-8 character is shown.
       {std::string("G1 X1 \0Y2\n", 11), 1, 7, "unexpected character byte 0x00"},
       {"G1 X1 \x01Y2\n", 1, 7, "unexpected character byte 0x01"},

@@ -183,6 +183,15 @@ void WordLexer::g_code(std::size_t at) {
     o.settable_offset = g == 500 ? 0 : g <= 57 ? static_cast<int>(g - 53) : static_cast<int>(g - 500);
     return;
   }
+  // NC-LEX-3: a G code of the ISO dialect only (G291; Fanuc-like controls) most likely means a
+  // program posted for another control: said so, rather than "not simulated".
+  static constexpr int kIsoOnly[] = {10, 20, 21, 28, 30, 43, 44, 49, 65, 66, 67, 68, 69, 73,
+                                     76, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 98, 99};
+  if (std::find(std::begin(kIsoOnly), std::end(kIsoOnly), g) != std::end(kIsoOnly))
+    fail(fmt::format("'G{}' is a G code of the ISO dialect (G291), not of the SINUMERIK dialect cutcom reads: is "
+                     "this a program for another control?",
+                     g),
+         at);
   fail(unsupported_message(fmt::format("G{}", g)), at);
 }
 
