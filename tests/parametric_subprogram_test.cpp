@@ -203,7 +203,7 @@ TEST(Parametric, SubprogramErrorsNameFileLineAndCall) {
             2);
   EXPECT_EQ(sub_error("WORDS\n", dir, "in subprogram WORDS.SPF line 2, column 1"), 1);
   EXPECT_EQ(sub_error("G0 X0\nDEEP\n", dir, "more than 16 program levels"), 2);
-  EXPECT_EQ(sub_error("G0 X0\nL99\n", dir, "subprogram L99 not found"), 2);
+  EXPECT_EQ(sub_error("G0 X0\nL99\n", dir, "subprogram L99 not found (L99.SPF or .MPF in the program's folder"), 2);
   EXPECT_EQ(sub_error("BROKEN(1, 2)\n", dir, "2 arguments given, the PROC has 1 parameters"), 1);
   EXPECT_EQ(sub_error("G0 X0 Y0\nSHIFT\n", dir, "puts back another frame"), 2);
 }

@@ -281,10 +281,11 @@ bool Interpreter::call(std::string_view s, std::size_t word) {
     // NC-CYCLE-3: a cycle of the machine: the block reader takes it as not simulated.
     if (std::find(machine_cycles_.begin(), machine_cycles_.end(), n) != machine_cycles_.end()) return false;
     if (!explicit_call && !l_number) return false;  // not a call: the lexer names the word
-    throw InputError(cx().line, static_cast<int>(word) + 1,
-                     fmt::format("subprogram {} not found ({}.SPF in the program's folder or --search-path; a cycle of "
-                                 "the machine itself, not simulated: --machine-cycle {})",
-                                 n, n, n));
+    throw InputError(
+        cx().line, static_cast<int>(word) + 1,
+        fmt::format("subprogram {} not found ({}.SPF or .MPF in the program's folder or --search-path; a cycle of "
+                    "the machine itself, not simulated: --machine-cycle {})",
+                    n, n, n));
   }
   // Arguments: values now; a VAR parameter's argument is also remembered by name.
   InterpreterLookup lookup(*this, cx().line);
