@@ -55,7 +55,9 @@ TEST(ProgramWords, ToolArchiveFile) {
   ToolTable t;
   std::istringstream file(
       "%_N_TO_INI\nCHANDATA(1)\n$TC_TP1[1]=1\n$TC_TP2[1]=\"FRAES_12\"\n$TC_TP8[1]=2\n$TC_DP1[1,1]=120\n"
-      "$TC_DP3[1,1]=80.5\n$TC_DP6[1,1]=6\n$TC_DP15[1,1]=-0.01\n$TC_MOP1[1,1]=0\n; end\nM17\n");
+      "$TC_DP3[1,1]=80.5\n$TC_DP6[1,1]=6\n$TC_DP15[1,1]=-0.01\n$TC_MOP1[1,1]=0\n"
+      // Edge data beside the parameters $TC_DPn: the edge's number, its H number, OEM parameters.
+      "$TC_DPCE[1,1]=1\n$TC_DPH[1,1]=0\n$TC_DPC1[1,1]=0.5\n$TC_DPV[1,1]=0\n; end\nM17\n");
   t.load(file, "TO_INI.INI");
   ASSERT_NE(t.find(1, 1), nullptr);
   EXPECT_EQ(t.find(1, 1)->radius, dec("6"));

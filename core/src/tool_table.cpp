@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "cutcom/reader.hpp"
+#include "word_lexer.hpp"
 
 namespace cutcom {
 
@@ -86,11 +87,16 @@ void archive_lines(std::istream& in, const std::string& source_name, F f) {
 
 void ToolTable::load(std::istream& in, const std::string& source_name) {
   archive_lines(in, source_name, [&](int n, const std::string& line, const std::string& u) {
-    // (Sum and setup offsets are read too: a radius part other than 0 is refused, TOOL-SUM-1.)
-    bool ours = u.rfind("$TC_DP", 0) == 0 || u.rfind("$TC_TP2[", 0) == 0 || u.rfind("$TC_TP2 ", 0) == 0 ||
-                u.rfind("$TC_SCP", 0) == 0 || u.rfind("$TC_ECP", 0) == 0;
+    // The edge parameters $TC_DPn (n a number: $TC_DPCE, $TC_DPH, $TC_DPC1 … are other data) and
+    // the names. (Sum and setup offsets are read too: a radius part other than 0 is refused, TOOL-SUM-1.)
+    auto numbered = [&](std::string_view prefix) {
+      return u.rfind(prefix, 0) == 0 && u.size() > prefix.size() && lexer::is_digit(u[prefix.size()]);
+    };
+    bool ours = numbered("$TC_DP") || u.rfind("$TC_TP2[", 0) == 0 || u.rfind("$TC_TP2 ", 0) == 0 ||
+                numbered("$TC_SCP") || numbered("$TC_ECP");
     if (!ours) {
-      // Other tool management data ($TC_TP8, $TC_MOP…, $TC_ADPT…, $A_…): no effect on the path.
+      // Other tool management data ($TC_TP8, $TC_DPCE, $TC_DPH, $TC_MOP…, $TC_ADPT…, $A_…): no
+      // effect on the path.
       if (u[0] == '$') return;
       throw InputError(n, 1,
                        fmt::format("{}: not a line of a tool-offset archive ($TC_DPn[t,d]=…, "
