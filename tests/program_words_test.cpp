@@ -432,6 +432,46 @@ TEST(ProgramWords, SettableOffsetsRelativeToTheFirst) {
   }
 }
 
+// covers: NC-OFFSET-2
+TEST(ProgramWords, SettableOffsetsAsTheControlArchivesThem) {
+  // Every frame whole, joined by ':', G500's frame at zero, the rotary axis A listed with the
+  // geometry axes, a fine offset adding to the coarse one.
+  OffsetTable t;
+  std::istringstream file(
+      "%_N_UFR_INI\nCHANDATA(1)\n"
+      "$P_UIFR[0]=CTRANS(X,0,Y,0,Z,0,A,0):CROT(X,0,Y,0,Z,0):CMIRROR():CSCALE(X,1,Y,1,Z,1,A,1)\n"
+      "$P_UIFR[1]=CTRANS(X,100,Y,50,Z,-20,A,90,C1,0,SP1,0):CFINE(X,0.25,Y,0,Z,0):CROT(Z,0):CMIRROR():CSCALE(X,1,Y,1,Z,"
+      "1)\n"
+      "$P_UIFR[2,A,TR]=45\n$P_UIFR[2,X,TR]=300\nM17\n");
+  t.load(file, "UFR.INI");
+  EXPECT_EQ(t.translation(1), pt("100.25", "50", "-20"));
+  EXPECT_EQ(t.translation(2), pt("300", "0", "0"));
+  EXPECT_EQ(t.translation(0), pt("0", "0", "0"));
+  auto b = read("G54 G0 X10 Y10\nG55 X10\n", {}, &t);
+  EXPECT_EQ(b[1].end, pt("209.75", "10", "0"));
+  // What the control would do otherwise is not simulated: a rotation, a mirror, a scale, a G500
+  // frame other than zero; each an error naming the file, line and column.
+  const std::pair<const char*, const char*> refused[] = {
+      {"$P_UIFR[1]=CTRANS(X,1):CROT(Z,30)\n", "a rotation"},
+      {"$P_UIFR[1]=CTRANS(X,1):CMIRROR(X)\n", "a mirror"},
+      {"$P_UIFR[1]=CTRANS(X,1):CSCALE(X,2)\n", "a scale"},
+      {"$P_UIFR[0]=CTRANS(X,5)\n", "G500 selects, other than zero"},
+      {"$P_UIFR[0,Y,TR]=5\n", "G500 selects, other than zero"},
+      {"$P_UIFR[1]=CTRANS(X,1):CSHIFT(X,1)\n", "'CSHIFT': a settable offset is CTRANS"},
+  };
+  for (const auto& [text, want] : refused) {
+    std::istringstream in(text);
+    try {
+      OffsetTable u;
+      u.load(in, "UFR.INI");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 1);
+      EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << text << " -> " << e.what();
+    }
+  }
+}
+
 // covers: NC-FRAME-1 NC-FRAME-2
 TEST(ProgramWords, TranslationScaleAndMirrorFrames) {
   auto b = read(

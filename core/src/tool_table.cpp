@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cstring>
 
 #include "cutcom/reader.hpp"
 #include "word_lexer.hpp"
@@ -227,64 +228,100 @@ class OffsetLine {
     if (!r.value) fail(fmt::format("'{}' is not a number", s_.substr(start, i_ - start)));
     return *r.value;
   }
+  // A geometry axis' index, or -1 for any other axis of the channel (A, B, C, a spindle …): a
+  // real archive lists them all, and their offsets do not move the tool in X, Y, Z.
   int axis() {
     std::string a = word();
     if (a == "X") return 0;
     if (a == "Y") return 1;
     if (a == "Z") return 2;
-    fail(fmt::format("'{}' is not a geometry axis (X, Y, Z)", a));
+    // Rotary and additional axes as machines name them: A, B, C, U, V, W, SP, each perhaps numbered.
+    std::size_t letters = a.rfind("SP", 0) == 0 ? 2 : (!a.empty() && std::strchr("ABCUVW", a[0]) ? 1 : 0);
+    bool other = letters != 0 && std::all_of(a.begin() + static_cast<std::ptrdiff_t>(letters), a.end(),
+                                             [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+    if (!other)
+      fail(fmt::format("'{}' is not a geometry axis (X, Y, Z) nor a rotary or additional axis (A, B, C, U, V, W, SP)",
+                       a));
+    return -1;
   }
   bool end() {
     space();
     return i_ >= s_.size() || s_[i_] == ';';
   }
+  static bool neutral_rotation(const Decimal& v) { return v.is_zero(); }
+  static bool neutral_scale(const Decimal& v) { return v == Decimal::from_int(1) || v.is_zero(); }
+  void reject_rotation() { fail("a rotation in a settable offset is SINUMERIK NC that cutcom does not simulate"); }
+  void reject_scale() { fail("a scale in a settable offset is not simulated"); }
+  void reject_mirror() { fail("a mirror in a settable offset is not simulated"); }
 
-  // $P_UIFR[n]=CTRANS(X,10,Y,20) | $P_UIFR[n,X,TR]=10 (also FI, and RT/SC/MI at their neutral value).
+  // One component of offset `index`, axis `a` (-1: not a geometry axis, passed over).
+  void component(OffsetTable& table, int index, int a, const std::string& component, const Decimal& v) {
+    if (component == "TR") {
+      if (a >= 0) table.set(index, a, v);
+    } else if (component == "FI") {  // the fine offset adds to the coarse one
+      if (a >= 0) table.set(index, a, coord(table.translation(index), a) + v);
+    } else if (component == "RT") {
+      if (!neutral_rotation(v)) reject_rotation();
+    } else if (component == "SC") {
+      if (!neutral_scale(v)) reject_scale();
+    } else if (component == "MI") {
+      if (!v.is_zero()) reject_mirror();
+    } else {
+      fail(fmt::format("'{}' is not a frame component (TR, FI, RT, SC, MI)", component));
+    }
+  }
+
+  // $P_UIFR[n]=CTRANS(X,10,Y,20):CFINE(…):CROT(…):CMIRROR(…):CSCALE(…), as the control writes
+  // it, or $P_UIFR[n,X,TR]=10 (also FI, and RT/SC/MI at their neutral value). n = 0 is G500's.
   void run(OffsetTable& table) {
     if (word() != "$P_UIFR") fail("only $P_UIFR[n]… lines set settable offsets");
     expect('[');
     Decimal idx = number();
     auto n = idx.to_integer();
-    if (!n || *n < 1 || *n > 99) fail("settable offset numbers are 1 … 99 (G54 = 1, G505 = 5, …)");
+    if (!n || *n < 0 || *n > 99) fail("settable offset numbers are 0 … 99 (G500 = 0, G54 = 1, G505 = 5, …)");
     int index = static_cast<int>(*n);
     if (accept(',')) {
       int a = axis();
       expect(',');
-      std::string component = word();
+      std::string name = word();
       expect(']');
       expect('=');
-      Decimal v = number();
-      if (component == "TR") {
-        table.set(index, a, v);
-      } else if (component == "FI") {  // the fine offset adds to the coarse one
-        table.set(index, a, coord(table.translation(index), a) + v);
-      } else if (component == "RT") {
-        if (!v.is_zero()) fail("a rotation in a settable offset is SINUMERIK NC that cutcom does not simulate");
-      } else if (component == "SC") {
-        if (v != Decimal::from_int(1) && !v.is_zero()) fail("a scale in a settable offset is not simulated");
-      } else if (component == "MI") {
-        if (!v.is_zero()) fail("a mirror in a settable offset is not simulated");
-      } else {
-        fail(fmt::format("'{}' is not a frame component (TR, FI, RT, SC, MI)", component));
-      }
+      component(table, index, a, name, number());
     } else {
       expect(']');
       expect('=');
-      std::string fn = word();
-      if (fn != "CTRANS") fail(fmt::format("'{}': only CTRANS(axis, value, …) is supported here", fn));
-      expect('(');
-      Point3 p;
-      if (!accept(')')) {
+      // The functions of the assignment, joined by ':'; CTRANS sets the axes it names and clears
+      // the others (the frame is assigned whole), CFINE adds.
+      Point3 coarse, fine;
+      do {
+        std::string fn = word();
+        static const char* const kKnown[] = {"CTRANS", "CFINE", "CROT", "CMIRROR", "CSCALE"};
+        if (std::find(std::begin(kKnown), std::end(kKnown), fn) == std::end(kKnown))
+          fail(fmt::format("'{}': a settable offset is CTRANS, CFINE, CROT, CMIRROR or CSCALE(axis, value, …)", fn));
+        expect('(');
+        if (accept(')')) continue;
         do {
           int a = axis();
+          if (fn == "CMIRROR") {  // mirrored axes are named alone
+            reject_mirror();
+          }
           expect(',');
-          coord(p, a) = number();
+          Decimal v = number();
+          if (fn == "CTRANS" && a >= 0) coord(coarse, a) = v;
+          if (fn == "CFINE" && a >= 0) coord(fine, a) = v;
+          if (fn == "CROT" && !neutral_rotation(v)) reject_rotation();
+          if (fn == "CSCALE" && !neutral_scale(v)) reject_scale();
         } while (accept(','));
         expect(')');
-      }
-      for (int a = 0; a < 3; ++a) table.set(index, a, coord(p, a));
+      } while (accept(':'));
+      for (int a = 0; a < 3; ++a) table.set(index, a, coord(coarse, a) + coord(fine, a));
     }
     if (!end()) fail("unexpected text after the assignment");
+    // G500's frame is zero on nearly every machine (an archive lists it so); another one would
+    // move the blocks before the program's first G54 … in a system cutcom does not output.
+    const Point3 g500 = table.translation(0);
+    if (index == 0 && !(g500.x.is_zero() && g500.y.is_zero() && g500.z.is_zero()))
+      fail("$P_UIFR[0], the frame G500 selects, other than zero is not simulated");
   }
 
  private:
