@@ -62,6 +62,35 @@ TEST(MachineData, FileErrorsNameTheLine) {
   EXPECT_EQ(md.cutcom_corner_limit, Decimal::from_int(120));
 }
 
+// covers: MD-FILE-1
+TEST(MachineData, AnArchiveOfTheControlIsReadAsItIsWritten) {
+  MachineData md;
+  std::istringstream in(
+      "%_N_CH_TEA_INI\nCHANDATA(1)\n$MC_CHAN_NAME=\"CHAN1\"\n$MC_CUTCOM_CORNER_LIMIT=95.\n"
+      "$MC_CUTCOM_MAXNUM_CHECK_BLOCKS='H0A'\n$MN_SOME_MASK='B101'\n$MA_JOG_VELO[AX1]=2000\nM17\n");
+  md.load(in, "TEA.INI");
+  EXPECT_EQ(md.cutcom_corner_limit, Decimal::from_int(95));
+  EXPECT_EQ(md.cutcom_maxnum_check_blocks, 10);  // 'H0A'
+  EXPECT_EQ(md.readable.at("$MN_SOME_MASK"), "5");
+  EXPECT_EQ(md.readable.at("$MC_CHAN_NAME"), "\"CHAN1\"");
+  auto error = [](const std::string& text) {
+    MachineData m;
+    std::istringstream file(text);
+    try {
+      m.load(file, "TEA.INI");
+    } catch (const MachineDataError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // Two channels' data in one archive: which runs the program cannot be told.
+  EXPECT_NE(
+      error("CHANDATA(1)\nMD20210=90\nCHANDATA(2)\nMD20210=80\n").find("TEA.INI:3: CHANDATA(2) after CHANDATA(1)"),
+      std::string::npos);
+  EXPECT_NE(error("$MN_X='H1G'\n").find("TEA.INI:1: 'H1G' is not a hexadecimal constant"), std::string::npos);
+  EXPECT_NE(error("$MN_X='B12'\n").find("is not a binary constant"), std::string::npos);
+}
+
 // covers: ALARM-1
 TEST(Alarms, CatalogueNamesTheRaisingClause) {
   const AlarmInfo* a = find_alarm(10751);

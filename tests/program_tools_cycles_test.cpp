@@ -50,7 +50,7 @@ TEST(ProgramWords, ToolChangeEdgeDefaultAndNames) {
   EXPECT_THROW(read("M6\n", m6), InputError);
 }
 
-// covers: TOOL-FILE-1
+// covers: TOOL-FILE-1 MD-FILE-1
 TEST(ProgramWords, ToolArchiveFile) {
   ToolTable t;
   std::istringstream file(
@@ -63,6 +63,16 @@ TEST(ProgramWords, ToolArchiveFile) {
   EXPECT_EQ(t.find(1, 1)->radius, dec("6"));
   EXPECT_EQ(t.find(1, 1)->wear, dec("-0.01"));
   EXPECT_EQ(*t.number_of("FRAES_12"), 1);
+  // A second channel's data: refused, naming the line (MD-FILE-1).
+  std::istringstream two("CHANDATA(1)\n$TC_DP6[1,1]=6\nCHANDATA(2)\n$TC_DP6[1,1]=7\n");
+  try {
+    ToolTable u;
+    u.load(two, "TO_INI.INI");
+    ADD_FAILURE() << "two channels accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(std::string(e.what()).find("more than one channel"), std::string::npos) << e.what();
+  }
   std::istringstream bad("$TC_DP6[1,1]=6\nG1 X10\n");
   try {
     ToolTable u;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "archive_file.hpp"
+
 namespace cutcom {
 
 const std::vector<MachineDatumInfo>& machine_data_catalogue() {
@@ -41,17 +43,8 @@ const std::vector<MachineDatumInfo>& machine_data_catalogue() {
 
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string u(s);
-  std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return u;
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
+using archive::trim;
+using archive::upper;
 
 const MachineDatumInfo& lookup(std::string_view name) {
   std::string u = upper(trim(name));
@@ -127,7 +120,32 @@ std::string variable_value(const std::string& key, std::string_view value) {
 
 }  // namespace
 
-void MachineData::set(std::string_view name, std::string_view value) {
+namespace {
+// MD-FILE-1: a hexadecimal 'H…' or binary 'B…' constant, as the control archives bit masks, as
+// its decimal text; any other value as it is.
+std::string numeric_text(std::string_view value) {
+  std::string_view v = trim(value);
+  if (v.size() < 4 || v.front() != '\'' || v.back() != '\'') return std::string(value);
+  char base = static_cast<char>(std::toupper(static_cast<unsigned char>(v[1])));
+  std::string_view digits = v.substr(2, v.size() - 3);
+  if ((base != 'H' && base != 'B') || digits.size() > (base == 'H' ? 15u : 60u)) return std::string(value);
+  std::int64_t n = 0;
+  for (char c : digits) {
+    int d = std::isdigit(static_cast<unsigned char>(c)) ? c - '0'
+            : base == 'H' && std::isxdigit(static_cast<unsigned char>(c))
+                ? std::toupper(static_cast<unsigned char>(c)) - 'A' + 10
+                : 99;
+    if (d >= (base == 'H' ? 16 : 2))
+      throw MachineDataError(fmt::format("{} is not a {} constant", v, base == 'H' ? "hexadecimal" : "binary"));
+    n = n * (base == 'H' ? 16 : 2) + d;
+  }
+  return std::to_string(n);
+}
+}  // namespace
+
+void MachineData::set(std::string_view name, std::string_view raw_value) {
+  const std::string value_text = numeric_text(raw_value);
+  const std::string_view value = value_text;
   std::string u = variable_key(name);
   bool catalogued = std::any_of(machine_data_catalogue().begin(), machine_data_catalogue().end(),
                                 [&](const MachineDatumInfo& d) { return u == d.id || u == d.name; });
@@ -177,22 +195,27 @@ void MachineData::set_assignment(std::string_view text) {
   set(text.substr(0, eq), text.substr(eq + 1));
 }
 
+// MD-FILE-1: NAME=VALUE lines, also in the framing of the control's archive (a header, CHANDATA,
+// M17, comments).
 void MachineData::load(std::istream& in, const std::string& source_name) {
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    std::string_view s = line;
-    auto c = s.find_first_of("#;");
-    if (c != std::string_view::npos) s = s.substr(0, c);
-    s = trim(s);
-    if (s.empty()) continue;
-    try {
-      set_assignment(s);
-    } catch (const MachineDataError& e) {
-      throw MachineDataError(fmt::format("{}:{}: {}", source_name, n, e.what()));
-    }
-  }
+  auto fail = [&](int n, const std::string& what) -> void {
+    throw MachineDataError(fmt::format("{}:{}: {}", source_name, n, what));
+  };
+  archive::read_lines(
+      in,
+      [&](int n, const std::string& line, const std::string&) {
+        std::string_view s = line;
+        auto c = s.find_first_of("#;");
+        if (c != std::string_view::npos) s = s.substr(0, c);
+        s = trim(s);
+        if (s.empty()) return;
+        try {
+          set_assignment(s);
+        } catch (const MachineDataError& e) {
+          fail(n, e.what());
+        }
+      },
+      fail);
 }
 
 ModalState MachineData::initial_state() const {

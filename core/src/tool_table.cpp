@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstring>
 
+#include "archive_file.hpp"
 #include "cutcom/reader.hpp"
 #include "word_lexer.hpp"
 
@@ -52,36 +53,15 @@ std::optional<std::int64_t> ToolTable::number_of(const std::string& name) const 
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
-std::string upper(std::string_view s) {
-  std::string u(s);
-  for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
-
-// Lines of an archive that carry no data cutcom needs: header, channel selection, end, comments.
-bool archive_frame_line(const std::string& u) {
-  return u.empty() || u[0] == '%' || u[0] == ';' || u.rfind("CHANDATA", 0) == 0 || u == "M17" || u == "M30" ||
-         u == "M02" || u == "M2";
-}
+using archive::trim;
+using archive::upper;
 
 // Calls f(line number, line, upper-case trimmed line) for each line of an archive with data.
 template <class F>
 void archive_lines(std::istream& in, const std::string& source_name, F f) {
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    if (n == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // a UTF-8 byte order mark
-    std::string u = upper(trim(line));
-    if (!archive_frame_line(u)) f(n, line, u);
-  }
-  if (in.bad()) throw std::runtime_error(fmt::format("{}: read error", source_name));
+  archive::read_lines(in, f, [&](int n, const std::string& what) -> void {
+    throw InputError(n, 1, fmt::format("{}: {}", source_name, what));
+  });
 }
 
 }  // namespace
