@@ -14,12 +14,12 @@ namespace cutcom::cli {
 namespace {
 
 template <class Table>
-void load_file(Table& table, const std::string& file, const char* what) {
+void load_file(Table& table, const std::string& file, const char* what, int channel) {
   if (std::filesystem::is_directory(file)) throw FileError(fmt::format("{} file '{}' is a directory", what, file));
   std::ifstream in(file);
   if (!in) throw FileError(fmt::format("cannot open {} file '{}'", what, file));
   try {
-    table.load(in, file);
+    table.load(in, file, channel);
   } catch (const cutcom::InputError& e) {
     std::string_view detail = e.detail();  // (the table names the file too: once is enough)
     if (detail.starts_with(file + ": ")) detail.remove_prefix(file.size() + 2);
@@ -59,7 +59,7 @@ cutcom::MachineData machine_data(const RunOptions& o) {
   for (const auto& f : o.md_files) {
     std::ifstream in(f);
     if (!in) throw cutcom::MachineDataError(fmt::format("cannot open machine data file '{}'", f));
-    md.load(in, f);
+    md.load(in, f, o.channel);
   }
   for (const auto& a : o.md) md.set_assignment(a);
   return md;
@@ -67,7 +67,7 @@ cutcom::MachineData machine_data(const RunOptions& o) {
 
 ControlData control_data(const RunOptions& o) {
   ControlData c;
-  for (const auto& f : o.tool_files) load_file(c.tools, f, "tool");
+  for (const auto& f : o.tool_files) load_file(c.tools, f, "tool", o.channel);
   for (const auto& t : o.tool_edges) {
     try {
       c.tools.define(t);  // TOOL-FILE-2: after the archives, so that it overrides them
@@ -75,7 +75,7 @@ ControlData control_data(const RunOptions& o) {
       throw FileError(fmt::format("--tool '{}', column {}: {}", t, e.column(), e.detail()));
     }
   }
-  if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets");
+  if (!o.offsets_file.empty()) load_file(c.offsets, o.offsets_file, "offsets", o.channel);
   c.limits.max_backward_jumps = o.max_loops;
   for (int level : o.skip_levels) c.skip_levels |= static_cast<std::uint16_t>(1u << level);
   for (const auto& f : o.definition_files) {

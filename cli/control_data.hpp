@@ -35,6 +35,7 @@ struct RunOptions {
   std::optional<std::string> arguments;
   std::vector<int> skip_levels;             // NC-WORD-2: --skip
   std::vector<std::string> machine_cycles;  // NC-CYCLE-3: --machine-cycle
+  int channel = 0;                          // MD-FILE-1: --channel, whose data the archives give (0: one only)
 };
 
 // A data file given on the command line is wrong: names the file and line (exit 2).

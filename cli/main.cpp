@@ -44,6 +44,10 @@ int main(int argc, char** argv) {
                   "(an end mill); RADIUS,POSITION a turning tool with that cutting edge position: --tool 2=0.4,3 "
                   "(after --tools, repeatable)");
   run->add_option("--offsets", o.offsets_file, "settable work offsets ($P_UIFR[n]=CTRANS(X,..,Y,..) lines)");
+  run->add_option("--channel", o.channel,
+                  "the channel that runs the program: its data are read from archives (--tools, --offsets, "
+                  "--md-file) that hold several channels' (CHANDATA(n))")
+      ->check(CLI::Range(1, 99));
   run->add_option("--skip", o.skip_levels,
                   "skip level switched on: blocks marked /LEVEL (/ is /0) are left out, as with the control's "
                   "skip switch (0-9, repeatable; default: all off, skip blocks run)")

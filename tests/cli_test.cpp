@@ -337,6 +337,32 @@ TEST(Cli, TheExampleJobRunsWithItsToolTableAndOffsets) {
 }
 
 // covers: TOOL-FILE-2
+// An archive of two channels: refused without --channel, naming the file and line; with it, the
+// channel's tools are the ones in force.
+// covers: MD-FILE-1 TOOL-FILE-1
+TEST(Cli, TheChannelPicksItsDataFromAnArchiveOfSeveral) {
+  std::string program = write_temp("channel.mpf", "T1 D1\nG0 X-10 Y-10\nG1 G41 X0 Y0 F500\nX40\nG40 X50 Y-10\nM30\n");
+  std::string tools = write_temp("two-channels.ini",
+                                 "%_N_TO_INI\nCHANDATA(1)\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\nM17\n"
+                                 "CHANDATA(2)\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=6\nM17\n");
+  Result both = sh_err(kCli + " run " + program + " --tools " + tools);
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.out.find("two-channels.ini:6:1: CHANDATA(2) after CHANDATA(1) in line 2"), std::string::npos)
+      << both.out;
+  EXPECT_NE(both.out.find("--channel N"), std::string::npos) << both.out;
+  for (const auto& [channel, y] : {std::pair{"1", 4.0}, std::pair{"2", 6.0}}) {
+    Result r = sh(kCli + " run --format json " + program + " --tools " + tools + " --channel " + channel);
+    ASSERT_EQ(r.status, 0) << r.out;
+    bool offset = false;  // the offset of X40 runs the channel's radius beside it
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    for (const auto& el : j["path"]) offset |= el["origin"]["kind"] == "offset" && el["start"][1].get<double>() == y;
+    EXPECT_TRUE(offset) << "channel " << channel << ": " << r.out;
+  }
+  Result missing = sh_err(kCli + " run " + program + " --tools " + tools + " --channel 3");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.out.find("no data of channel 3"), std::string::npos) << missing.out;
+}
+
 TEST(Cli, AToolEdgeGivenOnTheCommandLine) {
   std::string program = write_temp("named_tool.mpf",
                                    "T=\"FLAT 10\" D1\nM6\nG0 X-10 Y-10\nG1 G41 X0 Y0 F500\nX40\nY30\n"

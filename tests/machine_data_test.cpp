@@ -87,6 +87,20 @@ TEST(MachineData, AnArchiveOfTheControlIsReadAsItIsWritten) {
   EXPECT_NE(
       error("CHANDATA(1)\nMD20210=90\nCHANDATA(2)\nMD20210=80\n").find("TEA.INI:3: CHANDATA(2) after CHANDATA(1)"),
       std::string::npos);
+  // With the channel named, its data are read (and what stands before any CHANDATA).
+  MachineData second;
+  std::istringstream both("MD20240=4\nCHANDATA(1)\nMD20210=90\nCHANDATA(2)\nMD20210=80\n");
+  second.load(both, "TEA.INI", 2);
+  EXPECT_EQ(second.cutcom_corner_limit, Decimal::from_int(80));
+  EXPECT_EQ(second.cutcom_maxnum_check_blocks, 4);
+  MachineData third;
+  std::istringstream none("CHANDATA(1)\nMD20210=90\n");
+  try {
+    third.load(none, "TEA.INI", 3);
+    ADD_FAILURE() << "channel 3 read from an archive of channel 1";
+  } catch (const MachineDataError& e) {
+    EXPECT_NE(std::string(e.what()).find("no data of channel 3"), std::string::npos) << e.what();
+  }
   EXPECT_NE(error("$MN_X='H1G'\n").find("TEA.INI:1: 'H1G' is not a hexadecimal constant"), std::string::npos);
   EXPECT_NE(error("$MN_X='B12'\n").find("is not a binary constant"), std::string::npos);
 }

@@ -39,28 +39,34 @@ inline bool frame_line(std::string_view u) {
          u == "M02" || u == "M2";
 }
 
-// Calls data(line number, line, upper-case trimmed line) for each data line. An archive of
-// several channels (a second CHANDATA(n) with another n) is refused through fail(line number,
-// message): their data would overwrite one another, and which channel runs the program cutcom
-// cannot tell.
+// Calls data(line number, line, upper-case trimmed line) for each data line of `channel`'s:
+// those before any CHANDATA(n) and those after CHANDATA(channel). Without a channel (0) an
+// archive of several channels (a second CHANDATA(n) with another n) is refused through
+// fail(line number, message): their data would overwrite one another, and which channel runs
+// the program cutcom cannot tell. A channel the archive holds no data of is refused too.
 template <class Data, class Fail>
-void read_lines(std::istream& in, Data data, Fail fail) {
+void read_lines(std::istream& in, Data data, Fail fail, int channel = 0) {
   std::string line;
-  int n = 0, channel = 0, channel_line = 0;
+  int n = 0, seen = 0, seen_line = 0;  // the first channel seen, and where
+  bool wanted = true, found = false;   // in a wanted part; the wanted channel's part found
   while (std::getline(in, line)) {
     ++n;
     if (n == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // a UTF-8 byte order mark
     std::string u = upper(trim(line));
     if (int c = chandata_channel(u); c != 0) {
-      if (channel != 0 && c != channel)
+      if (channel == 0 && seen != 0 && c != seen)
         fail(n, fmt::format("CHANDATA({}) after CHANDATA({}) in line {}: the archive holds the data of more than "
-                            "one channel; give cutcom those of the program's channel alone",
-                            c, channel, channel_line));
-      channel = c, channel_line = n;
+                            "one channel; say which channel runs the program (--channel N)",
+                            c, seen, seen_line));
+      if (seen == 0) seen = c, seen_line = n;
+      wanted = channel == 0 || c == channel;
+      found = found || c == channel;
     }
-    if (!frame_line(u)) data(n, line, u);
+    if (wanted && !frame_line(u)) data(n, line, u);
   }
   if (in.bad()) fail(n, "read error");
+  if (channel != 0 && seen != 0 && !found)
+    fail(n, fmt::format("the archive holds no data of channel {} (CHANDATA({}) in line {})", channel, seen, seen_line));
 }
 
 }  // namespace cutcom::archive

@@ -197,7 +197,7 @@ void MachineData::set_assignment(std::string_view text) {
 
 // MD-FILE-1: NAME=VALUE lines, also in the framing of the control's archive (a header, CHANDATA,
 // M17, comments).
-void MachineData::load(std::istream& in, const std::string& source_name) {
+void MachineData::load(std::istream& in, const std::string& source_name, int channel) {
   auto fail = [&](int n, const std::string& what) -> void {
     throw MachineDataError(fmt::format("{}:{}: {}", source_name, n, what));
   };
@@ -215,7 +215,7 @@ void MachineData::load(std::istream& in, const std::string& source_name) {
           fail(n, e.what());
         }
       },
-      fail);
+      fail, channel);
 }
 
 ModalState MachineData::initial_state() const {

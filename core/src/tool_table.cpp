@@ -58,16 +58,17 @@ using archive::upper;
 
 // Calls f(line number, line, upper-case trimmed line) for each line of an archive with data.
 template <class F>
-void archive_lines(std::istream& in, const std::string& source_name, F f) {
-  archive::read_lines(in, f, [&](int n, const std::string& what) -> void {
-    throw InputError(n, 1, fmt::format("{}: {}", source_name, what));
-  });
+void archive_lines(std::istream& in, const std::string& source_name, int channel, F f) {
+  archive::read_lines(
+      in, f,
+      [&](int n, const std::string& what) -> void { throw InputError(n, 1, fmt::format("{}: {}", source_name, what)); },
+      channel);
 }
 
 }  // namespace
 
-void ToolTable::load(std::istream& in, const std::string& source_name) {
-  archive_lines(in, source_name, [&](int n, const std::string& line, const std::string& u) {
+void ToolTable::load(std::istream& in, const std::string& source_name, int channel) {
+  archive_lines(in, source_name, channel, [&](int n, const std::string& line, const std::string& u) {
     // The edge parameters $TC_DPn (n a number: $TC_DPCE, $TC_DPH, $TC_DPC1 … are other data) and
     // the names. (Sum and setup offsets are read too: a radius part other than 0 is refused, TOOL-SUM-1.)
     auto numbered = [&](std::string_view prefix) {
@@ -313,8 +314,8 @@ class OffsetLine {
 
 }  // namespace
 
-void OffsetTable::load(std::istream& in, const std::string& source_name) {
-  archive_lines(in, source_name, [&](int n, const std::string& line, const std::string& u) {
+void OffsetTable::load(std::istream& in, const std::string& source_name, int channel) {
+  archive_lines(in, source_name, channel, [&](int n, const std::string& line, const std::string& u) {
     if (u.rfind("$P_UIFR", 0) != 0) {
       if (u[0] == '$') return;  // other frames of the archive ($P_CHBFR, …) do not change the path here
       throw InputError(n, 1, fmt::format("{}: not a settable-offset line ($P_UIFR[n]=CTRANS(…))", source_name));

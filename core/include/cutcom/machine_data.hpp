@@ -47,8 +47,10 @@ struct MachineData {
   // Sets one datum from NAME=VALUE text; NAME is "MD20204" or "$MC_WAB_CLEARANCE_TOLERANCE".
   void set(std::string_view name, std::string_view value);
   void set_assignment(std::string_view name_equals_value);
-  // Reads NAME=VALUE lines; '#' or ';' start a comment. Errors name the file and line.
-  void load(std::istream& in, const std::string& source_name);
+  // MD-FILE-1: reads NAME=VALUE lines; '#' or ';' start a comment; the control's archive framing
+  // is passed over. `channel`: whose data an archive of several channels gives (0: one only).
+  // Errors name the file and line.
+  void load(std::istream& in, const std::string& source_name, int channel = 0);
   // The modal state at program start that machine data decide (group 48 initial setting).
   ModalState initial_state() const;
   // NC-PARAM-SYS-4: what a program reads by the data's $ names: the modelled data (by their

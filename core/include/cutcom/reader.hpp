@@ -44,7 +44,8 @@ class ToolTable {
   // The name $TC_TP2[tool] gave tool `tool`, if any (NC-PARAM-SYS-1).
   std::optional<std::string> name_of(std::int64_t tool) const;
   // TOOL-FILE-1: a tool-offset archive (TO_INI.INI convention). Errors name the file and line.
-  void load(std::istream& in, const std::string& source_name);
+  // `channel`: the channel whose data are read from an archive of several (MD-FILE-1; 0: one only).
+  void load(std::istream& in, const std::string& source_name, int channel = 0);
   // TOOL-FILE-2: one edge from the command line, "TOOL[/EDGE]=RADIUS" (TOOL a number or a name).
   // Errors: InputError with line 0 and the column in the text.
   void define(std::string_view spec);
@@ -61,7 +62,8 @@ class OffsetTable {
   Point3 translation(int index) const;
   bool defined(int index) const;
   // NC-OFFSET-2: $P_UIFR[n]=CTRANS(X,10,Y,20) or $P_UIFR[n,X,TR]=10 lines. Errors name file and line.
-  void load(std::istream& in, const std::string& source_name);
+  // `channel` as for ToolTable::load.
+  void load(std::istream& in, const std::string& source_name, int channel = 0);
 
  private:
   std::map<int, Point3> offsets_;
