@@ -118,9 +118,6 @@ std::string variable_value(const std::string& key, std::string_view value) {
   return std::string(v);
 }
 
-}  // namespace
-
-namespace {
 // MD-FILE-1: a hexadecimal 'H…' or binary 'B…' constant, as the control archives bit masks, as
 // its decimal text; any other value as it is.
 std::string numeric_text(std::string_view value) {

@@ -283,9 +283,7 @@ class OffsetLine {
         if (accept(')')) continue;
         do {
           int a = axis();
-          if (fn == "CMIRROR") {  // mirrored axes are named alone
-            reject_mirror();
-          }
+          if (fn == "CMIRROR") reject_mirror();  // a mirrored axis is named alone: any is a mirror
           expect(',');
           Decimal v = number();
           if (fn == "CTRANS" && a >= 0) coord(coarse, a) = v;
