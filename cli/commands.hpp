@@ -10,7 +10,7 @@
 namespace cutcom::cli {
 
 int run_command(const RunOptions& o);
-int list_machine_data(const std::vector<std::string>& assignments);
+int list_machine_data(const RunOptions& o);  // --md-file, --md, --channel as for run
 int list_alarms();
 
 struct CertifyOptions {

@@ -65,9 +65,12 @@ int main(int argc, char** argv) {
   run->add_option("--machine-cycle", o.machine_cycles,
                   "a cycle or subprogram of the machine itself (a tool change L6, TC, ...) that is not in the "
                   "program's folder: its calls are not simulated, as standard cycles (repeatable)");
-  std::vector<std::string> md_assignments;
+  RunOptions mo;  // the machine data options of `run`, for `md`
   auto* md = app.add_subcommand("md", "list the machine data, their values and ranges");
-  md->add_option("--md", md_assignments, "override NAME=VALUE before listing");
+  md->add_option("--md", mo.md, "override NAME=VALUE before listing");
+  md->add_option("--md-file", mo.md_files, "file of NAME=VALUE lines, read before --md (repeatable)");
+  md->add_option("--channel", mo.channel, "the channel whose data an archive of several gives")
+      ->check(CLI::Range(1, 99));
   auto* alarms = app.add_subcommand("alarms", "list the alarm catalogue");
   CertifyOptions co;
   auto* certify =
@@ -132,7 +135,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run) return run_command(o);
-    if (*md) return list_machine_data(md_assignments);
+    if (*md) return list_machine_data(mo);
     if (*alarms) return list_alarms();
     if (*certify) return certify_command(co);
   } catch (const cutcom::InputError& e) {

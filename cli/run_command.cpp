@@ -253,9 +253,8 @@ int run_command(const RunOptions& o) {
   return ok ? kDone : kAlarm;
 }
 
-int list_machine_data(const std::vector<std::string>& assignments) {
-  cutcom::MachineData md;
-  for (const auto& a : assignments) md.set_assignment(a);
+int list_machine_data(const RunOptions& o) {
+  const cutcom::MachineData md = machine_data(o);
   for (const auto& d : cutcom::machine_data_catalogue())
     std::cout << fmt::format("{:<12} {:<32} = {:<6} {:<8} range {:<30} {} [{}]\n", d.id, d.name,
                              cutcom::machine_datum_value(md, d.id), d.unit, d.range, d.meaning, d.clause);

@@ -361,6 +361,19 @@ TEST(Cli, TheChannelPicksItsDataFromAnArchiveOfSeveral) {
   Result missing = sh_err(kCli + " run " + program + " --tools " + tools + " --channel 3");
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.out.find("no data of channel 3"), std::string::npos) << missing.out;
+  // `cutcom md` lists what an archive and --md give, as `run` takes them.
+  std::string data = write_temp("two-channels-md.ini",
+                                "%_N_CH_TEA_INI\nCHANDATA(1)\n$MC_CUTCOM_CORNER_LIMIT=95\nM17\n"
+                                "CHANDATA(2)\n$MC_CUTCOM_CORNER_LIMIT=85\nM17\n");
+  Result listed = sh(kCli + " md --md-file " + data + " --channel 2 --md MD20240=7");
+  ASSERT_EQ(listed.status, 0) << listed.out;
+  auto row = [&](const std::string& id) {
+    std::size_t at = listed.out.find(id + " ");
+    return at == std::string::npos ? std::string() : listed.out.substr(at, listed.out.find('\n', at) - at);
+  };
+  EXPECT_NE(row("MD20210").find("= 85 "), std::string::npos) << listed.out;
+  EXPECT_NE(row("MD20240").find("= 7 "), std::string::npos) << listed.out;
+  EXPECT_EQ(sh_err(kCli + " md --md-file " + data).status, 2);
 }
 
 TEST(Cli, AToolEdgeGivenOnTheCommandLine) {
