@@ -4,6 +4,7 @@
 // programs and of the fuzz corpus.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -52,7 +53,12 @@ void expect_lexer_reads(const std::string& line, const BlockWords& plain) {
   EXPECT_TRUE(static_cast<const cutcom::BlockWordFields&>(plain) ==
               static_cast<const cutcom::BlockWordFields&>(g.words))
       << line;
-  EXPECT_EQ(g.words.aux_count, 0) << line;
+  EXPECT_EQ(g.words.aux_count, plain.aux_count) << line;
+  for (int k = 0; k < std::min(g.words.aux_count, plain.aux_count); ++k) {
+    const cutcom::AuxFunction &a = plain.aux[static_cast<std::size_t>(k)],
+                              &b = g.words.aux[static_cast<std::size_t>(k)];
+    EXPECT_TRUE(a.address == b.address && a.value == b.value && a.text == b.text) << line << ": action " << k;
+  }
   EXPECT_EQ(g.words.tool_data_count, 0) << line;
   EXPECT_EQ(g.words.tool_names_count, 0) << line;
   EXPECT_FALSE(g.words.contour.has_value()) << line;
@@ -101,9 +107,10 @@ std::string value(std::mt19937_64& random) {
 // covers: NC-LEX-1 NC-LEX-2 NC-LEX-5
 TEST(PlainBlock, GeneratedLinesReadAsTheLexerReadsThem) {
   std::mt19937_64 random(20261129);
-  const std::vector<std::string> letters = {"N", "G", "X", "Y", "Z", "I",  "J",   "K",   "F", "n", "g",  "x", "y",
-                                            "z", "i", "j", "k", "f", "X",  "Y",   "G",   "M", "H", "S",  "T", "D",
-                                            "A", "R", "L", "P", "E", "FA", "X1=", "I1=", "$", "/", "CR="};
+  const std::vector<std::string> letters = {"N",   "G", "X", "Y", "Z",  "I",  "J",   "K",   "F",   "n",   "g", "x",
+                                            "y",   "z", "i", "j", "k",  "f",  "X",   "Y",   "G",   "M",   "H", "S",
+                                            "T",   "D", "A", "R", "L",  "P",  "E",   "FA",  "X1=", "I1=", "$", "/",
+                                            "CR=", "M", "m", "H", "M2", "M6", "M17", "M30", "M1="};
   const std::vector<std::string> between = {" ", " ", "", "\t", "  ", " ;x", "=", "*", "\r", "(", ":", " = "};
   long taken = 0, lines = 0;
   for (int k = 0; k < 200000; ++k) {
@@ -114,6 +121,8 @@ TEST(PlainBlock, GeneratedLinesReadAsTheLexerReadsThem) {
       line += letter;
       if (letter == "G" || letter == "g")
         line += random() % 4 ? std::to_string(random() % 5) : pick(random, {"01", "03", "0", "4", "17", "1.0", " 1"});
+      else if (letter == "M" || letter == "m" || letter == "H")
+        line += random() % 2 ? std::to_string(random() % 40) : value(random);
       else
         line += value(random);
       line += pick(random, between);
@@ -131,18 +140,51 @@ TEST(PlainBlock, GeneratedLinesReadAsTheLexerReadsThem) {
 // covers: NC-LEX-1 NC-LEX-2 NC-LEX-5
 TEST(PlainBlock, TakesTheCommonBlocks) {
   for (const char* line : {"N120 G1 X12.5 Y-3 F800", "G01X1.Y2.", "g2 x4 y0 i1 j0 ; a comment", "X-.5", "",
-                           "; only a comment", "G0 Z+5.000000000", "N999999999999 X999999999999.999999999", "F-0"}) {
+                           "; only a comment", "G0 Z+5.000000000", "N999999999999 X999999999999.999999999", "F-0",
+                           "X5 M8", "G1X1M3H2", "m08 m9 H12 ; three actions", "M999999999999"}) {
     EXPECT_TRUE(expect_same_reading(line)) << line;
   }
   // Left to the lexer: other words, a space before the value, a word twice, a tenth decimal
-  // place, a 13th integer digit, a negative feed, an expression, a label.
-  for (const char* line : {"G4 F2", "X 10", "X1 X2", "X1.1234567891", "X1234567890123", "F-5", "X1+2", "G1 X=5",
-                           "LABEL: X1", "X1 M3", "G1.0 X1", "N1.5", "X1.2.3", "X1_", "X.", "X"}) {
+  // place, a 13th integer digit, a negative feed, an expression, a label, the M functions that end
+  // the program or change the tool, an extended address.
+  for (const char* line : {"G4 F2",
+                           "X 10",
+                           "X1 X2",
+                           "X1.1234567891",
+                           "X1234567890123",
+                           "F-5",
+                           "X1+2",
+                           "G1 X=5",
+                           "LABEL: X1",
+                           "X1 MSG",
+                           "G1.0 X1",
+                           "M2",
+                           "X1 M30",
+                           "M17",
+                           "M06",
+                           "M1=3",
+                           "M1 =3",
+                           "H2.5",
+                           "M-1",
+                           "M 8",
+                           "N1.5",
+                           "X1.2.3",
+                           "X1_",
+                           "X.",
+                           "X"}) {
     BlockWords out, in_place;
     out.reset(1), in_place.reset(1);
     EXPECT_FALSE(cutcom::lexer::read_plain_block(line, out)) << line;
     EXPECT_FALSE(read_in_line_buffer(line, in_place)) << line;
   }
+  // Sixteen actions are taken; a seventeenth is the lexer's error.
+  std::string actions;
+  for (int k = 0; k < 16; ++k) actions += "M" + std::to_string(k + 40) + " ";
+  EXPECT_TRUE(expect_same_reading(actions));
+  BlockWords seventeen;
+  seventeen.reset(1);
+  EXPECT_FALSE(cutcom::lexer::read_plain_block(actions + "H1", seventeen));
+  EXPECT_TRUE(general(actions + "H1").rejected);
   // A line longer than the copy holds is read where it lies in a LineBuffer.
   std::string longer = "G1 X1.5" + std::string(300, ' ') + "Y-2 ; a long gap";
   BlockWords in_place;

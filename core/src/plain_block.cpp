@@ -1,5 +1,6 @@
 // The common block read in one pass: what CAM programs are made of, N, G0…G3, X Y Z, I J K and
-// F with plain decimals ("N120 G1 X12.5 Y-3 F800", "G01X1.Y2.", "g2 x4 y0 i1 j0 ; a comment").
+// F with plain decimals, M and H functions ("N120 G1 X12.5 Y-3 F800", "G01X1.Y2.", "X5 M8",
+// "g2 x4 y0 i1 j0 ; a comment").
 // It fills the block's words exactly as the word lexer does (NC-LEX-*, NC-WORD-*: the same
 // values, the same word count), or leaves the line to it: anything else on the line, a word
 // twice, a negative feed, a number the lexer rejects or reads in its own way (an expression
@@ -31,7 +32,7 @@ enum CharClass : std::uint8_t {
   kAfterValue = 4,      // may follow a value: a space, a comment or the next word's letter
   kNotAfterNumber = 8,  // makes a number the lexer's: a point, sign, '_', '*' or '/'
 };
-enum class Word : std::uint8_t { kNone, kN, kG, kX, kY, kZ, kI, kJ, kK, kF };
+enum class Word : std::uint8_t { kNone, kN, kG, kX, kY, kZ, kI, kJ, kK, kF, kM, kH };
 struct CharTable {
   std::uint8_t cls[256] = {};
   Word word[256] = {};
@@ -45,9 +46,9 @@ constexpr CharTable kChars = [] {
   for (char c : {'.', '+', '-'}) set(c, kValueStart | kNotAfterNumber);
   for (char c : {'_', '*', '/'}) set(c, kNotAfterNumber);
   for (char c = 'A'; c <= 'Z'; ++c) set(c, kAfterValue), set(static_cast<char>(c - 'A' + 'a'), kAfterValue);
-  const std::pair<char, Word> words[] = {{'N', Word::kN}, {'G', Word::kG}, {'X', Word::kX},
-                                         {'Y', Word::kY}, {'Z', Word::kZ}, {'I', Word::kI},
-                                         {'J', Word::kJ}, {'K', Word::kK}, {'F', Word::kF}};
+  const std::pair<char, Word> words[] = {{'N', Word::kN}, {'G', Word::kG}, {'X', Word::kX}, {'Y', Word::kY},
+                                         {'Z', Word::kZ}, {'I', Word::kI}, {'J', Word::kJ}, {'K', Word::kK},
+                                         {'F', Word::kF}, {'M', Word::kM}, {'H', Word::kH}};
   for (auto [c, w] : words)  // NC-LEX-1: letters are case-insensitive
     t.word[static_cast<unsigned char>(c)] = t.word[static_cast<unsigned char>(c - 'A' + 'a')] = w;
   return t;
@@ -130,6 +131,21 @@ bool plain_axis(const char*& p, const char* end, AxisWord& slot) {
   return true;
 }
 
+// An M or H function of digits alone (M8, H2), an action as WordLexer::aux adds it (NC-WORD-2).
+// The M functions that do more than act are the lexer's: M2, M30 and M17 end the program
+// (NC-END-1), M6 changes the tool (TOOL-CHANGE-1); so are M1=3 and the like (an extended
+// address: the '=' after the digits is no word's letter) and a seventeenth action (the lexer's
+// error).
+bool plain_function(const char*& p, char address, BlockWords& out) {
+  std::int64_t value = 0;
+  if (out.aux_count == BlockWords::kMaxAux || !plain_integer(p, value)) return false;
+  if (address == 'M' && (value == 2 || value == 30 || value == 17 || value == 6)) return false;
+  AuxFunction& a = out.aux[static_cast<std::size_t>(out.aux_count++)];
+  a.address = address, a.value = value;
+  a.text.clear();  // the slot's text is stale (BlockWords::reset keeps it)
+  return true;
+}
+
 // [p, end) followed by a '\n' or a zero and at least kPadding readable bytes. The text is read
 // where it lies when it can be: eight digits loaded from a copy just written a byte or a word at
 // a time wait until those stores are written (the CPU forwards no load from several stores).
@@ -170,6 +186,12 @@ bool read_plain(const char* p, const char* end, BlockWords& out) {
         break;
       case Word::kF:  // NC-LEX-5: F is not negative
         if (out.feed || !plain_number(p, end, out.feed.emplace()) || out.feed->sign() < 0) return false;
+        break;
+      case Word::kM:
+        if (!plain_function(p, 'M', out)) return false;
+        break;
+      case Word::kH:
+        if (!plain_function(p, 'H', out)) return false;
         break;
       case Word::kNone:
         return false;

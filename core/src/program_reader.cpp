@@ -291,7 +291,7 @@ void ProgramReader::resolve(Block& b) {
   BlockWords& w = b.words;
   auto fail = [&](const std::string& what) { throw InputError(w.line, 1, what); };
 
-  // A plain block (read_plain_block: N, G0…G3, X Y Z, I J K, F) holds none of the words the
+  // A plain block (read_plain_block: N, G0…G3, X Y Z, I J K, F, M, H) holds none of the words the
   // take_*_words steps read (setting_words.cpp): the reader's hot path leaves them out.
   if (!w.plain) take_data_words(w);
   if (offsets_changed_) select_offset(offset_index_);

@@ -52,7 +52,7 @@ enum GGroup : unsigned {
   kGroupDialect = 1u << 9,      // group 47: G290 G291
 };
 
-// The common block (N, G0…G3, X Y Z, I J K, F with plain decimals) in one pass, into `out` as
+// The common block (N, G0…G3, X Y Z, I J K, F with plain decimals, M and H) in one pass, into `out` as
 // reset: true when the whole line was read so, as WordLexer would read it; false leaves the line
 // to WordLexer (`out` partly written). `in_line_buffer`: the text is a line of a LineBuffer,
 // followed by its '\n' or a zero and the buffer's padding, and is read where it lies; other text

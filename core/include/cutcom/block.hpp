@@ -120,7 +120,7 @@ struct BlockWordFields {
   int line = 0;                    // 1-based source line
   std::uint32_t source = 0;        // NC-PARAM-SUB-3: where in a subprogram (0: the line itself)
   int word_count = 0;              // 0: blank or comment-only line
-  bool plain = false;              // read by read_plain_block: only N, G0…G3, X Y Z, I J K, F
+  bool plain = false;              // read by read_plain_block: only N, G0…G3, X Y Z, I J K, F, M, H
   Opt<std::int64_t> number;        // N number
   std::array<AxisWord, 3> axis;    // X Y Z
   std::array<AxisWord, 3> centre;  // I J K
