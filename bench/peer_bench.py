@@ -203,13 +203,13 @@ def timed(cmd):
 
 
 def stage_times(cmd, runs):
-    """Medians over `runs` runs of each stage thread's processor time and of the elapsed time
-    (`cutcom run --stage-times`, on standard error): which stage sets the pace."""
+    """Medians over `runs` runs of each thread's processor time and of the elapsed time
+    (`cutcom run --stage-times`, on standard error): which thread sets the pace."""
     seen = {}
     for _ in range(runs):
         err = subprocess.run([*cmd, "--stage-times"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                              check=True).stderr
-        for name, seconds in re.findall(r"(reader|engine|writer|elapsed) (\d+\.\d+) s", err):
+        for name, seconds in re.findall(r"(reader\+engine|writer|elapsed) (\d+\.\d+) s", err):
             seen.setdefault(name, []).append(float(seconds))
     return {name: statistics.median(v) for name, v in seen.items()}
 
@@ -327,7 +327,7 @@ def main():
                      f"JSON {row['ratio_json']:.1f}x)" if row["rs274"] else "-")
             print(f"{label:26} {blocks:>8} blocks  cutcom {row['cutcom']:.3f} s (json {row['json']:.3f} s, "
                   f"{mb(row['peak_kb'])})  rs274 {row['rs274'] or 0:.3f} s  {ratio}  paths agree: {agree}")
-            print(f"{'':26} processor time by stage (text): " +
+            print(f"{'':26} processor time by thread (text): " +
                   ", ".join(f"{k} {v:.3f} s" for k, v in row["stages"].items()))
     memory = []
     for n in [int(v) for v in a.memory_blocks.split(",") if v]:
@@ -495,10 +495,10 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, start, a
         f"{os.cpu_count()} cores. The ratios are the median of the run-by-run ratios (rs274 and cutcom",
         "run back to back), which the machine's drift moves less than a ratio of medians; beside the",
         "text ratio, the middle half of the run-by-run ratios (this machine is shared: its speed moves).",
-        "cutcom reads, compensates and writes on three threads, and every block crosses from one core to",
-        "the other; on a virtual machine what a crossing costs depends on where the hypervisor puts the",
-        "two cores (perf, 200,000 blocks of lines+arcs: the reader's thread took 220 M cycles in one hour,",
-        "45 M in another, the same binary), which moves whole-process times by up to a third.",
+        "cutcom reads and compensates on one thread and writes on a second: a block (2.7 KB) stays on",
+        "the core that read it, and only the path's elements cross to the writer's (a reader on a third",
+        "thread of its own cost more in blocks crossing between the cores than it saved: 20 to 27 % of",
+        "the whole process's time on these contours).",
         "cutcom: `cutcom run FILE --md MD20230=0` (fast engine, text; JSON in its own column), "
         f"{build_kind(a.cutcom)}.",
         "LinuxCNC: `rs274 -g FILE` (standalone interpreter, cutter compensation `G42.1 D<diameter>`).",
@@ -518,20 +518,20 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, start, a
         lines.append(f"| {r['label']} | {r['blocks']} | {r['cutcom']:.3f} | {r['json']:.3f} | {peer} | {ratio} | "
                      f"{ratio_json} | {mb(r['peak_kb'])} | {r['agree']} |")
     lines += ["", f"A program of one block takes {start * 1000:.1f} ms: the process's start (the dynamic loader, "
-              "the allocator), its three threads and its end, in every cutcom time above. cutcom is linked "
+              "the allocator), its writer's thread and its end, in every cutcom time above. cutcom is linked "
               "with mimalloc: tcmalloc, with which ref runs as fast, zeroed a 2 MB page map at every start, "
               "3 ms more."]
     lines += ["", "![whole-process times](performance-peer.svg)", "",
               "## Where the time goes", "",
-              "The processor time of each stage's thread (`cutcom run --stage-times`, medians of "
-              f"{a.runs} runs; text, then JSON). The stages overlap: a run lasts about as long as its "
-              "slowest thread (on two cores the other two share the other core).", "",
-              "| contour | reader (s) | engine (s) | writer (s) | elapsed (s) | JSON: reader | engine | writer "
-              "| elapsed | slowest |", "|---|---|---|---|---|---|---|---|---|---|"]
+              "The processor time of each thread (`cutcom run --stage-times`, medians of "
+              f"{a.runs} runs; text, then JSON): the reader and the engine on one, the writer on the other. "
+              "The two overlap: a run lasts about as long as its slower thread.", "",
+              "| contour | reader+engine (s) | writer (s) | elapsed (s) | JSON: reader+engine | writer "
+              "| elapsed | slower |", "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         st, sj = r["stages"], r["stages_json"]
-        cells = [f"{d.get(k, 0):.3f}" for d in (st, sj) for k in ("reader", "engine", "writer", "elapsed")]
-        slowest = max(("reader", "engine", "writer"), key=lambda k: st.get(k, 0))
+        cells = [f"{d.get(k, 0):.3f}" for d in (st, sj) for k in ("reader+engine", "writer", "elapsed")]
+        slowest = max(("reader+engine", "writer"), key=lambda k: st.get(k, 0))
         lines.append(f"| {r['label']} | " + " | ".join(cells) + f" | {slowest} |")
     lines += ["",
               "## Memory", "",
@@ -539,9 +539,7 @@ def write_docs(rows, memory, ref_memory, pocket, engines, instructions, start, a
               "(`cutcom run`, lines+arcs with CDON). The SVG picture keeps every element up to "
               "20,000 of them, then polylines within a bound it states (at most 200,000 points). "
               "JSON keeps its lists after the path (here every decision, `--trace`) in memory up to "
-              "1 MB each, then in a temporary file. The reader runs up to 4 batches of 256 blocks "
-              "ahead of the engine (about 2.8 MB): a program shorter than that never fills them, so "
-              "its peak is a few MB lower.", "",
+              "1 MB each, then in a temporary file.", "",
               "| blocks | peak memory, text output | peak memory, JSON with `--trace` | peak memory, SVG picture "
               "| SVG time (s) |", "|---|---|---|---|---|"]
     lines += [f"| {n} | {mb(kb)} | {mb(json_kb)} | {mb(svg_kb)} | {svg_s:.2f} |"

@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
                   "\"text\"), e.g. --sysvar '$A_IN[1]=1' (repeatable)");
   run->add_flag("--trace", o.trace, "include the decision trace (text and json)");
   run->add_flag("--stage-times", o.stage_times,
-                "print on standard error the processor time of each stage's thread (reader, engine, writer) and "
-                "the run's elapsed time");
+                "print on standard error the processor time of each thread (the reader and the engine share one, the "
+                "writer has its own) and the run's elapsed time");
   run->add_option("--tools", o.tool_files,
                   "tool-offset archive ($TC_DPn[t,d]=..., $TC_TP2[t]=\"NAME\" lines, TO_INI.INI style; repeatable)");
   run->add_option("--tool", o.tool_edges,

@@ -17,7 +17,6 @@
 #include "cutcom/background_sink.hpp"
 #include "cutcom/fast/engine.hpp"
 #include "cutcom/output.hpp"
-#include "cutcom/read_ahead.hpp"
 #include "cutcom/ref/engine.hpp"
 #include "cutcom/thread_time.hpp"
 
@@ -57,23 +56,26 @@ void hint_after(const std::vector<int>& alarms, const RunOptions& o) {
            "the program\n";
 }
 
-// --stage-times: the processor time of each stage's thread (negative: not measured).
+// --stage-times: the processor time of each thread (negative: not measured).
 struct StageTimes {
-  double reader = -1, engine = -1, writer = -1;
+  double engine = -1, writer = -1;
 };
 
-// The reader runs ahead on a thread of its own (ReadAhead), the engine on this one.
-bool run_engine(const std::string& engine, cutcom::BlockSource& blocks, const cutcom::MachineData& md,
+// The reader and the engine share this thread: the reader hands the engine each block where it
+// wrote it. (A reader on a thread of its own ran slower: every block, 2.7 KB, crossed from one
+// core to the other, and that cost more than the reading it moved off this thread; issue
+// "Performance".)
+bool run_engine(const std::string& engine, cutcom::ProgramReader& reader, const cutcom::MachineData& md,
                 cutcom::PathSink& out, StageTimes& times) {
   double started = cutcom::thread_cpu_seconds();
-  bool ok = engine == "ref" ? cutcom::ref::run(blocks, md, out) : cutcom::fast::run(blocks, md, out);
+  bool ok = engine == "ref" ? cutcom::ref::run(reader, md, out) : cutcom::fast::run(reader, md, out);
   times.engine = cutcom::thread_cpu_seconds() - started;
   return ok;
 }
 
 void print_stage_times(const StageTimes& t, double elapsed) {
-  std::string line = "cutcom: processor time by stage:";
-  for (auto [name, seconds] : {std::pair{"reader", t.reader}, {"engine", t.engine}, {"writer", t.writer}})
+  std::string line = "cutcom: processor time by thread:";
+  for (auto [name, seconds] : {std::pair{"reader+engine", t.engine}, {"writer", t.writer}})
     if (seconds >= 0) line += fmt::format(" {} {:.3f} s,", name, seconds);
   std::cerr << line << fmt::format(" elapsed {:.3f} s\n", elapsed);
 }
@@ -143,18 +145,17 @@ bool run_to_the_end(Writer& writer, cutcom::BackgroundSink& background, Run run,
   return ok;
 }
 
-// The text and JSON writers: formatted on a second thread while the engine runs.
+// The text and JSON writers: formatted on a second thread while the reader and the engine run.
 template <class Writer>
 bool run_writing(Writer& writer, cutcom::ProgramReader& reader, const cutcom::MachineData& md, const RunOptions& o,
                  std::ostream& out, StageTimes& times) {
-  cutcom::ReadAhead blocks(reader);
   AlarmWatch watch(writer);
   cutcom::BackgroundSink background(watch, o.trace);
-  background.set_upstream_sources([&blocks](std::uint32_t id) -> const std::string& { return blocks.source_text(id); });
+  background.set_upstream_sources([&reader](std::uint32_t id) -> const std::string& { return reader.source_text(id); });
   writer.set_sources(background.sources());
   bool ok = run_to_the_end(
-      writer, background, [&] { return run_engine(o.engine, blocks, md, background, times); }, o, out);
-  times.reader = blocks.reader_cpu_seconds(), times.writer = background.writer_cpu_seconds();
+      writer, background, [&] { return run_engine(o.engine, reader, md, background, times); }, o, out);
+  times.writer = background.writer_cpu_seconds();
   hint_after(watch.numbers, o);  // the writer's thread has ended: its numbers are all there
   return ok;
 }
@@ -226,10 +227,8 @@ int run_command(const RunOptions& o) {
     std::ifstream second(path);
     cutcom::ProgramReader reader(second, md.initial_state());
     control.into(reader);
-    cutcom::ReadAhead blocks(reader);
     AlarmWatch watch(picture);
-    ok = run_engine(o.engine, blocks, md, watch, times);
-    times.reader = blocks.reader_cpu_seconds();
+    ok = run_engine(o.engine, reader, md, watch, times);
     hint_after(watch.numbers, o);
     std::string title = fmt::format("cutcom — {} — engine {}", o.program == "-" ? "stdin" : o.program, o.engine);
     picture.write(*out, title);

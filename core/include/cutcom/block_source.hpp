@@ -1,5 +1,5 @@
-// What an engine reads its blocks from: the reader itself, or the reader running ahead on a
-// thread of its own (ReadAhead). Both engines take one; neither knows which it has.
+// What an engine reads its blocks from: the reader (ProgramReader), or in a test a source of its
+// own. Both engines take one; neither knows which it has.
 #pragma once
 
 #include "cutcom/block.hpp"

@@ -35,8 +35,7 @@ class Engine {
   std::unique_ptr<State> state_;
 };
 
-// Reads the whole program from `blocks` (the reader, or the reader on its own thread: ReadAhead)
-// through the engine. Returns false if an alarm stopped it.
+// Reads the whole program from `blocks` (the reader) through the engine. Returns false if an alarm stopped it.
 bool run(BlockSource& blocks, const MachineData& md, PathSink& sink);
 
 }  // namespace cutcom::fast
