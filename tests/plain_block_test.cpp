@@ -222,7 +222,8 @@ TEST(PlainBlock, TheInterpreterReadsPlainLinesAsTheLexerDoes) {
   std::string body = "FAST X1 Y2\n/G1 X5\n/1 G1 X6\nX=R1 Y2\n";  // a macro, skip levels, a parameter
   int lines = 4;
   for (int k = 0; k < 300; ++k) {  // plain lines of the generator's kind, and now and then others
-    std::string line = pick(random, {"G1 X", "g2 x", "N5 G0 Y", "X", "G01X", "Z+"}) + value(random);
+    std::string line = pick(random, {"G1 X", "g2 x", "N5 G0 Y", "X", "G01X", "Z+"}) + value(random) +
+                       pick(random, {"", "", "", " M8", " M9 H3", "m07"});
     BlockWords probe;
     probe.reset(1);
     if (!cutcom::lexer::read_plain_block(line, probe)) continue;
@@ -257,6 +258,11 @@ TEST(PlainBlock, TheInterpreterReadsPlainLinesAsTheLexerDoes) {
     ASSERT_TRUE(static_cast<const cutcom::BlockWordFields&>(words) ==
                 static_cast<const cutcom::BlockWordFields&>(lexed))
         << "line " << b_line << ": " << b_text;
+    ASSERT_EQ(words.aux_count, lexed.aux_count) << "line " << b_line << ": " << b_text;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(lexed.aux_count); ++k)
+      ASSERT_TRUE(words.aux[k].address == lexed.aux[k].address && words.aux[k].value == lexed.aux[k].value &&
+                  words.aux[k].text == lexed.aux[k].text)
+          << "line " << b_line << ": " << b_text;
   }
   EXPECT_GT(plain, lines);       // in both passes of the loop (the second from the line cache)
   EXPECT_GE(blocks - plain, 2);  // and X=R1 given as text in each
