@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <tuple>
 
 #include "cutcom/boundary_rules.hpp"
 
@@ -301,6 +302,19 @@ bool lines_ascend(const std::vector<PathElement>& path) {
 bool same_decision(const Decision& r, const Decision& f) {
   return r.clause == f.clause && r.line == f.line && r.branch == f.branch;
 }
+// The line whose block began a look-ahead still searching after the first `end` decisions
+// (TRC-LOOK-1 `too-short` with no intersection found, no blocks skipped and no deselection's
+// strategy taken since: TRC-LOOK-2/3, TRC-EDGE-1).
+std::optional<int> searching_at(const std::vector<Decision>& d, std::size_t end) {
+  std::optional<int> began;
+  for (std::size_t k = 0; k < end && k < d.size(); ++k) {
+    if (d[k].clause == "TRC-LOOK-1" && d[k].branch == "too-short" && !began) began = d[k].line;
+    if ((d[k].clause == "TRC-LOOK-2" && d[k].branch == "intersection") || d[k].clause == "TRC-LOOK-3" ||
+        d[k].clause == "TRC-EDGE-1")
+      began.reset();
+  }
+  return began;
+}
 }  // namespace
 
 Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& tol) {
@@ -396,6 +410,24 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
                                            d.branch, d.margin_exact);
           if (!nested) return knife;
           parted_upto = *nested, grew = true;
+        }
+        if (grew) skip(ref.decisions, ir), skip(fast.decisions, jf);
+      }
+      // A look-ahead still searching at the window's end in either run is the knife edge's to its
+      // end: its search examines up to MD20240 blocks after the one that began it, and a
+      // deselection during it takes the strategy of TRC-EDGE-1 (campaign 20261320, case 276013: a
+      // collision check's cut inside the window ended fast's search, ref's went on into the
+      // deselection block).
+      for (bool grew = true; grew;) {
+        grew = false;
+        for (auto [run, end, engine] : {std::tuple{&ref, ir, "ref"}, std::tuple{&fast, jf, "fast"}}) {
+          std::optional<int> began = searching_at(run->decisions, end);
+          if (!began) continue;
+          std::optional<int> until = reach(0, *began);
+          if (until && *until <= parted_upto) continue;
+          knife.explanation += fmt::format("; {}'s look-ahead from line {} still searching", engine, *began);
+          if (!until) return knife;
+          parted_upto = *until, grew = true;
         }
         if (grew) skip(ref.decisions, ir), skip(fast.decisions, jf);
       }

@@ -501,6 +501,51 @@ TEST(Comparison, AKnifeEdgeDoesNotHideWhatFollowsIt) {
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kKnifeEdge);
 }
 
+// covers: PROP-DIFF-2 TRC-LOOK-1 TRC-LOOK-2
+TEST(Comparison, ALookAheadSearchingAtTheWindowsEndIsTheKnifeEdges) {
+  // Campaign 20261320, case 276013, in small: the runs part at line 4 in the band (window 2: lines
+  // 5 and 6 are the knife edge's). In ref a look-ahead begun at line 5 is still searching at line
+  // 6; in fast a cut ended it. At line 7 both deselect, then ref takes the retraction's strategy
+  // and fast the plain retraction: the search's, so the knife edge's, not a divergence.
+  auto made = [](std::string_view clause, std::string_view branch, int line, double margin = 1,
+                 const char* exact = "1") {
+    Decision d = decision(clause, branch, margin, exact);
+    d.line = line;
+    return d;
+  };
+  auto fast_made = [](std::string_view clause, std::string_view branch, int line, double margin = 1) {
+    Decision d = decision(clause, branch, margin);
+    d.line = line;
+    return d;
+  };
+  Tolerance tol = tolerance();
+  tol.window = 2;
+  RunResult ref, fast;
+  ref.decisions = {made("TRC-KONT-1", "in-front", 4, 0, "0"),
+                   made("TRC-LOOK-1", "too-short", 5, -1, "-1"),
+                   made("TRC-LOOK-2", "none", 6, -2, "-2"),
+                   made("TRC-DESEL-1", "deselected", 7),
+                   made("TRC-EDGE-1", "G461", 7),
+                   made("TRC-ELEMENT-1", "fits", 9)};
+  fast.decisions = {fast_made("TRC-KONT-1", "behind", 4, -1e-15), fast_made("TRC-LOOK-1", "too-short", 5, -1),
+                    fast_made("TRC-CD-3", "cut", 6, 4),           fast_made("TRC-LOOK-3", "skipped", 5),
+                    fast_made("TRC-DESEL-1", "deselected", 7),    fast_made("TRC-RETR-NORM-1", "line", 7),
+                    fast_made("TRC-ELEMENT-1", "fits", 9)};
+  Verdict v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_NE(v.explanation.find("ref's look-ahead from line 5 still searching"), std::string::npos) << v.explanation;
+  // Its blocks reach two plane blocks past line 5 (lines 6 and 7): the runs are compared again
+  // after them, from line 9, where a parting is a divergence.
+  fast.decisions.back().branch = "vanishes";
+  v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << v.explanation;
+  EXPECT_NE(v.explanation.find("line 9"), std::string::npos) << v.explanation;
+  // Without the search open (an intersection found at line 6), the deselection is compared.
+  fast.decisions.back().branch = "fits";
+  ref.decisions[2].branch = "intersection";
+  EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
+}
+
 // covers: PROP-DIFF-2
 TEST(Comparison, AKnifeEdgeInsideAnotherOwnsTheBlocksAfterIt) {
   // Campaign 20261225, case 399951, in small: the runs part at line 5 in the band (window 1: line
@@ -535,11 +580,20 @@ TEST(Comparison, AKnifeEdgeInsideAnotherOwnsTheBlocksAfterIt) {
   fast.decisions[6].branch = "vanishes", fast.decisions[6].margin = 0;
   EXPECT_EQ(compare(ref, fast, tol).kind, Verdict::Kind::kDiverge);
   fast.decisions[6] = made("TRC-ELEMENT-1", "fits", 10, 0.5, nullptr);
-  // Outside the band, the look-ahead at line 6 is no knife edge: the parting at line 8 is unexplained.
+  // Outside the band, the look-ahead at line 6 is no knife edge of its own; but fast's search,
+  // begun there and still open at the window's end, is the first knife edge's until it has
+  // examined the next plane block (line 8): the parting at line 8 is the knife edge's, one at
+  // line 10 (after the runs met again at line 9) is not.
   ref.decisions[1] = made("TRC-LOOK-1", "reaches", 6, 0.25, "0.25");
   v = compare(ref, fast, tol);
+  EXPECT_EQ(v.kind, Verdict::Kind::kKnifeEdge) << v.explanation;
+  EXPECT_EQ(v.explanation.find("in its band too"), std::string::npos) << v.explanation;
+  EXPECT_NE(v.explanation.find("fast's look-ahead from line 6 still searching"), std::string::npos) << v.explanation;
+  fast.decisions[6].branch = "vanishes", fast.decisions[6].margin = 0;
+  v = compare(ref, fast, tol);
   EXPECT_EQ(v.kind, Verdict::Kind::kDiverge) << v.explanation;
-  EXPECT_NE(v.explanation.find("unexplained"), std::string::npos) << v.explanation;
+  EXPECT_NE(v.explanation.find("again at line 9"), std::string::npos) << v.explanation;
+  fast.decisions[6] = made("TRC-ELEMENT-1", "fits", 10, 0.5, nullptr);
   // Nor is a decision in the band that fast took the same way.
   ref.decisions[1] = made("TRC-LOOK-1", "reaches", 6, 0, "0");
   fast.decisions[1] = made("TRC-LOOK-1", "reaches", 6, 1e-17, nullptr);
