@@ -140,6 +140,43 @@ std::pair<double, double> tangent(const PathElement& e, const PlaneAxes& ax, boo
 }
 }  // namespace
 
+namespace {
+// The SAR block's elements (ref's path) meet the programmed contour next to them at corners the
+// program does not show: tangent by construction (SAR-POINTS-1/2), but an equidistant extended
+// past its block may meet them at any angle (campaign 20261320, case 366861: a side change's
+// first block, too short, extended by G462 to a retraction's lead at 178.5 degrees).
+void count_contour_joints(Conditioning& c, const std::vector<Block>& program, const Block& sar, const RunResult& ref,
+                          PlaneAxes ax) {
+  const PathElement *first = nullptr, *last = nullptr;
+  for (const PathElement& e : ref.path) {
+    auto [ta, tb] = tangent(e, ax, false);
+    if (e.origin.line != sar.words.line || std::hypot(ta, tb) == 0) continue;
+    first = first ? first : &e, last = &e;
+  }
+  if (!first) return;
+  // An approach meets the contour after it, a retraction the contour before it (a block further
+  // away, past moves without compensation, makes no corner with it).
+  SarContour kind = *sar.words.sar_contour;
+  bool approach = kind == SarContour::kG147 || kind == SarContour::kG247 || kind == SarContour::kG347;
+  const Block *before = nullptr, *after = nullptr;
+  for (const Block& b : program) {
+    if (!b.moves_in_plane() || b.is_sar_block() || b.state.plane != sar.state.plane) continue;
+    if (b.words.line < sar.words.line && !approach) before = &b;
+    if (b.words.line > sar.words.line && approach && !after) after = &b;
+  }
+  if (before) {
+    ProgrammedTangents t = programmed_tangents(*before, ax);
+    auto [ta, tb] = tangent(*first, ax, false);
+    count_corner(c, t.ua, t.ub, ta, tb, before->is_arc() || first->type == ElementType::kArc);
+  }
+  if (after) {
+    ProgrammedTangents t = programmed_tangents(*after, ax);
+    auto [ua, ub] = tangent(*last, ax, true);
+    count_corner(c, ua, ub, t.ta, t.tb, after->is_arc() || last->type == ElementType::kArc);
+  }
+}
+}  // namespace
+
 void add_generated(Conditioning& c, const std::vector<Block>& program, const RunResult& ref) {
   for (const PathElement& e : ref.path)
     for (const PathPoint* p : {&e.start, &e.end, &e.center})
@@ -157,6 +194,7 @@ void add_generated(Conditioning& c, const std::vector<Block>& program, const Run
       if (e.origin.sar == SarMove::kLead && std::hypot(ta, tb) > 0 && !lead) lead = &e, lead_after = first != nullptr;
       if (e.origin.sar == SarMove::kElement) first = first ? first : &e, last = &e;
     }
+    count_contour_joints(c, program, b, ref, ax);
     if (!lead || !first) continue;
     auto [da, db] = tangent(*lead, ax, false);
     auto [ta, tb] = lead_after ? tangent(*last, ax, true) : tangent(*first, ax, false);
