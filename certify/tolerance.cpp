@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "compare.hpp"
+#include "cutcom/sar_sequence.hpp"
 
 namespace cutcom::props {
 
@@ -156,8 +157,7 @@ void count_contour_joints(Conditioning& c, const std::vector<Block>& program, co
   if (!first) return;
   // An approach meets the contour after it, a retraction the contour before it (a block further
   // away, past moves without compensation, makes no corner with it).
-  SarContour kind = *sar.words.sar_contour;
-  bool approach = kind == SarContour::kG147 || kind == SarContour::kG247 || kind == SarContour::kG347;
+  bool approach = SarSequence::is_approach(sar);
   const Block *before = nullptr, *after = nullptr;
   for (const Block& b : program) {
     if (!b.moves_in_plane() || b.is_sar_block() || b.state.plane != sar.state.plane) continue;

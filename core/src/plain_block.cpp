@@ -139,7 +139,7 @@ bool plain_axis(const char*& p, const char* end, AxisWord& slot) {
 bool plain_function(const char*& p, char address, BlockWords& out) {
   std::int64_t value = 0;
   if (out.aux_count == BlockWords::kMaxAux || !plain_integer(p, value)) return false;
-  if (address == 'M' && (value == 2 || value == 30 || value == 17 || value == 6)) return false;
+  if (address == 'M' && (ends_program(value) || changes_tool(value))) return false;
   AuxFunction& a = out.aux[static_cast<std::size_t>(out.aux_count++)];
   a.address = address, a.value = value;
   a.text.clear();  // the slot's text is stale (BlockWords::reset keeps it)

@@ -52,6 +52,10 @@ enum GGroup : unsigned {
   kGroupDialect = 1u << 9,      // group 47: G290 G291
 };
 
+// The M functions that do more than act (the lexer's aux() and the one-pass reading ask both).
+inline bool ends_program(std::int64_t m) { return m == 2 || m == 30 || m == 17; }  // NC-END-1
+inline bool changes_tool(std::int64_t m) { return m == 6; }                        // TOOL-CHANGE-1
+
 // The common block (N, G0…G3, X Y Z, I J K, F with plain decimals, M and H) in one pass, into `out` as
 // reset: true when the whole line was read so, as WordLexer would read it; false leaves the line
 // to WordLexer (`out` partly written). `in_line_buffer`: the text is a line of a LineBuffer,

@@ -21,8 +21,8 @@ void WordLexer::aux(char address, std::size_t at) {
   a.address = address, a.value = v;
   add_action(std::move(a), at);
   if (address != 'M') return;
-  if (v == 2 || v == 30 || v == 17) out_.program_end = true;  // NC-END-1
-  if (v == 6) out_.tool_change = true;                        // TOOL-CHANGE-1
+  if (ends_program(v)) out_.program_end = true;  // NC-END-1
+  if (changes_tool(v)) out_.tool_change = true;  // TOOL-CHANGE-1
 }
 
 // After a letter: digits, blanks and '=' (M1=3, S1=1000): an address with an extension.
