@@ -389,9 +389,14 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       parted_upto = std::max(parted_upto, *upto);
       const std::size_t ir_parted = ir, jf_parted = jf;
       skip(ref.decisions, ir), skip(fast.decisions, jf);
-      // A parting among those blocks' decisions that lies in ref's band too (the same clause and
-      // line, another branch in fast) is a knife edge of its own, and the blocks after it are its
-      // (campaign 20261225, case 399951: a touching crossing two blocks after a KONT knife edge).
+      // The knife edge's blocks grow, and each growth is looked at again for both causes:
+      // - a parting among those blocks' decisions that lies in ref's band too (the same clause and
+      //   line, another branch in fast) is a knife edge of its own, and the blocks after it are its
+      //   (campaign 20261225, case 399951: a touching crossing two blocks after a KONT knife edge);
+      // - a look-ahead still searching at their end in either run is the knife edge's to its end:
+      //   its search examines up to MD20240 blocks after the one that began it, and a deselection
+      //   during it takes the strategy of TRC-EDGE-1 (campaign 20261320, case 276013: a collision
+      //   check's cut inside the window ended fast's search, ref's went on into the deselection).
       for (bool grew = true; grew;) {
         grew = false;
         for (std::size_t k = ir_parted + 1; k < ir; ++k) {
@@ -411,15 +416,6 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
           if (!nested) return knife;
           parted_upto = *nested, grew = true;
         }
-        if (grew) skip(ref.decisions, ir), skip(fast.decisions, jf);
-      }
-      // A look-ahead still searching at the window's end in either run is the knife edge's to its
-      // end: its search examines up to MD20240 blocks after the one that began it, and a
-      // deselection during it takes the strategy of TRC-EDGE-1 (campaign 20261320, case 276013: a
-      // collision check's cut inside the window ended fast's search, ref's went on into the
-      // deselection block).
-      for (bool grew = true; grew;) {
-        grew = false;
         for (auto [run, end, engine] : {std::tuple{&ref, ir, "ref"}, std::tuple{&fast, jf, "fast"}}) {
           std::optional<int> began = searching_at(run->decisions, end);
           if (!began) continue;

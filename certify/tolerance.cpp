@@ -148,6 +148,8 @@ namespace {
 // first block, too short, extended by G462 to a retraction's lead at 178.5 degrees).
 void count_contour_joints(Conditioning& c, const std::vector<Block>& program, const Block& sar, const RunResult& ref,
                           PlaneAxes ax) {
+  // Every element of the block that moves in the plane, the lead included: the contour may meet
+  // the lead (case 366861 does), so add_generated's SAR element alone would miss it.
   const PathElement *first = nullptr, *last = nullptr;
   for (const PathElement& e : ref.path) {
     auto [ta, tb] = tangent(e, ax, false);
