@@ -69,9 +69,8 @@ struct BlockFacts {
   // A SAR line's direction: the tangent it was built on, not its rounded points' difference, which
   // on a short element is off by far more than a rounding (TRC-LOOK-2: campaign 20261324, case
   // 33523, a 0.001 mm approach and the retraction on one tangent, which ref finds on one line).
-  bool has_unit = false;
+  std::int8_t unit_abscissa = -1;  // the abscissa of the plane `unit` is in; -1: no unit, the points'
   Vec2 unit;
-  PlaneAxes unit_axes{0, 1, 2};
   // The corner filter's scale over size in the plane `scale_axes` (compensation.cpp), once asked
   // for (-1: not yet). It goes with the copies (the open element's is its slot's); reset where
   // the points change.
@@ -140,7 +139,7 @@ struct BlockCopy : BlockFacts {
     c.moves = in_plane;
     c.exact = b.sar.move == SarMove::kNone;
     c.seq = 0, c.actions_done = false, c.tangent_after = c.tangent_before = false;
-    c.has_unit = false;
+    c.unit_abscissa = -1;
     c.scale_over_size = -1;
   }
 };
@@ -177,11 +176,9 @@ inline bool in_exact_range(Int128 v) {
 
 // The element of a block in the plane `a`.
 inline Element element_in(const BlockCopy& c, PlaneAxes a) {
-  if (!c.arc) {
-    Element l = Element::line(ab_in(c.start, a), ab_in(c.end, a));
-    if (c.has_unit && c.unit_axes.abscissa == a.abscissa) l.unit = c.unit;
-    return l;
-  }
+  if (!c.arc)
+    return c.unit_abscissa == a.abscissa ? Element::line_along(ab_in(c.start, a), ab_in(c.end, a), c.unit)
+                                         : Element::line(ab_in(c.start, a), ab_in(c.end, a));
   if (c.has_centre) return Element::circle(ab_in(c.start, a), ab_in(c.end, a), ab_in(c.centre, a), c.sense);
   // ARC-CR-1: q = CR^2 / chord^2 - 1/4 and the chord from the programmed integers, rounded once:
   // near a half circle the doubles' q cancels to a few ulps of 1/4, and on a short chord the
@@ -224,7 +221,7 @@ struct PlaneOverride {
     if (start || end || circle)
       c.exact = false, c.scale_over_size = -1;  // `delta` and `to_centre` are the decimals' no more
     c.tangent_after = tangent_after, c.tangent_before = tangent_before;
-    c.has_unit = line_unit, c.unit = unit, c.unit_axes = a;
+    c.unit = unit, c.unit_abscissa = static_cast<std::int8_t>(line_unit ? a.abscissa : -1);
   }
 };
 

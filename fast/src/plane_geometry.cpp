@@ -24,6 +24,14 @@ Element Element::line(Vec2 s, Vec2 e) {
   return l;
 }
 
+Element Element::line_along(Vec2 s, Vec2 e, Vec2 unit) {
+  Element l;
+  l.start = s, l.end = e;
+  l.length = norm(e - s);
+  l.unit = unit;
+  return l;
+}
+
 Element Element::circle(Vec2 s, Vec2 e, Vec2 c, int sense) {
   Element a;
   a.arc = true;

@@ -36,6 +36,8 @@ struct Element {
   bool full = false;  // arcs: start = end
 
   static Element line(Vec2 s, Vec2 e);
+  // A line whose direction is known better than its points' difference (a SAR line: its tangent).
+  static Element line_along(Vec2 s, Vec2 e, Vec2 unit);
   static Element circle(Vec2 s, Vec2 e, Vec2 programmed_centre, int sense);
   // ARC-CR-1; `q` = CR^2 / chord^2 - 1/4 and `chord` = e - s where the caller has them from exact
   // values (NaN: from the doubles).
