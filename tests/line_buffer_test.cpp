@@ -50,4 +50,33 @@ TEST(LineBuffer, LinesAreThoseOfGetline) {
   }
 }
 
+// A line given back (Interpreter::next_plain leaves a line it does not take to next()) is the
+// next line again, wherever it lies in the buffer.
+// covers: NC-LEX-1
+TEST(LineBuffer, ALineGivenBackComesAgain) {
+  std::mt19937_64 random(20261204);
+  for (int k = 0; k < 200; ++k) {
+    std::string text;
+    int lines = static_cast<int>(random() % 40);
+    for (int n = 0; n < lines; ++n) {
+      std::size_t length = random() % 10 == 0 ? random() % 100000 : random() % 30;
+      for (std::size_t c = 0; c < length; ++c) text += static_cast<char>('A' + random() % 26);
+      if (n + 1 < lines || random() % 2) text += '\n';
+    }
+    std::istringstream in(text);
+    cutcom::LineBuffer buffer;
+    std::vector<std::string> lines_read;
+    for (std::string_view line; buffer.next(in, line);) {
+      if (random() % 3 == 0) {  // given back, then read again: the same line
+        std::string was(line);
+        buffer.give_back(line);
+        ASSERT_TRUE(buffer.next(in, line)) << "text " << k;
+        ASSERT_EQ(std::string(line), was) << "text " << k;
+      }
+      lines_read.emplace_back(line);
+    }
+    ASSERT_EQ(lines_read, by_getline(text)) << "text " << k;
+  }
+}
+
 }  // namespace

@@ -224,5 +224,58 @@ TEST(Reader, BlockWithoutAxesUnderG2IsNoCircle) {
   EXPECT_THROW(read("G2 X0 Y-10 I-10 J0\nZ-5\n"), InputError);  // an axis but no circle data
 }
 
+// A stream that reads forward only, as a pipe: it cannot be sought.
+class ForwardOnly : public std::streambuf {
+ public:
+  explicit ForwardOnly(std::string text) : text_(std::move(text)) {
+    setg(text_.data(), text_.data(), text_.data() + text_.size());
+  }
+
+ protected:
+  pos_type seekoff(off_type, std::ios_base::seekdir, std::ios_base::openmode) override { return pos_type(-1); }
+  pos_type seekpos(pos_type, std::ios_base::openmode) override { return pos_type(-1); }
+
+ private:
+  std::string text_;
+};
+
+// The reader's path for a plain line of the main program (Interpreter::next_plain) gives every
+// other line back to the general one: a line that starts with a blank, an empty line, an
+// assignment, a skip block, a unit's header (which ends the main program's text); in the file
+// and from a stream that cannot be sought, the blocks and their lines are the same.
+// covers: NC-LEX-1 NC-PARAM-SUB-8
+TEST(Reader, ThePlainLinesPathGivesBackEveryOtherLine) {
+  const std::string text =
+      "N10 G0 X0 Y0\n"
+      "N20 G1 X1 Y1 F100\n"
+      "\n"
+      "  N30 X2 Y2\n"
+      "N40 X3 Y3\n"
+      "N50 R1=5\n"
+      "N60 X=R1 Y4\n"
+      "/N70 X6 Y6\n"
+      "N80 X7 Y7 ; a comment\n"
+      "\tN90 X8 Y8\n"
+      "N100 X9 Y9\n"
+      "%_N_SUB_SPF\n"
+      "N10 X99 Y99\n";
+  const std::vector<std::string> expected = {"4:0,0",  "5:1,1",  "7:2,2",  "8:3,3", "10:5,4",
+                                             "11:6,6", "12:7,7", "13:8,8", "14:9,9"};
+  auto blocks_of = [](std::istream& in) {
+    ProgramReader reader(in, ModalState{});
+    std::vector<std::string> got;
+    Block b;
+    while (reader.next(b))
+      if (b.words.axis[0].present)
+        got.push_back(std::to_string(b.words.line) + ":" + b.end.x.to_string() + "," + b.end.y.to_string());
+    return got;
+  };
+  std::istringstream file("; header\n;\n;\n" + text);
+  EXPECT_EQ(blocks_of(file), expected);
+  ForwardOnly pipe("; header\n;\n;\n" + text);
+  std::istream piped(&pipe);
+  EXPECT_EQ(blocks_of(piped), expected);
+}
+
 }  // namespace
 }  // namespace cutcom

@@ -9,6 +9,7 @@
 #include "cutcom/interpreter.hpp"
 #include "interpreter_record.hpp"
 #include "interpreter_text.hpp"
+#include "word_lexer.hpp"
 
 namespace cutcom {
 
@@ -65,6 +66,41 @@ bool Interpreter::getline(std::string_view& text) {
     last_cached_ =
         &c.cache->lines.emplace(c.line_start, CachedLine{std::string(text), c.offset, nullptr}).first->second;
   }
+  return true;
+}
+
+bool Interpreter::next_plain(BlockWords& plain, int& line) {
+  if (stack_.size() != 1 || pending_next_ < pending_.size() || modal_call_due_ || control_flow_ || !macros_.empty() ||
+      skip_levels_ != 0)
+    return false;
+  Context& c = stack_.front();
+  // The file read on from where the last line ended, by this level; no cached line to take
+  // instead, no section's end to see, no byte order mark to take off (at the text's start).
+  if (!c.begun || c.offset == 0 || c.stream_at != c.offset || last_in_ != c.in || last_level_ != 1 ||
+      !c.sections.empty() || !c.cache->lines.empty())
+    return false;
+  std::string_view view;
+  if (!c.lines.next(*c.in, view)) return false;  // the end: next() sees it again
+  // A line that begins with '%' or a blank may be a unit's header (unit_ends); an empty one has
+  // no block.
+  if (view.empty() || view[0] == '%' || view[0] == ' ' || view[0] == '\t') {
+    c.lines.give_back(view);
+    return false;
+  }
+  plain.reset(c.line + 1);
+  if (!lexer::read_plain_block(view, plain, true)) {
+    c.lines.give_back(view);
+    return false;
+  }
+  // As getline() and next() leave a plain line.
+  c.line_start = c.offset;
+  c.offset += static_cast<std::streamoff>(view.size()) + 1;
+  c.stream_at = c.offset;
+  line = ++c.line;
+  last_cached_ = current_cached_ = nullptr;
+  line_padded_ = true;
+  plain_refused_ = false;
+  plain.plain = true;
   return true;
 }
 

@@ -60,7 +60,7 @@ bool ProgramReader::next(Block& out) {
 }
 
 bool ProgramReader::read_block(Block& out) {
-  while (!ended_ && interpreter_.next(text_, line_, &out.words)) {
+  while (!ended_ && (interpreter_.next_plain(out.words, line_) || interpreter_.next(text_, line_, &out.words))) {
     if (!interpreter_.in_subprogram()) {
       if (take_block(out, line_)) return true;
       continue;

@@ -100,6 +100,12 @@ class Interpreter {
   // line holds no name, '=' or ':', so it has nothing for the interpreter to do and is not
   // scanned for it, nor copied (issue "Performance": one pass over the line).
   bool next(std::string& text, int& line, BlockWords* plain = nullptr);
+  // The same for the common line alone (issue "Performance": the layers of next() around it
+  // were a sixth of the reader's work): the main program's next line, straight from its file,
+  // where nothing is in force that next() would look at (a frame assignment's blocks, a modal
+  // call, control flow, a repeated section, macros, skip levels, a unit's header) and that
+  // read_plain_block reads whole. False where it is not that line: it is then left to next().
+  bool next_plain(BlockWords& plain, int& line);
   // After next() gave `text`: read_plain_block has refused that very text (a line of other
   // words, returned as it stands), so the word lexer need not try it again.
   bool plain_refused() const { return plain_refused_; }
