@@ -25,19 +25,24 @@ std::vector<std::string> by_buffer(std::istream& in, cutcom::LineBuffer& buffer)
   return lines;
 }
 
+// Short lines, empty ones, CR LF, and now and then one longer than the buffer's piece.
+std::string random_text(std::mt19937_64& random) {
+  std::string text;
+  int lines = static_cast<int>(random() % 50);
+  for (int n = 0; n < lines; ++n) {
+    std::size_t length = random() % 10 == 0 ? random() % 200000 : random() % 40;
+    for (std::size_t c = 0; c < length; ++c) text += static_cast<char>(random() % 4 == 0 ? ' ' : 'A' + random() % 26);
+    if (random() % 5 == 0) text += '\r';
+    if (n + 1 < lines || random() % 2) text += '\n';
+  }
+  return text;
+}
+
 // covers: NC-LEX-1
 TEST(LineBuffer, LinesAreThoseOfGetline) {
   std::mt19937_64 random(20261129);
   for (int k = 0; k < 300; ++k) {
-    std::string text;
-    int lines = static_cast<int>(random() % 50);
-    for (int n = 0; n < lines; ++n) {
-      // short lines, empty ones, CR LF, and now and then one longer than the buffer's piece
-      std::size_t length = random() % 10 == 0 ? random() % 200000 : random() % 40;
-      for (std::size_t c = 0; c < length; ++c) text += static_cast<char>(random() % 4 == 0 ? ' ' : 'A' + random() % 26);
-      if (random() % 5 == 0) text += '\r';
-      if (n + 1 < lines || random() % 2) text += '\n';
-    }
+    std::string text = random_text(random);
     std::istringstream in(text);
     cutcom::LineBuffer buffer;
     ASSERT_EQ(by_buffer(in, buffer), by_getline(text)) << "text " << k;
@@ -56,13 +61,7 @@ TEST(LineBuffer, LinesAreThoseOfGetline) {
 TEST(LineBuffer, ALineGivenBackComesAgain) {
   std::mt19937_64 random(20261204);
   for (int k = 0; k < 200; ++k) {
-    std::string text;
-    int lines = static_cast<int>(random() % 40);
-    for (int n = 0; n < lines; ++n) {
-      std::size_t length = random() % 10 == 0 ? random() % 100000 : random() % 30;
-      for (std::size_t c = 0; c < length; ++c) text += static_cast<char>('A' + random() % 26);
-      if (n + 1 < lines || random() % 2) text += '\n';
-    }
+    std::string text = random_text(random);
     std::istringstream in(text);
     cutcom::LineBuffer buffer;
     std::vector<std::string> lines_read;

@@ -54,10 +54,7 @@ bool Interpreter::getline(std::string_view& text) {
     c.stream_at = -1;
     return false;
   }
-  line_padded_ = true;
-  c.offset += static_cast<std::streamoff>(text.size()) + 1;
-  c.stream_at = c.offset;
-  ++c.line;
+  past_line_read(c, text);
   // NC-LEX-1: a file saved with a UTF-8 byte order mark (Windows editors) starts after it.
   if (c.line_start == 0 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   if (unit_ends(c, text)) return false;
@@ -94,11 +91,9 @@ bool Interpreter::next_plain(BlockWords& plain, int& line) {
   }
   // As getline() and next() leave a plain line.
   c.line_start = c.offset;
-  c.offset += static_cast<std::streamoff>(view.size()) + 1;
-  c.stream_at = c.offset;
-  line = ++c.line;
+  past_line_read(c, view);
+  line = c.line;
   last_cached_ = current_cached_ = nullptr;
-  line_padded_ = true;
   plain_refused_ = false;
   plain.plain = true;
   return true;

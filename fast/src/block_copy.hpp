@@ -15,6 +15,7 @@
 #include "cutcom/sink.hpp"
 #include "edge_strategy.hpp"
 #include "plane_geometry.hpp"
+#include "sar_shape.hpp"
 
 namespace cutcom::fast {
 
@@ -211,6 +212,12 @@ struct PlaneOverride {
   bool tangent_after = false, tangent_before = false;
   bool line_unit = false;  // the SAR line's direction (BlockFacts::unit)
   Vec2 unit;
+
+  // The SAR element's own shape: its circle, or the line's direction (the tangent it was built on).
+  void take_element(const SarShape& shape) {
+    circle = shape.circle, centre = shape.centre, sense = shape.sense;
+    line_unit = !shape.circle, unit = shape.end_unit;
+  }
 
   // The block's copy with these points.
   void apply(BlockCopy& c) const {

@@ -151,8 +151,7 @@ void SarExpansion::approach(std::span<const Block> g, int p4_index) {
       PlaneOverride o;
       o.axes = ax;
       o.start = true, o.start_ab = shape.p3, o.end = true, o.end_ab = p4;
-      o.circle = shape.circle, o.centre = shape.centre, o.sense = shape.sense, o.tangent_after = true;
-      o.line_unit = !shape.circle, o.unit = shape.end_unit;
+      o.take_element(shape), o.tangent_after = true;
       forward(subs_.p4_element, &o);
     } else {
       forward(g[k]);
@@ -238,8 +237,7 @@ void SarExpansion::push_sub_blocks(const SarShape& shape, const std::optional<Ve
       o.start = o.end = true;
       o.start_ab = shape.approach ? shape.p3 : shape.p4;
       o.end_ab = shape.approach ? shape.p4 : shape.p3;
-      o.circle = shape.circle, o.centre = shape.centre, o.sense = shape.sense;
-      o.line_unit = !shape.circle, o.unit = shape.end_unit;
+      o.take_element(shape);
       (shape.approach ? o.tangent_after : o.tangent_before) = true;
     }
     if (b.sar.end_at_tool_centre) o.end = true, o.end_ab = *tool_centre;

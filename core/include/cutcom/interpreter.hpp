@@ -320,6 +320,13 @@ class Interpreter {
     return header_ends_unit(c, text);
   }
   bool header_ends_unit(Context& c, std::string_view text) const;
+  // The context past `text`, a line just read from its file's line buffer (getline, next_plain).
+  void past_line_read(Context& c, std::string_view text) {
+    line_padded_ = true;
+    c.offset += static_cast<std::streamoff>(text.size()) + 1;
+    c.stream_at = c.offset;
+    ++c.line;
+  }
   mutable std::map<std::string, SubprogramText> units_;
   mutable std::map<std::string, int> duplicate_units_;  // a name's second header: its line
   mutable bool units_scanned_ = false;
