@@ -220,7 +220,7 @@ bool Compensation::bottleneck(const BlockCopy& m, const BlockCopy& before) {
     if (!margins && PieceBox::apart(box_of(rec), entry_box)) continue;
     if (try_piece(piece_of(rec), rec.seq, c)) return cut(m, entry, static_cast<int>(i), c, near), true;
   }
-  if (looking && open.seq >= lo && open.seq <= hi && try_piece(open_piece(), open.seq, c))
+  if (looking && open->seq >= lo && open->seq <= hi && try_piece(open_piece(), open->seq, c))
     return cut(m, entry, -1, c, near), true;
   // A miss of exactly 0 is an overlap of collinear pieces; a point at 0 would have been on both.
   if (built == Built::kEntry) decide("TRC-CD-3", m.line, near == 0 && overlap ? "overlap" : "none", near);
@@ -249,7 +249,7 @@ bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at
     double scale = std::max({1.0, std::fabs(x.a), std::fabs(x.b)});
     bool vanishes = along <= 64 * std::numeric_limits<double>::epsilon() * scale;
     const std::vector<HeldRecord>& dropped = held.cut(static_cast<std::size_t>(record), end, vanishes);
-    const int open_owner = owner_of(open.block, open.sar);
+    const int open_owner = owner_of(open->block, open->sar);
     bool rest = open_owner == owner(crossed);  // its equidistant was still open
     for (const HeldRecord& k : dropped) rest = rest || owner(k) == owner(crossed);
     if (rest) infeed_of(crossed, end, xyz(x, h(crossed.owner_end)));
@@ -268,7 +268,7 @@ bool Compensation::cut_at(int record, Vec2 x, double along, const BlockPlace& at
       }
     }
     if (last_run >= 0) infeed_of(dropped.back(), x);
-    if (open_owner != owner(crossed) && open_owner != last_run) skip_at(open, x);
+    if (open_owner != owner(crossed) && open_owner != last_run) skip_at(*open, x);
   } else {
     looking = false;
     if (!close_open(x, at, Placed::kOnPiece)) return false;

@@ -168,7 +168,7 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, Place
   }
   std::string_view clause = e.arc ? "TRC-ARC-ELEMENT-1" : "TRC-ELEMENT-1";
   if (margin < 0) {
-    decide(clause, open.line, "reverses", margin);
+    decide(clause, open->line, "reverses", margin);
     // TRC-EDGE-1: the first element after the approach is too short for its neighbour.
     if (approach_pending && candidate) return approach_edge(*candidate), false;
     if (kont_first && candidate)
@@ -177,28 +177,28 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, Place
     raise(10751, alarm_at);
     return false;
   }
-  decide(clause, open.line, margin == 0 ? "vanishes" : "fits", margin);
+  decide(clause, open->line, margin == 0 ? "vanishes" : "fits", margin);
   flush_approach();
   kont_first = false;
-  PathPoint from = xyz(open_start, h(open.start)), to = xyz(end_point, h(open.end));
+  PathPoint from = xyz(open_start, h(open->start)), to = xyz(end_point, h(open->end));
   if (margin == 0) {
     // TRC-ELEMENT-1: nothing left along the block; what it moves besides (the applicate, or across
     // from one radius to the other after a blend, TRC-RADIUS-3) runs at the point: no gap.
     bool across = open_blended && (open_start.a != end_point.a || open_start.b != end_point.b);
-    if (!across && h(open.start) == h(open.end)) {
-      actions(open, to);
+    if (!across && h(open->start) == h(open->end)) {
+      actions(*open, to);
       return true;
     }
-    line(open, across ? from : xyz(end_point, h(open.start)), to, across ? OriginKind::kOffset : OriginKind::kInfeed,
-         open.rapid);
+    line(*open, across ? from : xyz(end_point, h(open->start)), to, across ? OriginKind::kOffset : OriginKind::kInfeed,
+         open->rapid);
     return true;
   }
   if (!e.arc) {
-    line(open, from, to, OriginKind::kOffset, open.rapid);
+    line(*open, from, to, OriginKind::kOffset, open->rapid);
   } else {
     // The whole turn's end is its start; the snapped end is where the next element starts too (no
     // gap of a rounding after the circle).
-    if (whole_turn) to = xyz(open_start, h(open.end)), end_point = open_start;
+    if (whole_turn) to = xyz(open_start, h(open->end)), end_point = open_start;
     // PATH-ELEMENT-2: a circle that turns more than half a turn but whose end, rounded, lies just
     // past its start (within 1e-8 of the radius) would read as a sliver: it ends at its start.
     // Nor may it end where its direction from the centre is the start's within rounding: whether
@@ -219,13 +219,14 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, Place
     bool near = norm(end_point - open_start) <= snap;
     double reads = near ? signed_rotation(u, v, e.sense) : 0;
     bool just_past = near && reads > 0;
-    if (turn > std::numbers::pi && (just_past || unreadable)) to = xyz(open_start, h(open.end)), end_point = open_start;
+    if (turn > std::numbers::pi && (just_past || unreadable))
+      to = xyz(open_start, h(open->end)), end_point = open_start;
     // And a circle that turns less than half a turn, its end a rounding from its start (an
     // equidistant cut between two intersections of touching carriers), whose points cannot be
     // read or read as nearly a whole turn: it is its chord, a line a rounding long.
     bool just_before = near && reads <= 0;
     if (turn < std::numbers::pi && (just_before || unreadable)) {
-      line(open, from, to, OriginKind::kOffset, open.rapid);
+      line(*open, from, to, OriginKind::kOffset, open->rapid);
       return true;
     }
     // PATH-ELEMENT-2: more than a whole turn (a full circle opened before its start or closed
@@ -234,11 +235,11 @@ bool Compensation::close_open(Vec2& end_point, const BlockPlace& alarm_at, Place
     // (campaign 20261274, case 870612: a full helix opened by a KONT intersection at r = 0).
     bool closed = end_point.a == open_start.a && end_point.b == open_start.b;
     if (turn > 2 * std::numbers::pi && !closed) {
-      if (h(open.start) != h(open.end))
-        throw UnsupportedError(open.line, "a helix that turns more than a whole turn after its corners");
-      arc(open, from, from, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
+      if (h(open->start) != h(open->end))
+        throw UnsupportedError(open->line, "a helix that turns more than a whole turn after its corners");
+      arc(*open, from, from, xyz(e.centre, h(open->start)), e.sense > 0, origin(*open, OriginKind::kOffset));
     }
-    arc(open, from, to, xyz(e.centre, h(open.start)), e.sense > 0, origin(open, OriginKind::kOffset));
+    arc(*open, from, to, xyz(e.centre, h(open->start)), e.sense > 0, origin(*open, OriginKind::kOffset));
   }
   return true;
 }
@@ -305,7 +306,10 @@ double Compensation::exactly_inside(const BlockCopy& c, const Element& e, double
 
 void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, Placed placed,
                                 const Vec2* piece_start) {
-  open = b;
+  if (&b == &prev_blocks[0] || &b == &prev_blocks[1])  // a slot's block stays where it is
+    open = &prev_blocks[&b == &prev_blocks[0] ? 0 : 1];
+  else if (&b != &open_own)
+    open_own = b, open = &open_own;
   open_el = e;
   open_start = start;
   open_at_normal_start = placed == Placed::kNormal;
@@ -335,11 +339,10 @@ void Compensation::compensation_active(const Block& b) {
   const BlockCopy* current = nullptr;  // a traversing block, converted once
   if (traversing) {
     int slot = prev_slot ^ 1;  // two slots: the block and its predecessor, no copies
-    copy_into(prev_blocks[static_cast<std::size_t>(slot)], b);
+    current = &fill_slot(slot, b);
     const BlockCopy& before = prev_blocks[static_cast<std::size_t>(prev_slot)];
     bool had_prev = has_prev;
     prev_slot = slot, has_prev = true;
-    current = &prev_blocks[static_cast<std::size_t>(slot)];
     if (approach_until >= 0 && approach_further_ahead(b, *current)) return;
     if (b.state.collision == CollisionMode::kCdon && had_prev && bottleneck(*current, before)) return;
   }
@@ -366,7 +369,7 @@ void Compensation::reject_blend_here(const Block& b, bool searching) const {
 // new one counts, so that its end (the next corner, or its normal end) lies on the new
 // equidistant and the element runs inclined between the two.
 void Compensation::blend_radius(const Block& b, const BlockCopy& copy) {
-  if (looking || open.seq != copy.seq)  // TRC-LOOK-1 passed the block over: not its own element
+  if (looking || open->seq != copy.seq)  // TRC-LOOK-1 passed the block over: not its own element
     throw UnsupportedError(b.words.line, "a D, DL or OFFN change in a block the look-ahead passes over");
   CompensationSide cs = compensation_side(b.state);
   decide(cs.decision, b.words.line);
@@ -385,7 +388,7 @@ void Compensation::corner(const Block& b, const BlockCopy& copy) {
   if (!equidistant_exists(b, copy, next, next_radius)) return start_look_ahead(b);
   Vec2 v = open_el.end;
   Corner c = classify_corner(open_el.end_tangent(), next.start_tangent(), s);
-  decide_kind_exactly(open, copy, c);
+  decide_kind_exactly(*open, copy, c);
   static constexpr std::string_view kKind[] = {"tangent", "inner", "outer", "reversal"};
   decide("TRC-CORNER-1", b.words.line, kKind[static_cast<int>(c.kind)], c.sine);
 
@@ -498,8 +501,8 @@ void Compensation::look_ahead(const Block& b, const BlockCopy* current) {
   // unit vectors in double may cross by a rounding (campaign 20261205, case 29172: the candidate
   // ran along the open block's own line, and fast met it there).
   bool parallel = false;
-  if (!open_el.arc && !cand.arc && open.exact && c.exact) {
-    std::optional<LineProducts> p = line_products(open.delta, c.delta, axes);  // TRC-LOOK-2 exactly: cross 0
+  if (!open_el.arc && !cand.arc && open->exact && c.exact) {
+    std::optional<LineProducts> p = line_products(open->delta, c.delta, axes);  // TRC-LOOK-2 exactly: cross 0
     parallel = p && p->cross == 0;
   } else if (!open_el.arc && !cand.arc) {
     // Lines built on one tangent (SAR lines at the two ends of a full circle: campaign 20261207,
@@ -562,15 +565,15 @@ void Compensation::transition_circle(const BlockCopy& b, const Element& next, do
   if (!close_open(from, BlockPlace::of(b), Placed::kNormal)) return;
   run_held_back(from);
   Vec2 to = Element::offset(v, next.start_tangent(), s * r);
-  Origin corner = origin(open, OriginKind::kTransitionCircle);
+  Origin corner = origin(*open, OriginKind::kTransitionCircle);
   open_element(b, next, to, next_radius, Placed::kNormal);
-  // From b, which open now copies: open's just-written fields would be read back by loads the CPU
-  // cannot forward from the copy's stores (a fifth of this function's samples).
+  // From b, which is (or was copied into) the open block: a copy's just-written fields would be
+  // read back by loads the CPU cannot forward from its stores (a fifth of this function's samples).
   corner.next_line = b.line, corner.next_block = b.number, corner.next_insert = b.insert;
   if (r > 0) {  // TRC-G450-2: no circle for a zero radius
-    double hv = h(open.start);
+    double hv = h(open->start);
     // Around the outside: clockwise on the left, counter-clockwise on the right.
-    corner_circle(open, xyz(from, hv), xyz(to, hv), xyz(v, hv), s < 0, corner);
+    corner_circle(*open, xyz(from, hv), xyz(to, hv), xyz(v, hv), s < 0, corner);
   }
 }
 

@@ -42,6 +42,9 @@ struct BlockPlace {
 
 class Compensation {
  public:
+  // Not copied: the open element's block may point into the object's own slots.
+  Compensation(const Compensation&) = delete;
+  Compensation& operator=(const Compensation&) = delete;
   Compensation(const MachineData& m, PathSink& out, Trace& t, CollisionWindow& window)
       : md(m),
         sink(out),
@@ -102,8 +105,12 @@ class Compensation {
   std::array<BlockCopy, MachineData::kMaxDummyBlocks + 1> approach_dummies;
   int approach_dummy_count = 0;
   bool kont_first = false;  // the open element is the first after a KONT travel-around
-  // kActive: the open element, whose end waits for the next traversing block.
-  BlockCopy open;
+  // kActive: the open element, whose end waits for the next traversing block. Its block is the
+  // slot it was copied into, where it was one (a second copy of 352 bytes was 4 % of a block's
+  // instructions), else `open_own`; a slot refilled while its block is open hands it over first
+  // (fill_slot), so that the open block never changes under the element.
+  BlockCopy open_own;
+  BlockCopy* open = &open_own;
   Element open_el;
   Vec2 open_start;                    // start point of its equidistant (after the previous corner)
   bool open_blended = false;          // TRC-RADIUS-3: the open element runs from one radius to another
@@ -145,6 +152,14 @@ class Compensation {
 
   BlockCopy copy_of(const Block& b) const {
     BlockCopy c;
+    copy_into(c, b);
+    return c;
+  }
+  // A traversing block into prev_blocks[slot] (compensation_active, the first block after the
+  // approach); the open element's block, if it is there, is moved aside first.
+  const BlockCopy& fill_slot(int slot, const Block& b) {
+    BlockCopy& c = prev_blocks[static_cast<std::size_t>(slot)];
+    if (open == &c) open_own = c, open = &open_own;
     copy_into(c, b);
     return c;
   }

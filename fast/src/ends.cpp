@@ -30,8 +30,7 @@ void Compensation::approach(const Block& b) {
   if (!edge.in_force(b.state))                  // TRC-RADIUS-3: the approach has one radius
     throw UnsupportedError(b.words.line, "a D, DL or OFFN change in the first contour block");
   prev_slot ^= 1;
-  copy_into(prev_blocks[static_cast<std::size_t>(prev_slot)], b);
-  const BlockCopy& first = prev_blocks[static_cast<std::size_t>(prev_slot)];
+  const BlockCopy& first = fill_slot(prev_slot, b);
   has_prev = true;
   Element e = element_of(first);
   double radius = 0;
@@ -146,8 +145,8 @@ void Compensation::approach_around(const BlockCopy& first, const Element& e, dou
     corner.next_line = first.line, corner.next_block = first.number, corner.next_insert = first.insert;
     open_element(first, e, q, radius, Placed::kNormal);
     double h1 = h(first.start);  // after the held-back blocks
-    if (r > 0) corner_circle(open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
-  } else {                                                                                     // TRC-KONT-4
+    if (r > 0) corner_circle(*open, xyz(a, h1), xyz(q, h1), xyz(k.vertex, h1), s < 0, corner);  // TRC-G450-2
+  } else {                                                                                      // TRC-KONT-4
     decide("TRC-KONT-4", selection.line, "intersection");
     line(selection, selection.start, xyz(x, hv), OriginKind::kApproach, selection.rapid);
     run_held_back(x);
@@ -234,7 +233,7 @@ void Compensation::approach_edge(const Candidate& c) {
   line(selection, selection.start, xyz(hit, h(selection.end)), OriginKind::kApproach, selection.rapid);
   for (int i = 0; i < approach_dummy_count; ++i) skip_at(approach_dummies[static_cast<std::size_t>(i)], hit);
   approach_dummy_count = 0;
-  skip_at(open, hit);
+  skip_at(*open, hit);
   for (int i = 0; i < dummy_count; ++i) skip_at(dummies[static_cast<std::size_t>(i)], hit);
   dummy_count = 0;
   for (BlockCopy& k : skipped) skip_at(k, hit);
@@ -282,7 +281,7 @@ void Compensation::deselect(const Block& b) {
   if (last.kont) {
     Vec2 p = ab(last.end);
     Kont k{open_el.end, p, open_el.end_tangent(), p - open_el.end, std::nullopt, std::nullopt};
-    if (last.exact) k.exact_sign = exact_side(open, true, last.delta, 1);
+    if (last.exact) k.exact_sign = exact_side(*open, true, last.delta, 1);
     if (last.exact) k.exact_room = exact_room_sign(last.delta);
     if (kont_behind(last, k, k.d1, 10756)) return retract_around(last, k);
     if (trace.stopped()) return;
@@ -346,7 +345,7 @@ void Compensation::retract_around(BlockCopy& last, const Kont& k) {
   if (!found) {  // TRC-KONT-3 (also TRC-ARC-CORNER-2)
     decide("TRC-KONT-3", last.line, "circle");
     Vec2 from = Element::offset(k.vertex, open_el.end_tangent(), s * r);
-    Origin corner = origin(open, OriginKind::kTransitionCircle);
+    Origin corner = origin(*open, OriginKind::kTransitionCircle);
     corner.next_line = last.line, corner.next_block = last.number, corner.next_insert = last.insert;
     if (!close_open(from, BlockPlace::of(last), Placed::kNormal)) return;
     run_held_back(from);
@@ -373,11 +372,11 @@ void Compensation::end_of_program() {
     line(selection, selection.start, selection.end, OriginKind::kProgrammed, selection.rapid);
     run_held_back_uncompensated();
   } else if (phase == Phase::kActive) {
-    decide("TRC-END-1", open.line, "active-at-end");
-    sink.notice({open.line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point",
-                 open.source});
+    decide("TRC-END-1", open->line, "active-at-end");
+    sink.notice({open->line, "TRC-END-1", "program ends with compensation active: last block ends at its normal point",
+                 open->source});
     Vec2 end = Element::offset(open_el.end, open_el.end_tangent(), s * r);
-    if (!close_open(end, BlockPlace::of(open), Placed::kNormal)) return;
+    if (!close_open(end, BlockPlace::of(*open), Placed::kNormal)) return;
     run_held_back(end);
   }
   phase = Phase::kOff;
