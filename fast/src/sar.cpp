@@ -17,7 +17,15 @@ Vec2 plane_of(const Point3& p, PlaneAxes a) {
 
 void SarExpansion::keep_last_contour(const Block& b) {
   copy_by_words(last_contour_.start, b.start), copy_by_words(last_contour_.end, b.end);
-  copy_by_words(last_contour_.centre, b.centre), copy_by_words(last_contour_.words.cr, b.words.cr);
+  // A line (most contour blocks) has neither centre nor radius: set so, not copied word by word.
+  if (b.centre)
+    copy_by_words(last_contour_.centre, b.centre);
+  else
+    last_contour_.centre.reset();
+  if (b.words.cr)
+    copy_by_words(last_contour_.words.cr, b.words.cr);
+  else
+    last_contour_.words.cr.reset();
   last_contour_.circle = b.circle, last_contour_.state.motion = b.state.motion;
   // Its SarTag stays the default: forward keeps programmed blocks only.
 }
