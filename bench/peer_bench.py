@@ -473,7 +473,8 @@ def build_kind(cutcom):
         pass
     if pgo == "use":
         return ("built as `scripts/setup.sh` builds it: Release, profile-guided (trained by "
-                "`scripts/pgo_training.sh` on its own serpentine passes, not on these contours)")
+                "`scripts/pgo_training.sh` on its own serpentine passes, not on these contours) and "
+                "link-time optimized")
     return f"built with CUTCOM_PGO={pgo} (not profile-guided)"
 
 
