@@ -572,6 +572,16 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       // (A full circle's points tell no axis: then each element's own.)
       bool r_full = r.start.x == r.end.x && r.start.y == r.end.y && r.start.z == r.end.z;
       int axis = r_full ? -1 : sweep_axis(r);
+      // Where fast's start lies off the centre's level on ref's axis by a rounding, but ref's start
+      // lies level on fast's axis: both about fast's (campaign 20261331, case 849333: a G17 SAR
+      // quarter helix of radius DISR = its drop, level with its centre in Y and Z; ref's points
+      // tied XZ with XY and took Y, fast's took Z, and each read its own quarter as the other's
+      // three quarters).
+      auto level = [](const PathElement& e, int k) {
+        return k == 0 ? e.center.x == e.start.x : k == 1 ? e.center.y == e.start.y : e.center.z == e.start.z;
+      };
+      if (axis >= 0 && !level(f, axis))
+        if (int fast_axis = sweep_axis(f); fast_axis >= 0 && level(r, fast_axis)) axis = fast_axis;
       std::optional<double> rs = sweep_of(r, axis), fs = sweep_of(f, axis);
       if (rs && fs) e = std::max(e, std::fabs(*rs - *fs) * radius_of(r));
       // A full circle (start == end) against an arc whose end points lie a rounding apart on one

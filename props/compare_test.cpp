@@ -127,6 +127,12 @@ TEST(Comparison, AFullCircleAgainstAnArcWithTheSameEndPointsDiverges) {
   ref.path = {arc({-3.002, -2.997, 0.002}, {-3, -2.999, 0}, {-3, -2.997, 0.002}, true)};
   fast.path = {arc({-3.0020000000000002, -2.997, 0.002}, {-3, -2.999, 0}, {-3, -2.997, 0.002}, true)};
   EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree) << compare(ref, fast, tolerance()).explanation;
+  // The same helix where fast's start is off the centre's level in Y by a rounding (campaign
+  // 20261331, case 849333): ref's points tie Y and Z, fast's qualify Z only; both about Z.
+  ref.path = {arc({6.502, -3.957, 1.983}, {8.485, -5.94, 0}, {8.485, -3.957, 1.983}, true)};
+  fast.path = {arc({6.501999999999999, -3.957, 1.983}, {8.485, -5.9399999999999995, 0},
+                   {8.485, -3.956999999999999, 1.983}, true)};
+  EXPECT_EQ(compare(ref, fast, tolerance()).kind, Verdict::Kind::kAgree) << compare(ref, fast, tolerance()).explanation;
 }
 
 }  // namespace
