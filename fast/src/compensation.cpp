@@ -306,10 +306,12 @@ double Compensation::exactly_inside(const BlockCopy& c, const Element& e, double
 
 void Compensation::open_element(const BlockCopy& b, const Element& e, Vec2 start, double radius, Placed placed,
                                 const Vec2* piece_start) {
-  if (&b == &prev_blocks[0] || &b == &prev_blocks[1])  // a slot's block stays where it is
-    open = &prev_blocks[&b == &prev_blocks[0] ? 0 : 1];
-  else if (&b != &open_own)
-    open_own = b, open = &open_own;
+  if (std::size_t k = slot_of(b); k < 2) {
+    open = &prev_blocks[k];  // a slot's block stays where it is
+  } else {
+    if (&b != &open_own) open_own = b;
+    open = &open_own;
+  }
   open_el = e;
   open_start = start;
   open_at_normal_start = placed == Placed::kNormal;

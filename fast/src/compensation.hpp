@@ -150,6 +150,8 @@ class Compensation {
   EdgeCurve approach_curve;  // TRC-CD-6: the approach's curve, searched up to block approach_until
   int approach_until = -1;
 
+  // The prev_blocks slot `c` is, 0 or 1; 2: none.
+  std::size_t slot_of(const BlockCopy& c) const { return &c == &prev_blocks[0] ? 0 : &c == &prev_blocks[1] ? 1 : 2; }
   BlockCopy copy_of(const Block& b) const {
     BlockCopy c;
     copy_into(c, b);
@@ -164,8 +166,7 @@ class Compensation {
     return c;
   }
   void copy_into(BlockCopy& c, const Block& b) const {  // copy_of into a slot kept from block to block
-    for (std::size_t k = 0; k < 2; ++k)
-      if (&c == &prev_blocks[k]) slot_elements[k].valid = false;
+    if (std::size_t k = slot_of(c); k < 2) slot_elements[k].valid = false;
     c.assign(b, moves_in_plane(b));
     c.seq = held.seq();
     if (&b == over_block) over.apply(c);
@@ -263,7 +264,7 @@ class Compensation {
   // copy it at once, but for the corner's. It is made in place: made aside and copied, its 8-byte
   // stores were read back by 16-byte loads the CPU cannot forward (an eighth of corner's samples).
   const Element& element_of(const BlockCopy& c) const {
-    std::size_t k = &c == &prev_blocks[0] ? 0 : &c == &prev_blocks[1] ? 1 : 2;
+    std::size_t k = slot_of(c);
     static_assert(std::is_trivially_destructible_v<Element>);
     if (k == 2) return *::new (static_cast<void*>(&unslotted_element)) Element(element_in(c, axes));
     SlotElement& m = slot_elements[k];
