@@ -30,6 +30,11 @@ double distance(const PathPoint& a, const PathPoint& b) {
 // ulps apart) or no axis qualifies: the sweep cannot be told from the points.
 constexpr int kPlane[3][2] = {{1, 2}, {2, 0}, {0, 1}};  // (abscissa, ordinate) about axis k
 
+// Whether the arc's start lies level with its centre on axis k: k may be the arc's axis.
+bool level_on(const PathElement& e, int k) {
+  return k == 0 ? e.center.x == e.start.x : k == 1 ? e.center.y == e.start.y : e.center.z == e.start.z;
+}
+
 // The axis sweep_of measures an arc about (-1: none qualifies).
 int sweep_axis(const PathElement& e) {
   const double c[3] = {e.center.x, e.center.y, e.center.z}, s[3] = {e.start.x, e.start.y, e.start.z},
@@ -38,7 +43,7 @@ int sweep_axis(const PathElement& e) {
   double best_mismatch = 0;
   bool best_flat = false;
   for (int k = 0; k < 3; ++k) {
-    if (c[k] != s[k]) continue;
+    if (!level_on(e, k)) continue;
     int a = kPlane[k][0], b = kPlane[k][1];
     // An axis on which the end agrees too is the applicate of a circle in its plane: it wins over
     // one where only the start happens to lie level with the centre (a start on the centre's x).
@@ -57,7 +62,7 @@ std::optional<double> sweep_of(const PathElement& e, int axis = -1) {  // about 
   if (e.start.x == e.end.x && e.start.y == e.end.y && e.start.z == e.end.z) return 2 * std::numbers::pi;
   const double c[3] = {e.center.x, e.center.y, e.center.z}, s[3] = {e.start.x, e.start.y, e.start.z},
                t[3] = {e.end.x, e.end.y, e.end.z};
-  int best = axis >= 0 && c[axis] == s[axis] ? axis : sweep_axis(e);
+  int best = axis >= 0 && level_on(e, axis) ? axis : sweep_axis(e);
   if (best < 0) return std::nullopt;
   int a = kPlane[best][0], b = kPlane[best][1];
   double ua = s[a] - c[a], ub = s[b] - c[b], va = t[a] - c[a], vb = t[b] - c[b];
@@ -565,23 +570,18 @@ Verdict compare(const RunResult& ref, const RunResult& fast, const Tolerance& to
       e = std::max(e, distance(r.center, f.center));
       // The same end points, but one circle turning the other way round (a full circle against
       // a sliver): the difference along the circle counts.
-      // Both about ref's axis where it qualifies for fast's points too: a helix whose start lies
-      // level with its centre on a second axis, and whose end lies as far from the centre in that
-      // plane, leaves two axes within rounding of a tie, which each engine's ulps may break
-      // differently (campaign 20261259, case 64525: a SAR helix of radius DISR = its drop).
-      // (A full circle's points tell no axis: then each element's own.)
+      // Both about one axis where one qualifies for both: a helix whose start lies level with its
+      // centre on a second axis, and whose end lies as far from the centre in that plane, leaves
+      // two axes within rounding of a tie, which each engine's ulps may break differently or make
+      // no tie at all (campaigns 20261259, case 64525, and 20261331, case 849333: SAR helices of
+      // radius DISR = their drop). ref's axis where fast's start is level on it too, else fast's
+      // where ref's is. (A full circle's points tell no axis: then each element's own.)
       bool r_full = r.start.x == r.end.x && r.start.y == r.end.y && r.start.z == r.end.z;
       int axis = r_full ? -1 : sweep_axis(r);
-      // Where fast's start lies off the centre's level on ref's axis by a rounding, but ref's start
-      // lies level on fast's axis: both about fast's (campaign 20261331, case 849333: a G17 SAR
-      // quarter helix of radius DISR = its drop, level with its centre in Y and Z; ref's points
-      // tied XZ with XY and took Y, fast's took Z, and each read its own quarter as the other's
-      // three quarters).
-      auto level = [](const PathElement& e, int k) {
-        return k == 0 ? e.center.x == e.start.x : k == 1 ? e.center.y == e.start.y : e.center.z == e.start.z;
-      };
-      if (axis >= 0 && !level(f, axis))
-        if (int fast_axis = sweep_axis(f); fast_axis >= 0 && level(r, fast_axis)) axis = fast_axis;
+      if (axis >= 0 && !level_on(f, axis)) {
+        int fast_axis = sweep_axis(f);
+        if (fast_axis >= 0 && level_on(r, fast_axis)) axis = fast_axis;
+      }
       std::optional<double> rs = sweep_of(r, axis), fs = sweep_of(f, axis);
       if (rs && fs) e = std::max(e, std::fabs(*rs - *fs) * radius_of(r));
       // A full circle (start == end) against an arc whose end points lie a rounding apart on one
